@@ -1,0 +1,102 @@
+#include "materials/closure.h"
+
+#include <stdexcept>
+
+namespace ochre {
+
+void Closure::add_lobe(const Lobe* lobe, const SampledSpectrum& weight) {
+  if (weight.is_black()) return;
+  if (count_ == kMaxLobes) throw std::length_error("closure has more than 8 lobes");
+  lobes_[count_++] = {lobe, weight};
+}
+
+void Closure::scale(const SampledSpectrum& s) {
+  for (int i = 0; i < count_; ++i) lobes_[i].weight *= s;
+  emission_ *= s;
+}
+
+void Closure::append(const Closure& other) {
+  for (int i = 0; i < other.count_; ++i) add_lobe(other.lobes_[i].lobe, other.lobes_[i].weight);
+  emission_ += other.emission_;
+}
+
+bool Closure::has_non_delta_lobes() const {
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta()) return true;
+  return false;
+}
+
+bool Closure::polarizes() const {
+  for (int i = 0; i < count_; ++i)
+    if (lobes_[i].lobe->polarizes()) return true;
+  return false;
+}
+
+SampledSpectrum Closure::eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  SampledSpectrum f;
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    if (!l.lobe->is_delta()) f += l.weight * l.lobe->eval(wo, wi, lambda);
+  }
+  return f;
+}
+
+float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
+                                 std::array<float, kMaxLobes>& p) const {
+  float total = 0.0f;
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    // Weighted albedo averaged over the wavelengths (Cycles' sample_weight, with the lobe's albedo).
+    p[i] = std::max(0.0f, (l.weight * l.lobe->albedo_hint(wo, lambda)).average());
+    total += p[i];
+  }
+  return total;
+}
+
+float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  std::array<float, kMaxLobes> p{};
+  const float total = selection_weights(wo, lambda, p);
+  if (total <= 0.0f) return 0.0f;
+  float pdf = 0.0f;
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta() && p[i] > 0.0f) pdf += p[i] / total * lobes_[i].lobe->pdf(wo, wi, lambda);
+  return pdf;
+}
+
+std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const Vec2& u,
+                                          const SampledWavelengths& lambda) const {
+  std::array<float, kMaxLobes> p{};
+  const float total = selection_weights(wo, lambda, p);
+  if (total <= 0.0f) return std::nullopt;
+
+  // Pick lobe k with probability p_k / total; rescale u_choice to [0,1) for the lobe's own use.
+  int k = 0;
+  float cdf = 0.0f;
+  const float target = u_choice * total;
+  for (; k < count_ - 1; ++k) {
+    if (target < cdf + p[k]) break;
+    cdf += p[k];
+  }
+  while (p[k] <= 0.0f && k > 0) --k;  // guard against rounding past the last non-zero entry
+  const float pick = p[k] / total;
+  const float u_rest = std::min((target - cdf) / p[k], 0.99999994f);
+
+  const WeightedLobe& chosen = lobes_[k];
+  std::optional<LobeSample> s = chosen.lobe->sample(wo, std::max(u_rest, 0.0f), u, lambda);
+  if (!s) return std::nullopt;
+
+  if (s->delta) {
+    s->weight = s->weight * chosen.weight / pick;
+    s->pdf *= pick;
+    return s;
+  }
+  // One BSDF for MIS: value and pdf of the whole non-delta mixture in the sampled direction.
+  const float pdf = this->pdf(wo, s->wi, lambda);
+  if (!(pdf > 0.0f)) return std::nullopt;
+  s->pdf = pdf;
+  s->weight = eval(wo, s->wi, lambda) * (abs_cos_theta(s->wi) / pdf);
+  s->has_mueller = false;  // polarized mixtures are assembled by the integrator (issue 4)
+  return s;
+}
+
+}  // namespace ochre

@@ -1,0 +1,38 @@
+#include "materials/conversion_kernels.h"
+
+#include "materials/rgb_upsampling.h"
+#include "spectra/spectrum.h"
+
+namespace ochre {
+
+namespace {
+
+void float_to_colour(const NodeArgs& a) {
+  const float x = a.in_float(0);
+  a.set_colour(0, {x, x, x});
+}
+void float_to_vector(const NodeArgs& a) {
+  const float x = a.in_float(0);
+  a.set_vector(0, {x, x, x});
+}
+void float_to_spectrum(const NodeArgs& a) {
+  a.set_spectrum(0, SampledSpectrum(a.in_float(0)));
+}
+
+}  // namespace
+
+NodeFn conversion_kernel(SocketType from, SocketType to, SpectralRole role) {
+  if (from == SocketType::kFloat) {
+    if (to == SocketType::kColour) return float_to_colour;
+    if (to == SocketType::kVector) return float_to_vector;
+    if (to == SocketType::kSpectrum) return float_to_spectrum;
+  }
+  if (from == SocketType::kColour && to == SocketType::kSpectrum) return colour_to_spectrum_kernel(role);
+  return nullptr;
+}
+
+void sample_spectrum_kernel(const NodeArgs& a) {
+  a.set_spectrum(0, static_cast<const Spectrum*>(a.payload)->sample(a.lambda()));
+}
+
+}  // namespace ochre

@@ -1,0 +1,256 @@
+#include "renderer/accel.h"
+
+#include <embree3/rtcore.h>
+#include <fmt/format.h>
+
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "materials/frame.h"
+
+namespace ochre {
+
+namespace {
+
+// The first Embree error reported by the device callback; checked after each API phase, so
+// errors surface as exceptions in the calling thread instead of unwinding through Embree.
+struct EmbreeErrors {
+  std::mutex mutex;
+  std::string first;
+
+  static void record(void* user, RTCError code, const char* message) {
+    auto* self = static_cast<EmbreeErrors*>(user);
+    std::lock_guard lock(self->mutex);
+    if (self->first.empty())
+      self->first = fmt::format("Embree error {}: {}", static_cast<int>(code), message ? message : "");
+  }
+  void throw_if_any(const char* phase) {
+    std::lock_guard lock(mutex);
+    if (!first.empty()) throw std::runtime_error(fmt::format("Accel ({}): {}", phase, first));
+  }
+};
+
+// Sums Embree's allocations and frees (the BVH, copied buffers, build scratch already freed).
+bool count_memory(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<std::atomic<int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
+  return true;
+}
+
+}  // namespace
+
+struct Accel::Impl {
+  EmbreeErrors errors;
+  std::atomic<int64_t> embree_bytes{0};
+  size_t shared_bytes = 0;
+  size_t copied_buffers = 0;
+  double build_seconds = 0;
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  void add_mesh(const Mesh& mesh, unsigned id) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    const size_t vertex_count = mesh.positions.size();
+    if (mesh.positions.capacity() > vertex_count) {
+      // The spare element makes the 16-byte load of the last vertex read allocated memory.
+      rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                 mesh.positions.data(), 0, sizeof(Vec3), vertex_count);
+      shared_bytes += vertex_count * sizeof(Vec3);
+    } else {
+      // Embree pads buffers it allocates itself.
+      auto* copy = static_cast<Vec3*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                              RTC_FORMAT_FLOAT3, sizeof(Vec3), vertex_count));
+      if (copy) std::copy(mesh.positions.begin(), mesh.positions.end(), copy);
+      ++copied_buffers;
+    }
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.indices.data(), 0,
+                               3 * sizeof(uint32_t), mesh.triangle_count());
+    shared_bytes += mesh.indices.size() * sizeof(uint32_t);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene, geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+};
+
+Accel::Accel(const std::vector<Mesh>& meshes) : impl_(std::make_unique<Impl>()) {
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    meshes[i].validate(fmt::format("mesh {} '{}'", i, meshes[i].name));
+  }
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device)
+    throw std::runtime_error(fmt::format("Accel: cannot create the Embree device (error {})",
+                                         static_cast<int>(rtcGetDeviceError(nullptr))));
+  rtcSetDeviceErrorFunction(impl_->device, &EmbreeErrors::record, &impl_->errors);
+  rtcSetDeviceMemoryMonitorFunction(impl_->device, &count_memory, &impl_->embree_bytes);
+
+  impl_->scene = rtcNewScene(impl_->device);
+  // Robust mode keeps the watertight triangle test exact at shared edges (no rays slip through).
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    // Empty meshes get no geometry; the IDs of the others still equal their mesh index.
+    if (meshes[i].triangle_count() > 0) impl_->add_mesh(meshes[i], static_cast<unsigned>(i));
+  }
+  impl_->errors.throw_if_any("geometry set-up");
+
+  const auto start = std::chrono::steady_clock::now();
+  rtcCommitScene(impl_->scene);
+  impl_->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  impl_->errors.throw_if_any("BVH build");
+}
+
+Accel::~Accel() = default;
+
+std::optional<Hit> Accel::intersect(const Ray& ray) const {
+  if (!(ray.tmax > ray.tmin)) return std::nullopt;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit query{};
+  query.ray.org_x = ray.origin.x;
+  query.ray.org_y = ray.origin.y;
+  query.ray.org_z = ray.origin.z;
+  query.ray.dir_x = ray.dir.x;
+  query.ray.dir_y = ray.dir.y;
+  query.ray.dir_z = ray.dir.z;
+  query.ray.tnear = ray.tmin;
+  query.ray.tfar = ray.tmax;
+  query.ray.mask = ~0u;
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context, &query);
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  // Embree's Ng for triangles is cross(v1 - v0, v2 - v0) (checked by the Accel tests).
+  return Hit{query.ray.tfar, query.hit.geomID, query.hit.primID,
+             query.hit.u,    query.hit.v,      Vec3{query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z}};
+}
+
+bool Accel::occluded(const Ray& ray) const {
+  if (!(ray.tmax > ray.tmin)) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay query{};
+  query.org_x = ray.origin.x;
+  query.org_y = ray.origin.y;
+  query.org_z = ray.origin.z;
+  query.dir_x = ray.dir.x;
+  query.dir_y = ray.dir.y;
+  query.dir_z = ray.dir.z;
+  query.tnear = ray.tmin;
+  query.tfar = ray.tmax;
+  query.mask = ~0u;
+  rtcOccluded1(impl_->scene, &context, &query);
+  return query.tfar == -INFINITY;  // Embree marks an occluded ray with tfar = -inf
+}
+
+size_t Accel::memory_bytes() const {
+  return static_cast<size_t>(std::max<int64_t>(0, impl_->embree_bytes.load())) + impl_->shared_bytes;
+}
+
+double Accel::build_seconds() const {
+  return impl_->build_seconds;
+}
+
+size_t Accel::copied_vertex_buffers() const {
+  return impl_->copied_buffers;
+}
+
+// ------------------------------------------------------------------------------- surface points
+
+namespace {
+
+template <typename T>
+T interpolate(const std::vector<T>& values, const uint32_t* corner, float b0, float b1, float b2) {
+  return values[corner[0]] * b0 + values[corner[1]] * b1 + values[corner[2]] * b2;
+}
+
+Vec2 interpolate(const std::vector<Vec2>& uvs, const uint32_t* corner, float b0, float b1, float b2) {
+  const Vec2 &a = uvs[corner[0]], &b = uvs[corner[1]], &c = uvs[corner[2]];
+  return {a.x * b0 + b.x * b1 + c.x * b2, a.y * b0 + b.y * b1 + c.y * b2};
+}
+
+bool usable_unit(const Vec3& v) {
+  return dot(v, v) > 0.0f && std::isfinite(dot(v, v));
+}
+
+// dp/du and the world-per-uv area ratio from the triangle's uv parametrization (pbrt-v3,
+// Pharr et al. 2016, sec. 3.6.2). Returns false when the uv triangle is degenerate.
+bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, Vec3& dpdu,
+                    float& area_scale) {
+  const Vec2 duv02{uv[0].x - uv[2].x, uv[0].y - uv[2].y}, duv12{uv[1].x - uv[2].x, uv[1].y - uv[2].y};
+  const Vec3 dp02 = p[0] - p[2], dp12 = p[1] - p[2];
+  const float determinant = duv02.x * duv12.y - duv02.y * duv12.x;
+  if (!(std::fabs(determinant) > 1e-12f)) return false;
+  dpdu = (dp02 * duv12.y - dp12 * duv02.y) / determinant;
+  area_scale = world_double_area / std::fabs(determinant);
+  return usable_unit(dpdu) && std::isfinite(area_scale);
+}
+
+}  // namespace
+
+SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray) {
+  const Mesh& mesh = meshes[hit.mesh];
+  const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
+  const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
+  const float b1 = hit.b1, b2 = hit.b2, b0 = 1.0f - b1 - b2;
+
+  SurfacePoint sp;
+  sp.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
+  const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+  const float double_area = length(n);
+  if (double_area > 0.0f && std::isfinite(double_area)) {
+    sp.ng = n / double_area;
+  } else {  // degenerate triangle: face the ray
+    sp.ng = usable_unit(hit.ng) ? normalize(hit.ng) : normalize(-ray.dir);
+    sp.p = ray.origin + ray.dir * hit.t;
+  }
+  sp.ns = sp.ng;
+  if (!mesh.normals.empty()) {
+    const Vec3 ns = interpolate(mesh.normals, corner, b0, b1, b2);
+    if (usable_unit(ns)) sp.ns = normalize(ns);
+  }
+  if (!mesh.colours.empty()) {
+    sp.colour = interpolate(mesh.colours, corner, b0, b1, b2);
+    sp.has_colour = true;
+  }
+  bool have_derivatives = false;
+  if (!mesh.uvs.empty()) {
+    sp.uv = interpolate(mesh.uvs, corner, b0, b1, b2);
+    sp.has_uv = true;
+    const Vec2 uv[3] = {mesh.uvs[corner[0]], mesh.uvs[corner[1]], mesh.uvs[corner[2]]};
+    have_derivatives = uv_derivatives(p, uv, double_area, sp.dpdu, sp.area_scale_uv);
+  }
+  if (!have_derivatives) {
+    sp.dpdu = Frame::from_normal(sp.ng).s;
+    sp.area_scale_uv = 0.0f;
+  }
+  return sp;
+}
+
+// Waechter & Binder 2019 (Ray Tracing Gems ch. 6): move each coordinate by a fixed number of
+// float ulps along the normal (an offset relative to |p|), and by a fixed absolute amount near
+// the origin where ulps become tiny.
+Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& dir) {
+  constexpr float kOriginRegion = 1.0f / 32.0f;
+  constexpr float kFloatScale = 1.0f / 65536.0f;
+  constexpr float kIntScale = 256.0f;
+  Vec3 n = normalize(ng);
+  if (dot(n, dir) < 0.0f) n = -n;
+  Vec3 out;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int ulps = static_cast<int>(kIntScale * n[axis]);
+    const int32_t bits = std::bit_cast<int32_t>(p[axis]);
+    const float shifted = std::bit_cast<float>(bits + (p[axis] < 0.0f ? -ulps : ulps));
+    out[axis] = std::fabs(p[axis]) < kOriginRegion ? p[axis] + kFloatScale * n[axis] : shifted;
+  }
+  return out;
+}
+
+}  // namespace ochre

@@ -1,0 +1,90 @@
+#pragma once
+// Accel: the Embree 3 acceleration structure over the scene's triangle meshes, plus the
+// helpers that turn a hit into a shading point and spawn secondary rays without
+// self-intersection. Embree stays private to accel.cpp.
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "materials/vec3.h"
+#include "renderer/mesh.h"
+
+namespace ochre {
+
+struct Ray {
+  Vec3 origin;
+  Vec3 dir;  // need not be unit length; t is measured in units of |dir|
+  float tmin = 0;
+  float tmax = INFINITY;
+};
+
+struct Hit {
+  float t = 0;
+  uint32_t mesh = 0;      // index into the mesh list given to Accel (Embree's geomID)
+  uint32_t triangle = 0;  // triangle index within that mesh (Embree's primID)
+  float b1 = 0, b2 = 0;   // barycentrics of the triangle's vertices 1 and 2 (Embree's u, v)
+  Vec3 ng;                // unnormalized geometric normal cross(p1 - p0, p2 - p0) (counter-clockwise winding)
+};
+
+// Bounding-volume hierarchy over all meshes: one Embree geometry per mesh, geomID = mesh index.
+// Built once in the constructor (robust mode, high build quality, TBB-parallel), then const and
+// safe to query from any number of threads.
+class Accel {
+ public:
+  // The meshes must outlive the Accel and must not be modified while it exists: Embree reads
+  // their position and index arrays in place. Embree loads each vertex with a 16-byte read, so
+  // the last position needs 4 readable bytes after it: meshes whose `positions` vector has
+  // spare capacity (all meshes made by this library: see Mesh::reserve_vertex_padding) are
+  // shared without copying; the others have their positions copied into an Embree buffer.
+  // Meshes are validated first (InputError naming the mesh on bad indices or non-finite data).
+  explicit Accel(const std::vector<Mesh>& meshes);
+  ~Accel();
+  Accel(const Accel&) = delete;
+  Accel& operator=(const Accel&) = delete;
+
+  // Closest hit in (tmin, tmax), or nothing. Incoherent single-ray query (rtcIntersect1).
+  std::optional<Hit> intersect(const Ray& ray) const;
+  // True when anything lies in (tmin, tmax) (rtcOccluded1, any-hit).
+  bool occluded(const Ray& ray) const;
+
+  // Bytes allocated by Embree (BVH, copied vertex buffers; counted by the device memory
+  // monitor) plus the shared mesh positions and indices.
+  size_t memory_bytes() const;
+  // Wall-clock time of the BVH build (rtcCommitScene).
+  double build_seconds() const;
+  // How many meshes needed their positions copied because they had no spare capacity.
+  size_t copied_vertex_buffers() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Everything the integrator needs about a hit point.
+struct SurfacePoint {
+  Vec3 p;                // position from the barycentrics (more precise than origin + t * dir)
+  Vec3 ng;               // unit geometric normal, cross(p1 - p0, p2 - p0) normalized (from the winding)
+  Vec3 ns;               // unit shading normal: interpolated vertex normals, or ng for flat meshes
+  Vec2 uv;               // interpolated texture coordinates, (0, 0) without UVs
+  Vec3 colour{1, 1, 1};  // interpolated linear Rec.709 vertex colour, white without colours
+  bool has_uv = false, has_colour = false;
+  Vec3 dpdu;                // dp/du of the triangle's uv parametrization; without usable UVs, an arbitrary
+                            // unit tangent perpendicular to ng
+  float area_scale_uv = 0;  // world area per unit uv area of the triangle (0 without usable UVs)
+};
+
+// Shading point of a hit returned by Accel::intersect on the same meshes. The ray is only used
+// as a fallback for p when the triangle is degenerate.
+SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray);
+
+// Origin for a ray leaving the surface point p (geometric normal ng, any length) in direction
+// dir: p pushed off the surface along ng, on the side dir points to, by an error bound that
+// grows with |p| (Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
+// Ray Tracing Gems, 2019, ch. 6). Use tmin = 0 with the returned origin.
+Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& dir);
+
+}  // namespace ochre

@@ -1,0 +1,85 @@
+#include "renderer/atomic_file.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <system_error>
+
+#include "renderer/image_error.h"
+
+namespace ochre {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Distinguishes several outputs of one process that target the same final name.
+std::atomic<unsigned> temp_counter{0};
+
+fs::path directory_of(const fs::path& file) {
+  const fs::path dir = file.parent_path();
+  return dir.empty() ? fs::path(".") : dir;
+}
+
+// Forces the file's data to disk before the rename makes it visible under the final name; without it a
+// power loss right after the rename could leave an empty file on some filesystems. Best effort: a
+// filesystem that cannot fsync still gets the atomic rename.
+void sync_to_disk(const fs::path& path, int open_flags) {
+  const int fd = ::open(path.c_str(), open_flags | O_CLOEXEC);
+  if (fd < 0) return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+AtomicOutput::AtomicOutput(fs::path final_path) : final_path_(std::move(final_path)) {
+  const unsigned counter = temp_counter.fetch_add(1, std::memory_order_relaxed);
+  temp_path_ = final_path_;
+  temp_path_ += fmt::format(".tmp-{}-{}", static_cast<long>(::getpid()), counter);
+}
+
+AtomicOutput::~AtomicOutput() {
+  if (committed_) return;
+  std::error_code ignored;
+  fs::remove(temp_path_, ignored);
+}
+
+void AtomicOutput::commit() {
+  if (committed_) return;
+  std::error_code error;
+  if (!fs::is_regular_file(temp_path_, error)) {
+    throw ImageError(fmt::format("cannot write {}: the writer produced no file", final_path_.string()));
+  }
+  sync_to_disk(temp_path_, O_RDONLY);
+  fs::rename(temp_path_, final_path_, error);
+  if (error) {
+    fs::remove(temp_path_, error);
+    throw ImageError(fmt::format("cannot write {}: {}", final_path_.string(), error.message()));
+  }
+  committed_ = true;
+  sync_to_disk(directory_of(final_path_), O_RDONLY | O_DIRECTORY);
+}
+
+void check_output_writable(const fs::path& output) {
+  const std::string out = output.string();
+  if (output.empty()) throw ImageError("cannot write an output with an empty file name");
+  const fs::path dir = directory_of(output);
+  std::error_code error;
+  if (!fs::exists(dir, error)) {
+    throw ImageError(fmt::format("cannot write {}: directory {} does not exist", out, dir.string()));
+  }
+  if (!fs::is_directory(dir, error)) {
+    throw ImageError(fmt::format("cannot write {}: {} is not a directory", out, dir.string()));
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    throw ImageError(fmt::format("cannot write {}: directory {} is not writable", out, dir.string()));
+  }
+  if (fs::is_directory(output, error)) {
+    throw ImageError(fmt::format("cannot write {}: it is a directory", out));
+  }
+}
+
+}  // namespace ochre

@@ -1,0 +1,39 @@
+#pragma once
+// Cameras: perspective (pinhole) and orthographic. A camera maps a film position in
+// normalised coordinates (x right, y down, both in [0,1)) to a world-space ray.
+
+#include "materials/vec3.h"
+#include "renderer/accel.h"
+
+namespace ochre {
+
+struct CameraBasis {
+  Vec3 eye;
+  Vec3 right, up, forward;  // orthonormal, right-handed: right x up = -forward
+};
+
+// Basis looking from eye at target; `up` need not be orthogonal to the view direction.
+CameraBasis camera_basis_look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
+
+class Camera {
+ public:
+  enum class Kind { Perspective, Orthographic };
+
+  // fov_degrees: field of view across the shorter film axis (perspective).
+  static Camera perspective(const CameraBasis& basis, float fov_degrees, int width, int height);
+  // view_size: world-space extent of the shorter film axis (orthographic).
+  static Camera orthographic(const CameraBasis& basis, float view_size, int width, int height);
+
+  // film_x, film_y in pixels (continuous; pixel (i, j) covers [i, i+1) x [j, j+1), j = 0 at the top).
+  Ray generate_ray(float film_x, float film_y) const;
+  Kind kind() const { return kind_; }
+  const CameraBasis& basis() const { return basis_; }
+
+ private:
+  Kind kind_ = Kind::Perspective;
+  CameraBasis basis_;
+  float half_width_ = 1, half_height_ = 1;  // tangent of half-angles (perspective) or world half extents
+  int width_ = 1, height_ = 1;
+};
+
+}  // namespace ochre

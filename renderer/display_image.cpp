@@ -1,0 +1,160 @@
+#include "renderer/display_image.h"
+
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards (DESIGN.md).
+#include <fmt/format.h>
+// clang-format off
+#include <OpenImageIO/imageio.h>
+// clang-format on
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+#include "renderer/atomic_file.h"
+#include "renderer/image_error.h"
+
+namespace ochre {
+
+namespace {
+
+void check_size(int width, int height, const std::vector<float>& rgb, const std::string& what) {
+  if (width <= 0 || height <= 0 ||
+      rgb.size() != 3 * static_cast<size_t>(width) * static_cast<size_t>(height)) {
+    throw ImageError(
+        fmt::format("{}: {} values do not make a {}x{} RGB image", what, rgb.size(), width, height));
+  }
+}
+
+// The "none" pipeline: clamp linear Rec.709 to [0, 1] (NaN to 0) and encode with the sRGB transfer
+// function (IEC 61966-2-1).
+void apply_srgb_transfer(std::vector<float>& rgb) {
+  for (float& v : rgb) v = v > 0.0f ? srgb_encode(std::min(v, 1.0f)) : 0.0f;
+}
+
+ColorSpace parse_pixels_space(const std::string& name) {
+  try {
+    return parse_color_space(name);
+  } catch (const std::invalid_argument& error) {
+    throw ImageError(fmt::format("display image working space: {}", error.what()));
+  }
+}
+
+std::vector<std::uint8_t> quantize(const std::vector<float>& encoded) {
+  std::vector<std::uint8_t> pixels(encoded.size());
+  for (size_t i = 0; i < encoded.size(); ++i) pixels[i] = quantize_unorm8(encoded[i]);
+  return pixels;
+}
+
+void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
+                const std::vector<std::uint8_t>& pixels, const std::string& description) {
+  const std::string file = path.string();
+  auto output = OIIO::ImageOutput::create(format);
+  if (!output) throw ImageError(fmt::format("cannot write {}: OIIO has no {} writer", file, format));
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("Software", "ochre");
+  spec.attribute("ImageDescription", description);
+  if (std::string_view(format) == "jpeg") spec.attribute("Compression", "jpeg:95");
+
+  AtomicOutput atomic(path);
+  if (!output->open(atomic.temp_path().string(), spec) ||
+      !output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !output->close()) {
+    throw ImageError(fmt::format("cannot write {}: {}", file, output->geterror()));
+  }
+  atomic.commit();
+}
+
+const char* format_for_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".png") return "png";
+  if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
+  throw ImageError(
+      fmt::format("cannot write {}: unknown display image extension '{}' (expected .png, .jpg or .jpeg)",
+                  path.string(), extension));
+}
+
+}  // namespace
+
+std::uint8_t quantize_unorm8(float v) {
+  if (!(v > 0.0f)) return 0;
+  if (v >= 1.0f) return 255;
+  return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+}
+
+void convert_working_space(std::vector<float>& rgb, ColorSpace from, ColorSpace to) {
+  if (from == to) return;
+  const Mat3 m = xyz_to_rgb_matrix(to) * rgb_to_xyz_matrix(from);
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
+    const Vec3d converted = m * Vec3d{rgb[i], rgb[i + 1], rgb[i + 2]};
+    for (int c = 0; c < 3; ++c) rgb[i + c] = static_cast<float>(converted[c]);
+  }
+}
+
+std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vector<float>& rgb,
+                                          const DisplayOptions& options, DisplayTransformReport* report) {
+  check_size(width, height, rgb, "display image");
+  const ColorSpace pixels_space = parse_pixels_space(options.working_space);
+  if (!std::isfinite(options.exposure_stops)) {
+    throw ImageError(
+        fmt::format("display image: exposure {} is not a finite number", options.exposure_stops));
+  }
+  std::vector<float> work = rgb;
+  if (options.exposure_stops != 0.0f) {
+    const float scale = std::exp2(options.exposure_stops);
+    for (float& v : work) v *= scale;
+  }
+
+  DisplayTransformReport used;
+  if (options.ocio_config == "none") {
+    convert_working_space(work, pixels_space, ColorSpace::LinearRec709);
+    apply_srgb_transfer(work);
+    used.description = "built-in sRGB transfer (no OCIO)";
+  } else {
+    const OcioDisplay display(options.ocio_config, options.display, options.view, pixels_space);
+    convert_working_space(work, pixels_space, display.input_space());
+    display.apply(work, width, height);
+    used.description = display.description();
+    used.warnings = display.warnings();
+  }
+  if (report) *report = used;
+  return quantize(work);
+}
+
+DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,
+                                         const std::vector<float>& rgb, const DisplayOptions& options) {
+  check_size(width, height, rgb, fmt::format("cannot write {}", path.string()));
+  DisplayTransformReport report;
+  const std::vector<std::uint8_t> pixels = to_display_rgb8(width, height, rgb, options, &report);
+  write_rgb8(path, "png", width, height, pixels, report.description);
+  return report;
+}
+
+DisplayTransformReport write_display_image(const std::filesystem::path& path, int width, int height,
+                                           const std::vector<float>& rgb, const DisplayOptions& options) {
+  const char* format = format_for_extension(path);
+  check_size(width, height, rgb, fmt::format("cannot write {}", path.string()));
+  DisplayTransformReport report;
+  const std::vector<std::uint8_t> pixels = to_display_rgb8(width, height, rgb, options, &report);
+  write_rgb8(path, format, width, height, pixels, report.description);
+  return report;
+}
+
+std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height) {
+  const std::string file = path.string();
+  auto input = OIIO::ImageInput::open(file);
+  if (!input) throw ImageError(fmt::format("cannot read {}: {}", file, OIIO::geterror()));
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.nchannels < 3) {
+    throw ImageError(fmt::format("cannot read {}: {} channel(s), expected RGB", file, spec.nchannels));
+  }
+  width = spec.width;
+  height = spec.height;
+  std::vector<std::uint8_t> pixels(3 * static_cast<size_t>(width) * static_cast<size_t>(height));
+  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data())) {
+    throw ImageError(fmt::format("cannot read {}: {}", file, input->geterror()));
+  }
+  return pixels;
+}
+
+}  // namespace ochre

@@ -1,0 +1,60 @@
+#pragma once
+// Display images (8-bit sRGB PNG, or JPEG) from the renderer's linear working-space RGB, through an
+// OpenColorIO display/view transform or, with ocio_config = "none", the plain sRGB transfer function.
+// Files are written through AtomicOutput. OIIO and OCIO headers stay in the .cpp files.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "renderer/ocio_display.h"
+#include "spectra/color_space.h"
+
+namespace ochre {
+
+struct DisplayOptions {
+  // "" = $OCIO, then the built-in config; "builtin"; "none" = no OCIO (clamp + sRGB transfer); or a path.
+  std::string ocio_config;
+  // "" = the config's default display / that display's default view.
+  std::string display, view;
+  // The space of the pixels, as parse_color_space() reads it: "rec709" or "acescg".
+  std::string working_space = "rec709";
+  // Scales the linear pixels by 2^exposure_stops before the display transform.
+  float exposure_stops = 0.0f;
+};
+
+// What a conversion used, for the caller to log.
+struct DisplayTransformReport {
+  // "OCIO config 'X': display 'sRGB', view 'Standard' (input colour space '...')" or
+  // "built-in sRGB transfer (no OCIO)".
+  std::string description;
+  std::vector<std::string> warnings;
+};
+
+// Round to nearest of v * 255 after clamping to [0, 1]; NaN gives 0.
+std::uint8_t quantize_unorm8(float v);
+// Converts linear RGB triples in place between working spaces (through XYZ with the matrices of
+// spectra/color_space.h: Bradford adaptation between the ACES white and D65).
+void convert_working_space(std::vector<float>& rgb, ColorSpace from, ColorSpace to);
+
+// Linear working-space RGB (3 floats per pixel, row 0 = top) to 8-bit display RGB. Throws ImageError
+// for a bad size or option, or a config problem (naming the config).
+std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vector<float>& rgb,
+                                          const DisplayOptions& options,
+                                          DisplayTransformReport* report = nullptr);
+
+// Writes an 8-bit RGB PNG (whatever the extension). Throws ImageError naming the file.
+DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,
+                                         const std::vector<float>& rgb, const DisplayOptions& options);
+
+// Writes a PNG or a JPEG (quality 95) chosen by the extension (.png, .jpg, .jpeg); throws ImageError
+// for any other extension.
+DisplayTransformReport write_display_image(const std::filesystem::path& path, int width, int height,
+                                           const std::vector<float>& rgb, const DisplayOptions& options);
+
+// Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
+// Throws ImageError naming the file.
+std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height);
+
+}  // namespace ochre

@@ -1,0 +1,15 @@
+#pragma once
+// Reads an OpenEXR file back into an ExrImage: every channel converted to float, all string attributes,
+// the chromaticities when present. Used by tests and tools (image diff, merge).
+
+#include <filesystem>
+
+#include "renderer/exr_writer.h"
+
+namespace ochre {
+
+// Throws ImageError naming the file when it is missing, not an EXR, tiled with mipmaps, or has
+// subsampled channels.
+ExrImage read_exr(const std::filesystem::path& path);
+
+}  // namespace ochre

@@ -1,0 +1,35 @@
+#pragma once
+// Unidirectional spectral path tracer: next-event estimation, multiple importance sampling
+// (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
+// lights handled. Radiance is traced for the 4 hero wavelengths of the path.
+
+#include <cstdint>
+
+#include "materials/lobe_arena.h"
+#include "renderer/sampler.h"
+#include "renderer/scene.h"
+
+namespace ochre {
+
+struct PathStats {
+  uint64_t rays = 0;         // camera + continuation rays (rtcIntersect1)
+  uint64_t shadow_rays = 0;  // rtcOccluded1
+};
+
+class PathIntegrator {
+ public:
+  explicit PathIntegrator(const Scene& scene) : scene_(scene) {}
+
+  // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`.
+  SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& lambda, const IndependentSampler& sampler,
+                           LobeArena& arena, PathStats& stats) const;
+
+ private:
+  // Next-event estimation at a surface point: one light sample, MIS-weighted.
+  SampledSpectrum direct_light(const struct PathVertex& v, const SampledWavelengths& lambda,
+                               const IndependentSampler& sampler, uint32_t depth, PathStats& stats) const;
+
+  const Scene& scene_;
+};
+
+}  // namespace ochre

@@ -1,0 +1,107 @@
+#include "renderer/procedural_shapes.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "renderer/input_error.h"
+
+namespace ochre {
+
+namespace {
+
+void require_positive(float value, const char* shape, const char* parameter) {
+  if (!(value > 0.0f) || !std::isfinite(value)) {
+    throw InputError(fmt::format("{}: {} must be a positive finite number, got {}", shape, parameter, value));
+  }
+}
+
+void require_at_least(int value, int minimum, const char* shape, const char* parameter) {
+  if (value < minimum)
+    throw InputError(fmt::format("{}: {} must be at least {}, got {}", shape, parameter, minimum, value));
+}
+
+void add_vertex(Mesh& mesh, Vec3 p, Vec3 n, Vec2 uv) {
+  mesh.positions.push_back(p);
+  mesh.normals.push_back(n);
+  mesh.uvs.push_back(uv);
+}
+
+void add_triangle(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c) {
+  mesh.indices.insert(mesh.indices.end(), {a, b, c});
+}
+
+}  // namespace
+
+Mesh make_plane(Vec2 size) {
+  require_positive(size.x, "plane", "size.x");
+  require_positive(size.y, "plane", "size.y");
+  Mesh mesh;
+  mesh.name = "plane";
+  const float hx = 0.5f * size.x, hy = 0.5f * size.y;
+  const Vec3 n{0, 0, 1};
+  add_vertex(mesh, {-hx, -hy, 0}, n, {0, 0});
+  add_vertex(mesh, {hx, -hy, 0}, n, {1, 0});
+  add_vertex(mesh, {hx, hy, 0}, n, {1, 1});
+  add_vertex(mesh, {-hx, hy, 0}, n, {0, 1});
+  add_triangle(mesh, 0, 1, 2);
+  add_triangle(mesh, 0, 2, 3);
+  mesh.reserve_vertex_padding();
+  return mesh;
+}
+
+Mesh make_disk(float radius, int segments) {
+  require_positive(radius, "disk", "radius");
+  require_at_least(segments, 3, "disk", "segments");
+  Mesh mesh;
+  mesh.name = "disk";
+  mesh.positions.reserve(segments + 2);
+  const Vec3 n{0, 0, 1};
+  add_vertex(mesh, {0, 0, 0}, n, {0.5f, 0.5f});
+  for (int i = 0; i < segments; ++i) {
+    const double phi = 2.0 * M_PI * i / segments;
+    const float c = static_cast<float>(std::cos(phi)), s = static_cast<float>(std::sin(phi));
+    add_vertex(mesh, {radius * c, radius * s, 0}, n, {0.5f * (c + 1), 0.5f * (s + 1)});
+  }
+  for (int i = 0; i < segments; ++i) {
+    add_triangle(mesh, 0, 1 + i, 1 + (i + 1) % segments);
+  }
+  return mesh;
+}
+
+// Vertex grid (subdivisions + 1) rows x (2 subdivisions + 1) columns; row 0 is the south pole.
+// Positions of the last column and of each pole row are computed from the same (row, column % n)
+// inputs as their twins, so duplicates are bit-identical.
+Mesh make_sphere(float radius, int subdivisions) {
+  require_positive(radius, "sphere", "radius");
+  require_at_least(subdivisions, 2, "sphere", "subdivisions");
+  const int rows = subdivisions, columns = 2 * subdivisions;
+  Mesh mesh;
+  mesh.name = "sphere";
+  mesh.positions.reserve(size_t(rows + 1) * (columns + 1) + 1);
+  for (int row = 0; row <= rows; ++row) {
+    const double theta = M_PI * row / rows;  // from the south pole
+    const double z = row == 0 ? -1.0 : (row == rows ? 1.0 : -std::cos(theta));
+    const double ring = (row == 0 || row == rows) ? 0.0 : std::sin(theta);
+    for (int column = 0; column <= columns; ++column) {
+      const double phi = 2.0 * M_PI * (column % columns) / columns;
+      const Vec3 n{static_cast<float>(ring * std::cos(phi)), static_cast<float>(ring * std::sin(phi)),
+                   static_cast<float>(z)};
+      const Vec2 uv{static_cast<float>(column) / columns, static_cast<float>(row) / rows};
+      add_vertex(mesh, n * radius, normalize(n), uv);
+    }
+  }
+  auto vertex = [&](int row, int column) { return static_cast<uint32_t>(row * (columns + 1) + column); };
+  for (int row = 0; row < rows; ++row) {
+    for (int column = 0; column < columns; ++column) {
+      const uint32_t a = vertex(row, column), b = vertex(row, column + 1);
+      const uint32_t c = vertex(row + 1, column + 1), d = vertex(row + 1, column);
+      // Counter-clockwise seen from outside: u grows eastwards (+phi), v grows northwards (+z).
+      if (row != 0) add_triangle(mesh, a, b, c);         // skip the degenerate triangle at the south pole
+      if (row != rows - 1) add_triangle(mesh, a, c, d);  // and at the north pole
+    }
+  }
+  return mesh;
+}
+
+}  // namespace ochre

@@ -1,0 +1,87 @@
+#include "renderer/render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+
+#include "renderer/path_integrator.h"
+#include "spectra/cie.h"
+
+namespace ochre {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct TileCounters {
+  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0};
+};
+
+void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
+                 TileCounters& counters, const ProgressCallback& progress) {
+  const RenderSettings& s = scene.settings;
+  thread_local LobeArena arena;
+  PathStats stats;
+  uint64_t discarded = 0;
+  const int x_end = std::min(s.width, (tile_x + 1) * kTileSize);
+  const int y_end = std::min(s.height, (tile_y + 1) * kTileSize);
+  for (int y = tile_y * kTileSize; y < y_end; ++y) {
+    for (int x = tile_x * kTileSize; x < x_end; ++x) {
+      const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
+      for (uint32_t k = 0; k < s.spp; ++k) {
+        const IndependentSampler sampler(s.seed, pixel_index, s.sample_begin + k);
+        const SampledWavelengths lambda =
+            SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
+        const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
+        const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
+        const SampledSpectrum L = integrator.radiance(ray, lambda, sampler, arena, stats);
+        XYZ xyz = sampled_to_xyz(L, lambda);
+        if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z)) {
+          xyz = {0, 0, 0};  // never written: counted, contributes zero
+          ++discarded;
+        }
+        film.add_sample(x, y, xyz);
+      }
+    }
+  }
+  counters.rays += stats.rays;
+  counters.shadow_rays += stats.shadow_rays;
+  counters.discarded += discarded;
+  if (progress) progress(static_cast<uint64_t>(x_end - tile_x * kTileSize) * (y_end - tile_y * kTileSize) * s.spp);
+}
+
+}  // namespace
+
+RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress) {
+  const RenderSettings& s = scene.settings;
+  const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+  const PathIntegrator integrator(scene);
+  TileCounters counters;
+  const int tiles_x = (s.width + kTileSize - 1) / kTileSize;
+  const int tiles_y = (s.height + kTileSize - 1) / kTileSize;
+
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, tiles_x * tiles_y),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int t = range.begin(); t != range.end(); ++t)
+          render_tile(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress);
+      },
+      tbb::simple_partitioner());
+  RenderStats stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.samples = static_cast<uint64_t>(s.width) * s.height * s.spp;
+  stats.rays = counters.rays;
+  stats.shadow_rays = counters.shadow_rays;
+  stats.discarded = counters.discarded;
+  stats.threads = threads;
+  return stats;
+}
+
+}  // namespace ochre

@@ -1,0 +1,30 @@
+#pragma once
+// Renders a scene into a Film: oneTBB over 16x16 tiles, each pixel's samples in index order,
+// so the image is bit-identical for any thread count.
+
+#include <cstdint>
+#include <functional>
+
+#include "renderer/film.h"
+#include "renderer/scene.h"
+
+namespace ochre {
+
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t samples = 0;
+  uint64_t rays = 0;         // intersect queries
+  uint64_t shadow_rays = 0;  // occlusion queries
+  uint64_t discarded = 0;    // NaN / Inf samples, counted as zero
+  int threads = 0;
+  double samples_per_second() const { return seconds > 0 ? samples / seconds : 0.0; }
+  double rays_per_second() const { return seconds > 0 ? (rays + shadow_rays) / seconds : 0.0; }
+};
+
+// Called with the number of pixel-samples finished since the last call (thread-safe use).
+using ProgressCallback = std::function<void(uint64_t)>;
+
+// Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film`.
+RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress = {});
+
+}  // namespace ochre

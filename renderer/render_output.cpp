@@ -1,0 +1,93 @@
+#include "renderer/render_output.h"
+
+#include <fmt/format.h>
+
+#include "renderer/atomic_file.h"
+#include "renderer/display_image.h"
+#include "renderer/exr_writer.h"
+#include "renderer/image_error.h"
+#include "renderer/input_error.h"
+#include "spectra/color_space.h"
+
+namespace ochre {
+
+namespace {
+DisplayOptions display_options(const OutputSettings& o) {
+  DisplayOptions d;
+  d.ocio_config = o.ocio_config;
+  d.display = o.display;
+  d.view = o.view;
+  d.working_space = o.colorspace;
+  d.exposure_stops = o.exposure;
+  return d;
+}
+}  // namespace
+
+std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
+  const ColorSpace space = parse_color_space(colorspace);
+  std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const RGB c = xyz_to_rgb(film.mean(x, y), space);
+      const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
+      rgb[i] = c.r;
+      rgb[i + 1] = c.g;
+      rgb[i + 2] = c.b;
+    }
+  return rgb;
+}
+
+void check_outputs(const OutputSettings& outputs) {
+  try {
+    if (outputs.exr.empty() && outputs.png.empty()) throw InputError("no output: give -o OUT.exr and/or --png OUT.png");
+    if (!outputs.exr.empty()) check_output_writable(outputs.exr);
+    if (!outputs.png.empty()) {
+      check_output_writable(outputs.png);
+      // Build the display transform on one pixel now: an unknown config, display or view fails
+      // before any rendering.
+      to_display_rgb8(1, 1, {0.18f, 0.18f, 0.18f}, display_options(outputs));
+    }
+  } catch (const ImageError& e) {
+    throw InputError(e.what());
+  }
+}
+
+std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
+                                       const RenderSettings& settings, const RenderStats& stats,
+                                       const std::string& scene_file) {
+  std::vector<std::string> written;
+  const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
+  if (!outputs.exr.empty()) {
+    ExrImage image;
+    image.width = film.width();
+    image.height = film.height();
+    const size_t n = static_cast<size_t>(image.width) * image.height;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+      std::vector<float> channel(n);
+      for (size_t i = 0; i < n; ++i) channel[i] = rgb[i * 3 + c];
+      image.channels.emplace_back(names[c], std::move(channel));
+    }
+    image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+    image.string_attributes["software"] = "ochre 0.1.0";
+    image.string_attributes["ochre.scene"] = scene_file;
+    image.string_attributes["ochre.colorspace"] = outputs.colorspace;
+    image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
+    image.string_attributes["ochre.sampleRange"] =
+        fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
+    image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+    image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+    write_exr(outputs.exr, image);
+    written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
+                                  image.height));
+  }
+  if (!outputs.png.empty()) {
+    const DisplayTransformReport report =
+        write_display_png(outputs.png, film.width(), film.height(), rgb, display_options(outputs));
+    written.push_back(fmt::format("wrote {} ({})", outputs.png, report.description));
+    for (const std::string& w : report.warnings) written.push_back("warning: " + w);
+  }
+  return written;
+}
+
+}  // namespace ochre

@@ -1,0 +1,28 @@
+#pragma once
+// Turns a rendered Film into the files a user asked for: an EXR in the linear working space
+// and a display-referred PNG through OpenColorIO. Outputs are checked before rendering
+// (check_outputs) so a bad path or display setting fails with no work done and no file written.
+
+#include <string>
+#include <vector>
+
+#include "renderer/film.h"
+#include "renderer/render.h"
+#include "renderer/render_settings.h"
+
+namespace ochre {
+
+// Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
+std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+
+// Throws InputError when an output directory is missing or not writable, or the display
+// transform cannot be built (unknown config, display or view).
+void check_outputs(const OutputSettings& outputs);
+
+// Writes the requested files (each through a temporary name and an atomic rename).
+// Returns human-readable lines describing what was written.
+std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
+                                       const RenderSettings& settings, const RenderStats& stats,
+                                       const std::string& scene_file);
+
+}  // namespace ochre

@@ -1,0 +1,31 @@
+#pragma once
+// Settings of one render: the "integrator" and "film" blocks of a scene, overridable on the
+// command line.
+
+#include <cstdint>
+#include <string>
+
+namespace ochre {
+
+struct RenderSettings {
+  int width = 512;
+  int height = 512;
+  uint32_t spp = 64;          // samples per pixel
+  uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
+  int max_depth = 8;          // maximum number of scattering events on a path
+  int rr_depth = 3;           // Russian roulette starts after this many bounces
+  uint64_t seed = 0;
+  int threads = 0;            // 0 = all cores
+  std::string polarization = "auto";  // auto | off | intensity | stokes (tracing arrives with issue 4)
+};
+
+struct OutputSettings {
+  std::string exr;         // path of the EXR (empty = none)
+  std::string png;         // path of the display PNG (empty = none)
+  std::string colorspace = "rec709";  // EXR working space: rec709 | acescg
+  std::string ocio_config;            // "" = $OCIO, then the built-in config; "builtin"; "none"; or a path
+  std::string display, view;          // OCIO display and view ("" = the config's defaults)
+  float exposure = 0.0f;              // stops applied to the display image only
+};
+
+}  // namespace ochre

@@ -1,0 +1,23 @@
+#include "renderer/scene.h"
+
+namespace ochre {
+
+void Scene::build_lights(float) {
+  mesh_light.assign(meshes.size(), -1);
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    const CompiledMaterial& material = *materials[meshes[m].material];
+    if (!material.facts().is_emissive) continue;
+    auto light = std::make_unique<AreaLight>(meshes[m], material, textures.get());
+    if (light->power() <= 0.0f) continue;
+    mesh_light[m] = static_cast<int>(lights.size());
+    lights.push_back(std::move(light));
+  }
+  environment_light = -1;
+  for (size_t i = 0; i < lights.size(); ++i)
+    if (lights[i].get() == environment) environment_light = static_cast<int>(i);
+  std::vector<double> power(lights.size());
+  for (size_t i = 0; i < lights.size(); ++i) power[i] = lights[i]->power();
+  light_selection = Distribution1D(power);
+}
+
+}  // namespace ochre

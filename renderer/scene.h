@@ -1,0 +1,47 @@
+#pragma once
+// Scene: everything a render needs, built by load_scene() (scene_loader.h) from a JSON file.
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "materials/compiled_material.h"
+#include "renderer/accel.h"
+#include "renderer/area_light.h"
+#include "renderer/camera.h"
+#include "renderer/distribution_1d.h"
+#include "renderer/environment_light.h"
+#include "renderer/mesh.h"
+#include "renderer/render_settings.h"
+#include "renderer/texture_system.h"
+
+namespace ochre {
+
+struct Scene {
+  std::filesystem::path file;
+  RenderSettings settings;
+  OutputSettings outputs;
+  Camera camera;
+
+  std::vector<std::shared_ptr<const CompiledMaterial>> materials;
+  std::vector<std::string> material_names;
+  std::vector<Mesh> meshes;
+  std::unique_ptr<Accel> accel;
+  std::unique_ptr<OiioTextureProvider> textures;
+
+  std::vector<std::unique_ptr<Light>> lights;
+  Distribution1D light_selection;       // proportional to light power
+  std::vector<int> mesh_light;          // light index of an emissive mesh, -1 otherwise
+  const EnvironmentLight* environment = nullptr;
+  int environment_light = -1;
+
+  // Facts the integrator uses to model only what the scene needs.
+  bool polarizing_materials = false;
+  bool needs_uv = false;
+
+  // Builds the light list and selection distribution (after meshes and materials exist).
+  void build_lights(float scene_radius);
+  float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
+};
+
+}  // namespace ochre

@@ -1,0 +1,74 @@
+#include "renderer/spectrum_json.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <memory>
+
+#include "materials/resource_resolver.h"
+#include "materials/spectrum_source.h"
+#include "renderer/input_error.h"
+#include "renderer/json_fields.h"
+#include "spectra/constant_spectrum.h"
+#include "spectra/rgb_spectrum.h"
+
+namespace ochre {
+
+namespace {
+
+SpectrumPtr from_rgb(const nlohmann::json& value, SpectrumRole role, const std::string& where) {
+  const Vec3 c = json_vec3(value, where);
+  if (c.x < 0 || c.y < 0 || c.z < 0) throw InputError(fmt::format("{}: colour components must be >= 0", where));
+  const RGB rgb{c.x, c.y, c.z};
+  switch (role) {
+    case SpectrumRole::Illuminant:
+      return std::make_shared<RGBIlluminantSpectrum>(rgb);
+    case SpectrumRole::Reflectance:
+      if (c.x > 1 || c.y > 1 || c.z > 1)
+        throw InputError(fmt::format("{}: reflectance components must be <= 1", where));
+      return std::make_shared<RGBAlbedoSpectrum>(rgb);
+    case SpectrumRole::Unbounded:
+      break;
+  }
+  return std::make_shared<RGBUnboundedSpectrum>(rgb);
+}
+
+// Paths in a spectrum object resolve relative to the scene directory.
+class SceneDirectory final : public ResourceResolver {
+ public:
+  explicit SceneDirectory(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  std::filesystem::path resolve(const std::string& path) const override {
+    const std::filesystem::path p(path);
+    return p.is_absolute() ? p : dir_ / p;
+  }
+  int texture(const std::filesystem::path& file, const std::string&, int&) override {
+    throw std::runtime_error("textures are not allowed here: " + file.string());
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+SpectrumPtr from_object(const nlohmann::json& value, const std::string& where, const std::filesystem::path& scene_dir) {
+  try {
+    return spectrum_from_object(value, SceneDirectory(scene_dir));
+  } catch (const SpectrumObjectError& e) {
+    throw InputError(fmt::format("{}{}: {}", where, e.key.empty() ? "" : "." + e.key, e.what()));
+  }
+}
+
+}  // namespace
+
+SpectrumPtr parse_spectrum(const nlohmann::json& value, SpectrumRole role, const std::string& where,
+                           const std::filesystem::path& scene_dir) {
+  if (value.is_number()) {
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || x < 0) throw InputError(fmt::format("{}: must be a finite number >= 0 (got {})", where, x));
+    return std::make_shared<ConstantSpectrum>(static_cast<float>(x));
+  }
+  if (value.is_array()) return from_rgb(value, role, where);
+  if (value.is_object()) return from_object(value, where, scene_dir);
+  throw InputError(fmt::format("{}: expected a spectrum (number, [r, g, b] or object), got {}", where, value.dump()));
+}
+
+}  // namespace ochre

@@ -1,0 +1,376 @@
+#include "renderer/texture_system.h"
+
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
+#include <fmt/format.h>
+// OIIO after fmt.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
+#include <OpenImageIO/texture.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+#include <stdexcept>
+#include <system_error>
+#include <unordered_map>
+#include <vector>
+
+#include "renderer/atomic_file.h"
+#include "spectra/color_space.h"
+
+namespace ochre {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Bump when the conversion changes, so old cache files are not reused.
+constexpr int kCacheFormatVersion = 1;
+
+enum class Encoding { srgb, linear };
+
+const char* encoding_name(Encoding encoding) {
+  return encoding == Encoding::srgb ? "srgb" : "linear";
+}
+
+// ------------------------------------------------------------------------------------ cache directory
+
+fs::path env_path(const char* name) {
+  const char* value = std::getenv(name);
+  return (value != nullptr && *value != '\0') ? fs::path(value) : fs::path();
+}
+
+fs::path temp_cache_dir() {
+  std::error_code error;
+  const fs::path temp = fs::temp_directory_path(error);
+  return (error ? fs::path("/tmp") : temp) / "ochre-textures";
+}
+
+// Creates dir if needed and checks that a file can be created in it (access(2) is not enough: root
+// passes it on read-only filesystems).
+bool make_writable_directory(const fs::path& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir, error)) return false;
+  const fs::path probe = dir / fmt::format(".ochre-write-probe-{}", static_cast<long>(::getpid()));
+  bool writable = false;
+  {
+    std::ofstream stream(probe);
+    writable = stream.good() && (stream << "probe").good();
+  }
+  fs::remove(probe, error);
+  return writable;
+}
+
+// FNV-1a, 64 bit (Fowler, Noll, Vo): stable across compilers and runs, unlike std::hash.
+std::uint64_t fnv1a64(const std::string& text) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
+// ------------------------------------------------------------------------------------ source files
+
+struct SourceInfo {
+  fs::path path;  // absolute, normalized
+  OIIO::ImageSpec spec;
+  bool tiled_and_mipmapped = false;
+};
+
+[[noreturn]] void throw_unreadable(const fs::path& file, const std::string& why) {
+  throw std::runtime_error(fmt::format("cannot read texture {}: {}", file.string(), why));
+}
+
+// Reads the header of `file`; throws naming the file when it is missing or not an image OIIO can read.
+SourceInfo open_source(const fs::path& file) {
+  std::error_code error;
+  if (!fs::exists(file, error)) throw_unreadable(file, "the file does not exist");
+  if (!fs::is_regular_file(file, error)) throw_unreadable(file, "not a regular file");
+  SourceInfo info;
+  info.path = fs::weakly_canonical(fs::absolute(file), error);
+  if (error) info.path = fs::absolute(file).lexically_normal();
+  auto input = OIIO::ImageInput::open(info.path.string());
+  if (!input) throw_unreadable(file, OIIO::geterror());
+  info.spec = input->spec();
+  if (info.spec.nchannels < 1 || info.spec.width < 1 || info.spec.height < 1) {
+    throw_unreadable(file, "the image is empty");
+  }
+  info.tiled_and_mipmapped = info.spec.tile_width > 0 && input->seek_subimage(0, 1);
+  return info;
+}
+
+bool is_integer_format(OIIO::TypeDesc format) {
+  return format.basetype != OIIO::TypeDesc::HALF && format.basetype != OIIO::TypeDesc::FLOAT &&
+         format.basetype != OIIO::TypeDesc::DOUBLE;
+}
+
+// "auto": integer pixels are display-encoded (sRGB) unless the file says it is linear; float/half
+// pixels (EXR, HDR) are scene-linear.
+Encoding resolve_encoding(const SourceInfo& source, const std::string& colorspace) {
+  if (OIIO::Strutil::iequals(colorspace, "srgb")) return Encoding::srgb;
+  if (OIIO::Strutil::iequals(colorspace, "linear")) return Encoding::linear;
+  if (!OIIO::Strutil::iequals(colorspace, "auto")) {
+    throw std::runtime_error(
+        fmt::format("texture {}: unknown colorspace \"{}\" (expected auto, srgb or linear)",
+                    source.path.string(), colorspace));
+  }
+  const std::string declared = source.spec.get_string_attribute("oiio:ColorSpace");
+  const bool declared_linear =
+      OIIO::Strutil::iequals(declared, "linear") || OIIO::Strutil::iequals(declared, "scene_linear");
+  return (is_integer_format(source.spec.format) && !declared_linear) ? Encoding::srgb : Encoding::linear;
+}
+
+// Cache file name: source stem + hash of (absolute path, size, mtime, encoding, format version), so an
+// edited source file gets a new name and is converted again.
+fs::path cache_file_for(const fs::path& cache_dir, const SourceInfo& source, Encoding encoding) {
+  std::error_code error;
+  const auto size = fs::file_size(source.path, error);
+  const auto mtime = fs::last_write_time(source.path, error).time_since_epoch().count();
+  const std::string key = fmt::format("v{}|{}|{}|{}|{}", kCacheFormatVersion, source.path.string(), size,
+                                      static_cast<long long>(mtime), encoding_name(encoding));
+  const std::string stem = source.path.stem().string().substr(0, 64);
+  return cache_dir / fmt::format("{}-{:016x}.exr", stem, fnv1a64(key));
+}
+
+// ------------------------------------------------------------------------------------ conversion
+
+// Reads the first subimage of the source as float, in [0, 1] for integer formats. Alpha is kept
+// unassociated (as stored in PNG), so colour and mask channels are filtered as they were painted.
+OIIO::ImageBuf read_as_float(const SourceInfo& source) {
+  OIIO::ImageSpec read_config;
+  read_config.attribute("oiio:UnassociatedAlpha", 1);
+  auto input = OIIO::ImageInput::open(source.path.string(), &read_config);
+  if (!input) throw_unreadable(source.path, OIIO::geterror());
+  const OIIO::ImageSpec& in_spec = input->spec();
+  OIIO::ImageSpec spec(in_spec.width, in_spec.height, in_spec.nchannels, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = in_spec.channelnames;
+  spec.alpha_channel = in_spec.alpha_channel;
+  OIIO::ImageBuf buffer(spec, OIIO::InitializePixels::No);
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buffer.localpixels())) {
+    throw_unreadable(source.path, input->geterror());
+  }
+  return buffer;
+}
+
+void decode_srgb(OIIO::ImageBuf& buffer) {
+  const OIIO::ImageSpec& spec = buffer.spec();
+  auto* pixels = static_cast<float*>(buffer.localpixels());
+  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
+  for (std::size_t pixel = 0; pixel < count; ++pixel) {
+    for (int channel = 0; channel < spec.nchannels; ++channel) {
+      if (channel == spec.alpha_channel) continue;  // coverage, not colour
+      float& value = pixels[pixel * spec.nchannels + channel];
+      value = srgb_decode(value);  // IEC 61966-2-1 transfer function
+    }
+  }
+}
+
+// Writes a tiled, MIP-mapped OpenEXR texture of the linear pixels of `source` to `target` (temporary
+// name, then rename: a concurrent render never sees a half-written file). Integer sources become half
+// (11-bit mantissa: finer than 8-bit sRGB steps everywhere), float sources stay float.
+void convert_to_texture(const SourceInfo& source, Encoding encoding, const fs::path& target) {
+  OIIO::ImageBuf buffer = read_as_float(source);
+  if (encoding == Encoding::srgb) decode_srgb(buffer);
+
+  OIIO::ImageSpec config;
+  config.format = source.spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                          source.spec.format.basetype == OIIO::TypeDesc::DOUBLE
+                      ? OIIO::TypeDesc::FLOAT
+                      : OIIO::TypeDesc::HALF;
+  config.tile_width = 64;
+  config.tile_height = 64;
+  config.tile_depth = 1;
+  config.attribute("compression", "zip");
+  config.attribute("wrapmodes", "periodic,periodic");
+  config.attribute("oiio:ColorSpace", "Linear");
+  config.attribute("ochre:source", source.path.string());
+  config.attribute("ochre:source_encoding", encoding_name(encoding));
+  config.attribute("maketx:fileformatname", "openexr");  // the temporary name has no .exr extension
+
+  AtomicOutput output(target);
+  if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, buffer,
+                                        output.temp_path().string(), config)) {
+    throw std::runtime_error(fmt::format("cannot convert texture {} to {}: {}", source.path.string(),
+                                         target.string(), OIIO::geterror()));
+  }
+  output.commit();
+}
+
+struct TextureSystemDeleter {
+  void operator()(OIIO::TextureSystem* system) const { OIIO::TextureSystem::destroy(system); }
+};
+
+}  // namespace
+
+fs::path default_texture_cache_dir() {
+  if (fs::path dir = env_path("OCHRE_CACHE_DIR"); !dir.empty()) return dir;
+  if (fs::path dir = env_path("XDG_CACHE_HOME"); !dir.empty()) return dir / "ochre" / "textures";
+  if (fs::path dir = env_path("HOME"); !dir.empty()) return dir / ".cache" / "ochre" / "textures";
+  return temp_cache_dir();
+}
+
+// ------------------------------------------------------------------------------------ provider
+
+struct OiioTextureProvider::Impl {
+  struct Texture {
+    OIIO::TextureSystem::TextureHandle* handle = nullptr;
+    int channels = 0;
+    fs::path file;  // what the TextureSystem reads (cache file or the source itself)
+  };
+
+  fs::path cache_dir;
+  std::string cache_note;  // why the requested cache directory was not used, if it was not
+  std::unique_ptr<OIIO::TextureSystem, TextureSystemDeleter> system;
+  std::vector<Texture> textures;
+  std::unordered_map<std::string, int> ids;  // "<absolute path>|<encoding>" -> id
+  std::mutex add_mutex;
+  int conversions = 0, cache_hits = 0, used_directly = 0;
+  mutable std::atomic<std::uint64_t> failed_lookups{0};
+
+  // Returns the file the TextureSystem should read for source/encoding, converting it if needed.
+  fs::path texture_file_for(const SourceInfo& source, Encoding encoding) {
+    if (encoding == Encoding::linear && source.tiled_and_mipmapped) {
+      ++used_directly;  // already a linear MIP-mapped texture (e.g. made by maketx)
+      return source.path;
+    }
+    const fs::path target = cache_file_for(cache_dir, source, encoding);
+    std::error_code error;
+    if (fs::is_regular_file(target, error)) {
+      ++cache_hits;
+      return target;
+    }
+    convert_to_texture(source, encoding, target);
+    ++conversions;
+    return target;
+  }
+};
+
+OiioTextureProvider::OiioTextureProvider(fs::path cache_dir) : impl_(std::make_unique<Impl>()) {
+  impl_->cache_dir = cache_dir.empty() ? default_texture_cache_dir() : std::move(cache_dir);
+  if (!make_writable_directory(impl_->cache_dir)) {
+    const fs::path requested = impl_->cache_dir;
+    const fs::path fallback = temp_cache_dir();
+    if (!make_writable_directory(fallback)) {
+      throw std::runtime_error(
+          fmt::format("cannot create a texture cache directory: neither {} nor {} is writable",
+                      requested.string(), fallback.string()));
+    }
+    impl_->cache_dir = fallback;
+    impl_->cache_note = fmt::format(" (requested {} is not writable)", requested.string());
+  }
+  impl_->system.reset(OIIO::TextureSystem::create(/*shared=*/false));
+  if (!impl_->system) throw std::runtime_error("cannot create the OpenImageIO TextureSystem");
+  // Every channel count is handled in lookup(); never let OIIO widen grey on its own.
+  impl_->system->attribute("gray_to_rgb", 0);
+  // OIIO 2.4 defaults to a 256 MB tile cache; photogrammetry walls carry several 8k textures.
+  impl_->system->attribute("max_memory_MB", 1024.0f);
+}
+
+OiioTextureProvider::~OiioTextureProvider() = default;
+
+int OiioTextureProvider::add_texture(const fs::path& file, const std::string& colorspace, int& channels) {
+  std::lock_guard lock(impl_->add_mutex);
+  const SourceInfo source = open_source(file);
+  const Encoding encoding = resolve_encoding(source, colorspace);
+  const std::string key = fmt::format("{}|{}", source.path.string(), encoding_name(encoding));
+  if (auto found = impl_->ids.find(key); found != impl_->ids.end()) {
+    channels = impl_->textures[found->second].channels;
+    return found->second;
+  }
+
+  Impl::Texture texture;
+  texture.file = impl_->texture_file_for(source, encoding);
+  OIIO::TextureSystem& system = *impl_->system;
+  texture.handle = system.get_texture_handle(OIIO::ustring(texture.file.string()));
+  OIIO::ImageSpec spec;
+  if (texture.handle == nullptr || !system.good(texture.handle) ||
+      !system.get_imagespec(texture.handle, nullptr, 0, spec)) {
+    throw std::runtime_error(fmt::format("cannot read texture {} (converted file {}): {}",
+                                         source.path.string(), texture.file.string(), system.geterror()));
+  }
+  texture.channels = spec.nchannels;
+
+  const int id = static_cast<int>(impl_->textures.size());
+  impl_->textures.push_back(std::move(texture));
+  impl_->ids.emplace(key, id);
+  channels = impl_->textures.back().channels;
+  return id;
+}
+
+void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint, int first_channel,
+                                 int nchannels, float* out) const {
+  if (texture_id < 0 || texture_id >= static_cast<int>(impl_->textures.size())) {
+    throw std::out_of_range(fmt::format("texture lookup: unknown texture id {}", texture_id));
+  }
+  if (nchannels < 1 || nchannels > 4 || first_channel < 0) {
+    throw std::out_of_range(
+        fmt::format("texture lookup: invalid channels {}..{}", first_channel, first_channel + nchannels - 1));
+  }
+  const Impl::Texture& texture = impl_->textures[static_cast<std::size_t>(texture_id)];
+  std::fill(out, out + nchannels, 0.0f);
+
+  // A grey texture read as colour replicates its channel; channels past the last one stay 0.
+  const bool replicate_grey = texture.channels == 1 && first_channel == 0;
+  const int fetched = replicate_grey ? 1 : std::clamp(texture.channels - first_channel, 0, nchannels);
+  if (fetched == 0) return;
+
+  OIIO::TextureOpt options;
+  options.firstchannel = first_channel;
+  options.swrap = OIIO::TextureOpt::WrapPeriodic;
+  options.twrap = OIIO::TextureOpt::WrapPeriodic;
+  // Bilinear (not OIIO's default smart-bicubic, a non-interpolating B-spline when magnifying), so that a
+  // point lookup at a texel centre returns that texel exactly.
+  options.interpmode = OIIO::TextureOpt::InterpBilinear;
+
+  // Isotropic filter footprint: ds/dx = dt/dy = footprint. t runs down the image, v up: t = 1 - v.
+  const float width = std::fabs(footprint);
+  OIIO::TextureSystem& system = *impl_->system;
+  OIIO::TextureSystem::Perthread* thread_info = system.get_perthread_info();
+  if (!system.texture(texture.handle, thread_info, options, uv.x, 1.0f - uv.y, width, 0.0f, 0.0f, width,
+                      fetched, out)) {
+    impl_->failed_lookups.fetch_add(1, std::memory_order_relaxed);
+    (void)system.geterror();  // do not let errors pile up in OIIO's per-thread buffer
+    std::fill(out, out + nchannels, 0.0f);
+    return;
+  }
+  if (replicate_grey) std::fill(out + 1, out + nchannels, out[0]);
+}
+
+int OiioTextureProvider::texture_count() const {
+  return static_cast<int>(impl_->textures.size());
+}
+
+const fs::path& OiioTextureProvider::cache_dir() const {
+  return impl_->cache_dir;
+}
+
+std::size_t OiioTextureProvider::memory_bytes() const {
+  long long bytes = 0;
+  impl_->system->imagecache()->getattribute("stat:cache_memory_used", OIIO::TypeDesc::INT64, &bytes);
+  return static_cast<std::size_t>(std::max(0LL, bytes));
+}
+
+std::string OiioTextureProvider::stats() const {
+  long long bytes_read = 0;
+  impl_->system->imagecache()->getattribute("stat:bytes_read", OIIO::TypeDesc::INT64, &bytes_read);
+  constexpr double kMiB = 1024.0 * 1024.0;
+  return fmt::format(
+      "textures: {} ({} converted, {} from cache, {} used as is); tile cache {:.1f} MiB, read {:.1f} MiB; "
+      "failed lookups {}; cache {}{}",
+      impl_->textures.size(), impl_->conversions, impl_->cache_hits, impl_->used_directly,
+      static_cast<double>(memory_bytes()) / kMiB, static_cast<double>(bytes_read) / kMiB,
+      impl_->failed_lookups.load(std::memory_order_relaxed), impl_->cache_dir.string(), impl_->cache_note);
+}
+
+}  // namespace ochre

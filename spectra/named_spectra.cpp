@@ -1,0 +1,67 @@
+// The named-spectrum registry (see named_spectra.h).
+
+#include "spectra/named_spectra.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "spectra/cie.h"
+#include "spectra/constant_spectrum.h"
+#include "spectra/embedded_tables.h"
+#include "spectra/tabulated_spectrum.h"
+
+namespace ochre {
+
+namespace {
+
+// A CIE 1931 colour matching function as a spectrum (0 outside 360-830 nm).
+class CmfSpectrum final : public Spectrum {
+ public:
+  explicit CmfSpectrum(float (*cmf)(float)) : cmf_(cmf) {
+    for (int l = 360; l <= 830; ++l) max_ = std::max(max_, cmf_(float(l)));
+  }
+  float eval(float lambda_nm) const override { return cmf_(lambda_nm); }
+  float max_value() const override { return max_; }
+
+ private:
+  float (*cmf_)(float);
+  float max_ = 0.0f;
+};
+
+// One column of an embedded table, e.g. embedded("au.csv", "n") for optical constants.
+[[maybe_unused]] SpectrumPtr embedded(std::string_view file, std::string_view column) {
+  return tabulated_spectrum(embedded_table(file), column);
+}
+
+struct NamedSpectrum {
+  std::string_view name;
+  SpectrumPtr (*make)();
+};
+
+constexpr NamedSpectrum kRegistry[] = {
+    {"D65", [] { return d65(); }},
+    {"A", [] { return illuminant_a(); }},
+    {"E", [] { return normalized_to_unit_luminance(std::make_shared<ConstantSpectrum>(1.0f)); }},
+    {"cie_x", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_x); }},
+    {"cie_y", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_y); }},
+    {"cie_z", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_z); }},
+};
+
+}  // namespace
+
+SpectrumPtr named_spectrum(std::string_view name) {
+  for (const auto& entry : kRegistry)
+    if (entry.name == name) return entry.make();
+  std::string known;
+  for (const auto& entry : kRegistry) known += (known.empty() ? "" : ", ") + std::string(entry.name);
+  throw std::invalid_argument("unknown spectrum name '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<std::string_view> list_named_spectra() {
+  std::vector<std::string_view> names;
+  for (const auto& entry : kRegistry) names.push_back(entry.name);
+  return names;
+}
+
+}  // namespace ochre

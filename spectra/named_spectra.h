@@ -1,0 +1,21 @@
+#pragma once
+// Registry of spectra known by name (scene files refer to them as strings).
+//
+//   named_spectrum("D65" | "A" | "E" | "cie_x" | "cie_y" | "cie_z") -> SpectrumPtr
+//       Illuminants (D65, A, E = equal energy) have luminance 1 (see cie.h); cie_* are the CIE 1931
+//       colour matching functions. Unknown names throw std::invalid_argument listing the known ones.
+//   list_named_spectra() -> the known names, in registry order.
+// Adding a spectrum (e.g. tabulated optical constants "Au_n", "Au_k") is one line in the registry
+// in named_spectra.cpp.
+
+#include <string_view>
+#include <vector>
+
+#include "spectra/spectrum.h"
+
+namespace ochre {
+
+SpectrumPtr named_spectrum(std::string_view name);
+std::vector<std::string_view> list_named_spectra();
+
+}  // namespace ochre

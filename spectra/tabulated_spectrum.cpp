@@ -1,0 +1,96 @@
+// Piecewise-linear tabulated spectra and CSV loading (see tabulated_spectrum.h).
+
+#include "spectra/tabulated_spectrum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace ochre {
+
+namespace {
+
+void validate(const std::vector<float>& lambda, const std::vector<float>& values) {
+  if (lambda.size() != values.size())
+    throw std::invalid_argument("TabulatedSpectrum: " + std::to_string(lambda.size()) + " wavelengths but " +
+                                std::to_string(values.size()) + " values");
+  if (lambda.size() < 2) throw std::invalid_argument("TabulatedSpectrum: fewer than 2 points");
+  for (std::size_t i = 0; i < lambda.size(); ++i) {
+    if (!std::isfinite(lambda[i]) || !std::isfinite(values[i]))
+      throw std::invalid_argument("TabulatedSpectrum: non-finite entry at index " + std::to_string(i));
+    if (i > 0 && !(lambda[i] > lambda[i - 1]))
+      throw std::invalid_argument("TabulatedSpectrum: wavelengths not strictly increasing at index " +
+                                  std::to_string(i));
+  }
+}
+
+// Step of an equally spaced table, or 0 when the spacing varies.
+float uniform_step(const std::vector<float>& lambda) {
+  const double step = (double(lambda.back()) - lambda.front()) / double(lambda.size() - 1);
+  for (std::size_t i = 0; i < lambda.size(); ++i)
+    if (std::abs(lambda[i] - (lambda.front() + step * double(i))) > 1e-4 * step) return 0.0f;
+  return static_cast<float>(step);
+}
+
+std::vector<float> to_float(const std::vector<double>& v) {
+  return {v.begin(), v.end()};
+}
+
+}  // namespace
+
+TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values)
+    : lambda_(std::move(lambda_nm)), values_(std::move(values)) {
+  validate(lambda_, values_);
+  uniform_step_ = uniform_step(lambda_);
+  is_constant_ = std::all_of(values_.begin(), values_.end(), [&](float v) { return v == values_.front(); });
+  // Piecewise linear: the maximum over [360, 830] is at a knot inside the range or at an end.
+  max_value_ = std::max(eval(kLambdaMin), eval(kLambdaMax));
+  for (std::size_t i = 0; i < lambda_.size(); ++i)
+    if (lambda_[i] >= kLambdaMin && lambda_[i] <= kLambdaMax) max_value_ = std::max(max_value_, values_[i]);
+}
+
+float TabulatedSpectrum::eval(float lambda_nm) const {
+  if (!(lambda_nm > lambda_.front())) return values_.front();  // also maps NaN to a finite value
+  if (lambda_nm >= lambda_.back()) return values_.back();
+  std::size_t i;
+  if (uniform_step_ > 0.0f) {
+    i = std::min(static_cast<std::size_t>((lambda_nm - lambda_.front()) / uniform_step_), lambda_.size() - 2);
+    // Rounding of the division can land one knot off; step back or forward to the right interval.
+    if (lambda_nm < lambda_[i])
+      --i;
+    else if (lambda_nm >= lambda_[i + 1] && i + 2 < lambda_.size())
+      ++i;
+  } else {
+    i = static_cast<std::size_t>(std::upper_bound(lambda_.begin(), lambda_.end(), lambda_nm) -
+                                 lambda_.begin()) -
+        1;
+  }
+  const float t = (lambda_nm - lambda_[i]) / (lambda_[i + 1] - lambda_[i]);
+  return values_[i] + t * (values_[i + 1] - values_[i]);
+}
+
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column) {
+  if (column == 0)
+    throw std::runtime_error(table.source() + ": column 0 holds the wavelengths, not spectrum values");
+  return std::make_shared<TabulatedSpectrum>(to_float(table.wavelengths()), to_float(table.column(column)));
+}
+
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::string_view column) {
+  return tabulated_spectrum(table, table.column_index(column));
+}
+
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path) {
+  return load_spectrum_csv(path, std::size_t{1});
+}
+
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::string_view column) {
+  return tabulated_spectrum(CsvTable::load(path), column);
+}
+
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::size_t column) {
+  return tabulated_spectrum(CsvTable::load(path), column);
+}
+
+}  // namespace ochre

@@ -1,0 +1,54 @@
+#pragma once
+// TabulatedSpectrum: a spectrum given at increasing wavelengths, linear in between.
+//
+// Outside the table the value is CLAMPED to the first/last entry (not zero): measured reflectance
+// and optical-constant tables often stop at 400 or 700 nm, and a surface does not turn black at
+// 399 nm; holding the end value is the least surprising extrapolation. Tables that must vanish
+// outside their range (e.g. colour matching functions) should list explicit zero end points.
+//
+//   TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values)
+//       (throws std::invalid_argument: sizes differ, fewer than 2 points, non-finite entries,
+//        wavelengths not strictly increasing)
+//   tabulated_spectrum(const CsvTable&, column)      one column of a parsed table
+//   load_spectrum_csv(path)                          first value column (column 1) of a CSV file
+//   load_spectrum_csv(path, "name") / (path, index)  a chosen column (index 0 is the wavelength)
+// Errors from the loaders name the file (see csv_table.h).
+
+#include <cstddef>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include "spectra/csv_table.h"
+#include "spectra/spectrum.h"
+
+namespace ochre {
+
+class TabulatedSpectrum final : public Spectrum {
+ public:
+  TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values);
+
+  float eval(float lambda_nm) const override;
+  // Exact maximum over [360, 830] nm (the table is piecewise linear).
+  float max_value() const override { return max_value_; }
+  bool is_constant() const override { return is_constant_; }
+
+  const std::vector<float>& wavelengths() const { return lambda_; }
+  const std::vector<float>& values() const { return values_; }
+
+ private:
+  std::vector<float> lambda_;
+  std::vector<float> values_;
+  float max_value_ = 0.0f;
+  bool is_constant_ = false;
+  // Equally spaced tables (the common case) are indexed directly instead of searched.
+  float uniform_step_ = 0.0f;
+};
+
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column);
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::string_view column);
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path);
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::string_view column);
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::size_t column);
+
+}  // namespace ochre

@@ -1,0 +1,33 @@
+#include "cli/cli_runner.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+#include "support/test_paths.h"
+
+namespace ochre::test {
+
+CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir) {
+  std::string command;
+  if (!working_dir.empty()) command = "cd '" + working_dir.string() + "' && ";
+  command += "OCHRE_PROGRESS=none '" + (bin_dir() / "ochre").string() + "' " + args + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+}  // namespace ochre::test

@@ -1,0 +1,20 @@
+#pragma once
+// Runs the built `ochre` executable and captures its exit code and combined output.
+
+#include <filesystem>
+#include <string>
+
+namespace ochre::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+// Runs `bin_dir()/ochre ARGS` in `working_dir`.
+CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {});
+
+// Writes `text` to `path` (creating directories).
+void write_text(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace ochre::test

@@ -1,0 +1,71 @@
+// Display output through OpenColorIO from the command line: the built-in config, the no-OCIO
+// fallback, and the ACES cg config of ../shared (skipped when ../shared is absent).
+#include <gtest/gtest.h>
+
+#include "cli/cli_runner.h"
+#include "renderer/display_image.h"
+#include "support/test_paths.h"
+
+namespace ochre::test {
+namespace {
+
+const char* kGreyPlane = R"({
+  "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+  "film": {"resolution": [8, 8]},
+  "integrator": {"spp": 64, "max_depth": 1},
+  "materials": {"m": {"type": "lambert", "color": 0.5}},
+  "lights": [{"type": "environment", "radiance": [1, 1, 1]}],
+  "shapes": [{"type": "plane", "size": [4, 4], "material": "m"}]
+})";
+
+std::vector<uint8_t> render_png(const std::string& args, std::string* output = nullptr) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", kGreyPlane);
+  const CommandResult r = run_ochre("render scene.json --png out.png " + args, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  if (output) *output = r.output;
+  int w = 0, h = 0;
+  return r.exit_code == 0 ? read_png_rgb8(dir / "out.png", w, h) : std::vector<uint8_t>{};
+}
+
+// A 0.5 Lambert plane under a D65 environment of luminance 1 is linear grey 0.5: sRGB code 188.
+TEST(DisplayOutput, BuiltinConfigAndFallbackAgree) {
+  std::string log;
+  const auto builtin = render_png("--ocio-config builtin", &log);
+  const auto fallback = render_png("--ocio-config none");
+  ASSERT_EQ(builtin.size(), 8u * 8u * 3u);
+  ASSERT_EQ(fallback.size(), builtin.size());
+  double mean = 0.0;
+  for (size_t i = 0; i < builtin.size(); ++i) {
+    EXPECT_NEAR(builtin[i], fallback[i], 1) << i;  // same pixels, two transforms
+    mean += fallback[i] / static_cast<double>(fallback.size());
+  }
+  EXPECT_NEAR(mean, 188.0, 2.0);  // per-pixel spectral noise averages out
+  EXPECT_NE(log.find("sRGB"), std::string::npos) << log;
+}
+
+TEST(DisplayOutput, AcesCgConfigFromShared) {
+  OCHRE_REQUIRE_SHARED();
+  const auto config = shared_dir() / "assets/ocio/cg-config-v1.0.0_aces-v1.3_ocio-v2.1.ocio";
+  std::string log;
+  const auto aces = render_png("--ocio-config '" + config.string() + "'", &log);
+  ASSERT_EQ(aces.size(), 8u * 8u * 3u);
+  // The ACES output transform tone-maps: mid grey 0.5 lands near but below the plain sRGB code.
+  for (uint8_t v : aces) {
+    EXPECT_GT(v, 120);
+    EXPECT_LT(v, 200);
+  }
+  EXPECT_NE(log.find("cg-config"), std::string::npos) << log;
+}
+
+TEST(DisplayOutput, MissingConfigIsBadInput) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", kGreyPlane);
+  const CommandResult r = run_ochre("render scene.json --png out.png --ocio-config /no/such/config.ocio", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("/no/such/config.ocio"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+}  // namespace
+}  // namespace ochre::test

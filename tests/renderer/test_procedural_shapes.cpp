@@ -1,0 +1,107 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renderer/input_error.h"
+#include "renderer/procedural_shapes.h"
+
+namespace ochre {
+namespace {
+
+Vec3 face_normal(const Mesh& m, size_t t) {
+  const Vec3 &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+             &c = m.positions[m.indices[3 * t + 2]];
+  return cross(b - a, c - a);
+}
+
+void expect_uvs_in_unit_square(const Mesh& m) {
+  for (const Vec2& uv : m.uvs) {
+    EXPECT_GE(uv.x, 0.0f);
+    EXPECT_LE(uv.x, 1.0f);
+    EXPECT_GE(uv.y, 0.0f);
+    EXPECT_LE(uv.y, 1.0f);
+  }
+}
+
+TEST(ProceduralShapes, PlaneAreaNormalsAndUvs) {
+  const Mesh plane = make_plane({3, 2});
+  EXPECT_NO_THROW(plane.validate("plane"));
+  EXPECT_EQ(plane.triangle_count(), 2u);
+  EXPECT_FLOAT_EQ(plane.surface_area(), 6.0f);
+  for (size_t t = 0; t < 2; ++t) EXPECT_GT(face_normal(plane, t).z, 0.0f);
+  for (const Vec3& n : plane.normals) EXPECT_EQ(n, Vec3(0, 0, 1));
+  // u along +x, v along +y, (0, 0) at the (-x, -y) corner.
+  for (size_t i = 0; i < plane.positions.size(); ++i) {
+    EXPECT_FLOAT_EQ(plane.uvs[i].x, plane.positions[i].x / 3 + 0.5f);
+    EXPECT_FLOAT_EQ(plane.uvs[i].y, plane.positions[i].y / 2 + 0.5f);
+  }
+  EXPECT_GT(plane.positions.capacity(), plane.positions.size());  // padding for Accel
+}
+
+TEST(ProceduralShapes, DiskAreaConvergesToPiRSquared) {
+  const float r = 1.5f;
+  const Mesh disk = make_disk(r, 256);
+  EXPECT_NO_THROW(disk.validate("disk"));
+  EXPECT_EQ(disk.triangle_count(), 256u);
+  EXPECT_NEAR(disk.surface_area() / (kPi * r * r), 1.0f, 1e-3f);
+  // The exact polygon area (n/2) r^2 sin(2 pi / n).
+  EXPECT_NEAR(disk.surface_area(), 128.0 * r * r * std::sin(2 * M_PI / 256), 1e-4);
+  for (size_t t = 0; t < disk.triangle_count(); ++t) EXPECT_GT(face_normal(disk, t).z, 0.0f);
+  expect_uvs_in_unit_square(disk);
+  for (size_t i = 0; i < disk.positions.size(); ++i) {
+    EXPECT_NEAR(disk.uvs[i].x, (disk.positions[i].x / r + 1) / 2, 1e-6f);
+    EXPECT_NEAR(disk.uvs[i].y, (disk.positions[i].y / r + 1) / 2, 1e-6f);
+  }
+  EXPECT_GT(disk.positions.capacity(), disk.positions.size());
+}
+
+TEST(ProceduralShapes, SphereAreaNormalsAndUvs) {
+  const float r = 2.0f;
+  const Mesh sphere = make_sphere(r, 128);
+  EXPECT_NO_THROW(sphere.validate("sphere"));
+  // Inscribed polyhedron: area slightly below 4 pi r^2, converging as 1/n^2.
+  const float ratio = sphere.surface_area() / (4 * kPi * r * r);
+  EXPECT_LT(ratio, 1.0f);
+  EXPECT_GT(ratio, 0.999f);
+  EXPECT_LT(make_sphere(r, 16).surface_area() / (4 * kPi * r * r), ratio);
+  // UV sphere with n bands: 2n * 2 * (n - 1) triangles (one per quad at the poles).
+  EXPECT_EQ(sphere.triangle_count(), 2u * 256u * 127u);
+  for (size_t i = 0; i < sphere.positions.size(); ++i) {
+    const Vec3& p = sphere.positions[i];
+    EXPECT_NEAR(length(sphere.normals[i]), 1.0f, 1e-6f);
+    EXPECT_NEAR(length(p), r, 1e-5f);
+    EXPECT_NEAR(dot(sphere.normals[i], p / r), 1.0f, 1e-6f);
+    // v = theta / pi from the south pole: z = -r cos(pi v).
+    EXPECT_NEAR(p.z, -r * std::cos(kPi * sphere.uvs[i].y), 1e-5f);
+  }
+  expect_uvs_in_unit_square(sphere);
+  for (size_t t = 0; t < sphere.triangle_count(); ++t) {
+    const Vec3 n = face_normal(sphere, t);
+    ASSERT_GT(length(n), 0.0f) << "degenerate triangle " << t;
+    ASSERT_GT(dot(n, sphere.positions[sphere.indices[3 * t]]), 0.0f) << "inward triangle " << t;
+  }
+}
+
+TEST(ProceduralShapes, SphereUIsLongitude) {
+  const Mesh sphere = make_sphere(1, 8);
+  for (size_t i = 0; i < sphere.positions.size(); ++i) {
+    const Vec3& p = sphere.positions[i];
+    if (std::hypot(p.x, p.y) < 1e-3f) continue;  // poles
+    float phi = std::atan2(p.y, p.x);
+    if (phi < 0) phi += 2 * kPi;
+    // u = phi / 2 pi modulo 1 (the seam column has u = 1 at phi = 0).
+    EXPECT_NEAR(std::remainder(sphere.uvs[i].x - phi / (2 * kPi), 1.0f), 0.0f, 1e-5f) << i;
+  }
+}
+
+TEST(ProceduralShapes, BadParametersAreInputErrors) {
+  EXPECT_THROW(make_plane({0, 1}), InputError);
+  EXPECT_THROW(make_plane({1, NAN}), InputError);
+  EXPECT_THROW(make_disk(-1), InputError);
+  EXPECT_THROW(make_disk(1, 2), InputError);
+  EXPECT_THROW(make_sphere(1, 1), InputError);
+  EXPECT_THROW(make_sphere(INFINITY, 8), InputError);
+}
+
+}  // namespace
+}  // namespace ochre

@@ -1,0 +1,124 @@
+// Tabulated (piecewise-linear, clamped), constant, scaled and product spectra, and CSV loading.
+
+#include "spectra/tabulated_spectrum.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <memory>
+#include <random>
+#include <stdexcept>
+
+#include "spectra/constant_spectrum.h"
+#include "spectra/product_spectrum.h"
+#include "spectra/scaled_spectrum.h"
+#include "support/test_paths.h"
+
+namespace ochre {
+namespace {
+
+// Reference evaluation by linear search, clamped outside.
+float reference_eval(const std::vector<float>& l, const std::vector<float>& v, float x) {
+  if (x <= l.front()) return v.front();
+  if (x >= l.back()) return v.back();
+  for (std::size_t i = 0; i + 1 < l.size(); ++i)
+    if (x >= l[i] && x < l[i + 1]) return v[i] + (x - l[i]) / (l[i + 1] - l[i]) * (v[i + 1] - v[i]);
+  return v.back();
+}
+
+TEST(TabulatedSpectrum, InterpolatesLinearlyAndClampsOutside) {
+  const TabulatedSpectrum s({400.0f, 500.0f, 700.0f}, {0.2f, 0.6f, 0.4f});
+  EXPECT_FLOAT_EQ(s.eval(400.0f), 0.2f);
+  EXPECT_FLOAT_EQ(s.eval(450.0f), 0.4f);
+  EXPECT_FLOAT_EQ(s.eval(500.0f), 0.6f);
+  EXPECT_FLOAT_EQ(s.eval(600.0f), 0.5f);
+  EXPECT_FLOAT_EQ(s.eval(700.0f), 0.4f);
+  // Clamped, not zero: reflectance tables often stop inside the visible range.
+  EXPECT_FLOAT_EQ(s.eval(360.0f), 0.2f);
+  EXPECT_FLOAT_EQ(s.eval(830.0f), 0.4f);
+  EXPECT_FLOAT_EQ(s.max_value(), 0.6f);
+  EXPECT_FALSE(s.is_constant());
+  const auto sampled = s.sample(SampledWavelengths::fixed({380.0f, 450.0f, 600.0f, 800.0f}));
+  EXPECT_EQ(sampled, SampledSpectrum(0.2f, s.eval(450.0f), s.eval(600.0f), 0.4f));
+}
+
+TEST(TabulatedSpectrum, UniformFastPathMatchesSearch) {
+  std::vector<float> l, v;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  for (int i = 0; i <= 94; ++i) l.push_back(360.0f + 5.0f * i), v.push_back(uniform(rng));
+  const TabulatedSpectrum s(l, v);
+  for (int n = 0; n < 20000; ++n) {
+    const float x = 350.0f + 490.0f * uniform(rng);
+    EXPECT_NEAR(s.eval(x), reference_eval(l, v, x), 1e-6f) << "lambda " << x;
+  }
+  for (float knot : l) EXPECT_NEAR(s.eval(knot), reference_eval(l, v, knot), 1e-6f);
+}
+
+TEST(TabulatedSpectrum, MaxValueCoversOnlyTheVisibleRange) {
+  // A peak at 300 nm is outside [360, 830]: the maximum over the range is at its start.
+  const TabulatedSpectrum s({300.0f, 400.0f, 900.0f}, {5.0f, 1.0f, 2.0f});
+  EXPECT_FLOAT_EQ(s.max_value(), std::max(s.eval(360.0f), s.eval(830.0f)));
+  EXPECT_TRUE(TabulatedSpectrum({400.0f, 500.0f}, {0.3f, 0.3f}).is_constant());
+}
+
+TEST(TabulatedSpectrum, RejectsInvalidTables) {
+  EXPECT_THROW(TabulatedSpectrum({400.0f}, {1.0f}), std::invalid_argument);
+  EXPECT_THROW(TabulatedSpectrum({400.0f, 500.0f}, {1.0f}), std::invalid_argument);
+  EXPECT_THROW(TabulatedSpectrum({400.0f, 400.0f}, {1.0f, 2.0f}), std::invalid_argument);
+  EXPECT_THROW(TabulatedSpectrum({400.0f, 500.0f}, {1.0f, NAN}), std::invalid_argument);
+}
+
+TEST(TabulatedSpectrum, LoadsCsvColumns) {
+  const auto dir = test::scratch_dir();
+  const auto path = dir / "nk.csv";
+  std::ofstream(path) << "# test table\nwavelength_nm,n,k\n400,1.5,3\n600,1.7,4\n";
+  EXPECT_FLOAT_EQ(load_spectrum_csv(path)->eval(500.0f), 1.6f);  // first value column
+  EXPECT_FLOAT_EQ(load_spectrum_csv(path, "k")->eval(500.0f), 3.5f);
+  EXPECT_FLOAT_EQ(load_spectrum_csv(path, std::size_t{2})->eval(600.0f), 4.0f);
+  try {
+    load_spectrum_csv(path, "eta");
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": no column 'eta'"), std::string::npos) << e.what();
+  }
+  try {
+    load_spectrum_csv(path, std::size_t{0});
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+  try {
+    load_spectrum_csv(dir / "absent.csv");
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "absent.csv").string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(SimpleSpectra, ConstantScaledProduct) {
+  const auto c = std::make_shared<ConstantSpectrum>(0.25f);
+  EXPECT_FLOAT_EQ(c->eval(123.0f), 0.25f);
+  EXPECT_TRUE(c->is_constant());
+  EXPECT_EQ(c->sample(SampledWavelengths::sample_visible(0.5f)), SampledSpectrum(0.25f));
+
+  const auto t =
+      std::make_shared<TabulatedSpectrum>(std::vector<float>{400.0f, 700.0f}, std::vector<float>{1.0f, 4.0f});
+  const ScaledSpectrum scaled(t, 2.0f);
+  EXPECT_FLOAT_EQ(scaled.eval(550.0f), 5.0f);
+  EXPECT_FLOAT_EQ(scaled.max_value(), 8.0f);
+  EXPECT_FALSE(scaled.is_constant());
+  EXPECT_TRUE(ScaledSpectrum(c, 3.0f).is_constant());
+
+  const ProductSpectrum product(t, c);
+  EXPECT_FLOAT_EQ(product.eval(700.0f), 1.0f);
+  EXPECT_FLOAT_EQ(product.max_value(), 1.0f);
+  const auto w = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  EXPECT_EQ(product.sample(w), t->sample(w) * 0.25f);
+
+  EXPECT_THROW(ScaledSpectrum(nullptr, 1.0f), std::invalid_argument);
+  EXPECT_THROW(ProductSpectrum(t, nullptr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ochre

@@ -1,0 +1,93 @@
+#include "tools/render_command.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "materials/graph_error.h"
+#include "renderer/image_error.h"
+#include "renderer/input_error.h"
+#include "renderer/progress.h"
+#include "renderer/render.h"
+#include "renderer/render_output.h"
+
+namespace ochre {
+
+namespace {
+
+// "auto" models only what the scene needs (DESIGN.md): off when nothing polarizes.
+std::string polarization_mode(const Scene& scene) {
+  const std::string& requested = scene.settings.polarization;
+  if (requested != "auto") return requested + " (requested)";
+  return scene.polarizing_materials ? "intensity (auto: a material polarizes)"
+                                    : "off (auto: no material polarizes)";
+}
+
+void print_summary(const Scene& scene) {
+  size_t triangles = 0;
+  for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
+  const RenderSettings& s = scene.settings;
+  std::cerr << fmt::format("ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}\n",
+                           scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth,
+                           scene.meshes.size(), triangles, scene.lights.size(), s.seed);
+  std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
+}
+
+void print_stats(const RenderStats& stats) {
+  std::cerr << fmt::format(
+      "ochre: rendered in {:.2f} s on {} threads: {:.3f} M samples/s, {:.3f} M rays/s ({} rays, {} shadow rays), "
+      "{} discarded NaN/Inf samples\n",
+      stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6, stats.rays,
+      stats.shadow_rays, stats.discarded);
+}
+
+int render_scene(const RenderCommand& command) {
+  std::unique_ptr<Scene> scene = load_scene(command.scene, command.overrides);
+  OutputSettings& out = scene->outputs;
+  if (!command.exr.empty()) out.exr = command.exr;
+  if (!command.png.empty()) out.png = command.png;
+  if (command.ocio_config) out.ocio_config = *command.ocio_config;
+  if (command.display) out.display = *command.display;
+  if (command.view) out.view = *command.view;
+  if (command.colorspace) out.colorspace = *command.colorspace;
+  if (command.exposure) out.exposure = *command.exposure;
+  if (out.colorspace != "rec709" && out.colorspace != "acescg")
+    throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
+  check_outputs(out);
+
+  if (!command.quiet) print_summary(*scene);
+  Film film(scene->settings.width, scene->settings.height);
+  const uint64_t total = static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
+  ProgressReporter progress("render", total, std::cerr, command.quiet ? false : stderr_is_terminal());
+  const RenderStats stats = render(*scene, film, [&](uint64_t done) {
+    if (!command.quiet) progress.advance(done);
+  });
+  progress.finish();
+  if (!command.quiet) print_stats(stats);
+
+  for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
+    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& command) {
+  try {
+    return render_scene(command);
+  } catch (const InputError& e) {
+    std::cerr << "ochre: error: " << e.what() << "\n";
+    return 2;
+  } catch (const GraphError& e) {
+    std::cerr << "ochre: error: " << e.what() << "\n";
+    return 2;
+  } catch (const ImageError& e) {
+    std::cerr << "ochre: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ochre: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace ochre

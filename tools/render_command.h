@@ -1,0 +1,23 @@
+#pragma once
+// `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code:
+// 0 success, 2 bad input (nothing written), 1 internal error.
+
+#include <optional>
+#include <string>
+
+#include "renderer/scene_loader.h"
+
+namespace ochre {
+
+struct RenderCommand {
+  std::string scene;
+  std::string exr, png;  // override the scene's outputs (relative to the working directory)
+  SceneOverrides overrides;
+  std::optional<std::string> ocio_config, display, view, colorspace;
+  std::optional<float> exposure;
+  bool quiet = false;
+};
+
+int run_render(const RenderCommand& command);
+
+}  // namespace ochre

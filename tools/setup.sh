@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# ochre set-up: installs the Debian 12 packages ochre needs (idempotent, non-interactive),
+# then configures and builds Release into build/ (executables in build/bin/).
+# Usage: bash tools/setup.sh            (install + build)
+#        OCHRE_SKIP_APT=1 bash tools/setup.sh   (build only)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config git
+  libopenimageio-dev openimageio-tools libopencolorio-dev libembree-dev libopenexr-dev
+  libimath-dev libosd-dev libtbb-dev libassimp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+  libgtest-dev libgmock-dev libbenchmark-dev python3 python3-numpy python3-matplotlib
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${OCHRE_SKIP_APT:-0}" != 1 ] && [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "ochre setup: installing ${missing[*]}"
+  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
