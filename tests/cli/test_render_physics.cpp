@@ -5,7 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "cli/cli_runner.h"
 #include "cli/render_probe.h"
+#include "renderer/exr_reader.h"
+#include "support/test_paths.h"
+
+#include <array>
 
 namespace ochre::test {
 namespace {
@@ -85,6 +90,81 @@ TEST(AnalyticDirectLighting, ConstantEnvironmentOverPlane) {
   const double mean = img.mean(0, 0, 16, 16);
   std::printf("constant environment over plane: mean Y = %.5f (expected 0.6)\n", mean);
   EXPECT_NEAR(mean, 0.6, 0.006);
+}
+
+}  // namespace
+}  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// A one-sided emissive disk of radius R and radiance L, facing down at height h over a Lambert
+// plane: the irradiance under its centre is pi L R^2 / (h^2 + R^2), so the plane's radiance there
+// is rho L R^2 / (h^2 + R^2). Exercises area-light sampling, emission from the material graph and
+// MIS (the disk is also hit by BSDF samples).
+TEST(AnalyticDirectLighting, EmissiveDiskOverLambertPlane) {
+  const double rho = 0.8, L = 3.0, R = 0.5, h = 1.0;
+  const LuminanceImage img = render_luminance(fmt::format(R"({{
+    "camera": {{"type": "orthographic", "size": 0.02, "eye": [0, 0, 0.5], "target": [0, 0, 0]}},
+    "film": {{"resolution": [4, 4]}},
+    "integrator": {{"spp": 4096, "max_depth": 1}},
+    "materials": {{"m": {{"type": "lambert", "color": {}}},
+                  "lamp": {{"type": "emission", "color": 1.0, "strength": {}}}}},
+    "shapes": [{{"type": "plane", "size": [10, 10], "material": "m"}},
+               {{"type": "disk", "radius": {}, "segments": 512, "material": "lamp",
+                 "transform": [{{"rotate": {{"axis": [1, 0, 0], "angle": 180}}}}, {{"translate": [0, 0, {}]}}]}}]
+  }})",
+                                                          rho, L, R, h));
+  ASSERT_EQ(img.width, 4);
+  const double expected = rho * L * R * R / (h * h + R * R);
+  const double mean = img.mean(0, 0, 4, 4);
+  std::printf("emissive disk over plane: Y = %.5f, expected %.5f\n", mean, expected);
+  EXPECT_NEAR(mean, expected, 0.01 * expected);
+}
+
+// An 8-bit sRGB texture on a plane under a D65 environment of luminance 1: each quadrant renders
+// its texel's linear colour (checks the sRGB decoding, the uv orientation and the upsampling).
+TEST(Textures, TexturedPlaneShowsTexelColours) {
+  const auto dir = scratch_dir();
+  // 8x8 PPM of four 4x4 blocks: top row (200,60,40), (60,180,70); bottom row (50,70,200), grey 188.
+  const int codes[4][3] = {{200, 60, 40}, {60, 180, 70}, {50, 70, 200}, {188, 188, 188}};
+  std::string ppm = "P3\n8 8\n255\n";
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      const int* c = codes[(y / 4) * 2 + x / 4];
+      ppm += fmt::format("{} {} {}\n", c[0], c[1], c[2]);
+    }
+  write_text(dir / "tex.ppm", ppm);
+  write_text(dir / "scene.json", R"({
+    "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [8, 8]},
+    "integrator": {"spp": 256, "max_depth": 1},
+    "materials": {"m": {"nodes": {"t": {"type": "texture", "file": "tex.ppm"},
+                                   "d": {"type": "lambert", "color": {"link": "t.color"}}}, "output": "d"}},
+    "lights": [{"type": "environment", "radiance": [1, 1, 1]}],
+    "shapes": [{"type": "plane", "size": [2, 2], "material": "m"}]
+  })");
+  const CommandResult r = run_ochre("render scene.json -o out.exr", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const ExrImage exr = read_exr(dir / "out.exr");
+  auto mean_rgb = [&](int x0, int y0) {
+    std::array<double, 3> m{0, 0, 0};
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c)
+      for (int y = y0 + 1; y < y0 + 3; ++y)
+        for (int x = x0 + 1; x < x0 + 3; ++x) m[c] += (*exr.find_channel(names[c]))[y * 8 + x] / 4.0;
+    return m;
+  };
+  auto srgb_decode = [](double code) {
+    const double v = code / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  const int corners[4][2] = {{0, 0}, {4, 0}, {0, 4}, {4, 4}};
+  for (int q = 0; q < 4; ++q) {
+    const auto m = mean_rgb(corners[q][0], corners[q][1]);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(m[c], srgb_decode(codes[q][c]), 0.02) << "quadrant " << q << " channel " << c;
+  }
 }
 
 }  // namespace
