@@ -13,7 +13,9 @@ class LambertLobe final : public Lobe {
   float pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const override;
   std::optional<LobeSample> sample(const Vec3& wo, float u_choice, const Vec2& u,
                                    const SampledWavelengths& lambda) const override;
-  SampledSpectrum albedo_hint(const Vec3&, const SampledWavelengths&) const override { return SampledSpectrum(1.0f); }
+  SampledSpectrum albedo_hint(const Vec3&, const SampledWavelengths&) const override {
+    return SampledSpectrum(1.0f);
+  }
 };
 
 }  // namespace ochre

@@ -34,18 +34,25 @@ enum LobeFlags : uint32_t {
 };
 
 struct LobeSample {
-  Vec3 wi;                 // sampled direction toward the light, local frame
-  SampledSpectrum weight;  // f |cos wi| / pdf per wavelength (delta: reflectance of the exit / its probability)
-  float pdf = 0.0f;        // solid-angle pdf, or the discrete probability of a delta exit
+  Vec3 wi;  // sampled direction toward the light, local frame
+  SampledSpectrum
+      weight;        // f |cos wi| / pdf per wavelength (delta: reflectance of the exit / its probability)
+  float pdf = 0.0f;  // solid-angle pdf, or the discrete probability of a delta exit
   bool delta = false;
   bool has_mueller = false;  // set by polarizing lobes: `mueller` is the exit's matrix times |cos|/pdf
   MuellerSpectrum mueller{};
 };
 
 // Local-frame cosine helpers.
-inline float cos_theta(const Vec3& w) { return w.z; }
-inline float abs_cos_theta(const Vec3& w) { return w.z < 0.0f ? -w.z : w.z; }
-inline bool same_hemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0.0f; }
+inline float cos_theta(const Vec3& w) {
+  return w.z;
+}
+inline float abs_cos_theta(const Vec3& w) {
+  return w.z < 0.0f ? -w.z : w.z;
+}
+inline bool same_hemisphere(const Vec3& a, const Vec3& b) {
+  return a.z * b.z > 0.0f;
+}
 
 class Lobe {
  public:
@@ -59,7 +66,8 @@ class Lobe {
                                            const SampledWavelengths& lambda) const = 0;
   // Mueller matrix per wavelength between the local frames of wo and wi (issue 4 fixes the
   // frame convention). Default: ideal depolarizer, correct for every non-polarizing lobe.
-  virtual MuellerSpectrum eval_mueller(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  virtual MuellerSpectrum eval_mueller(const Vec3& wo, const Vec3& wi,
+                                       const SampledWavelengths& lambda) const {
     return depolarizer(eval(wo, wi, lambda));
   }
   // Directional albedo estimate used to choose among lobes (need not be exact).

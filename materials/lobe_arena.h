@@ -19,7 +19,8 @@ class LobeArena {
   T* make(Args&&... args) {
     static_assert(std::is_trivially_destructible_v<T>, "lobes must be trivially destructible");
     std::size_t offset = (used_ + alignof(T) - 1) & ~(alignof(T) - 1);
-    if (offset + sizeof(T) > capacity_) throw std::length_error("LobeArena: too many lobes at one shading point");
+    if (offset + sizeof(T) > capacity_)
+      throw std::length_error("LobeArena: too many lobes at one shading point");
     used_ = offset + sizeof(T);
     return new (buffer_.get() + offset) T(std::forward<Args>(args)...);
   }

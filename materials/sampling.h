@@ -9,7 +9,9 @@ namespace ochre {
 Vec2 sample_uniform_disk_concentric(const Vec2& u);
 // Cosine-weighted hemisphere around +z; pdf = cos(theta) / pi.
 Vec3 sample_cosine_hemisphere(const Vec2& u);
-inline float cosine_hemisphere_pdf(float cos_theta) { return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f; }
+inline float cosine_hemisphere_pdf(float cos_theta) {
+  return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f;
+}
 // Uniform direction on the unit sphere; pdf = 1 / (4 pi).
 Vec3 sample_uniform_sphere(const Vec2& u);
 inline constexpr float kUniformSpherePdf = 1.0f / (4.0f * kPi);

@@ -59,12 +59,16 @@ double number_field(const nlohmann::json& j, const char* key) {
 SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver& resolver) {
   const int kinds = j.contains("name") + j.contains("file") + j.contains("blackbody");
   if (kinds != 1)
-    throw SpectrumObjectError("", "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...]} "
-                                  "or {\"blackbody\": kelvin}, with an optional \"scale\"");
+    throw SpectrumObjectError(
+        "",
+        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...]} "
+        "or {\"blackbody\": kelvin}, with an optional \"scale\"");
   for (const auto& [key, value] : j.items())
     if (key != "name" && key != "file" && key != "column" && key != "blackbody" && key != "scale")
-      throw SpectrumObjectError(key, "unknown key '" + key + "' in a spectrum (known: name, file, column, blackbody, scale)");
-  if (j.contains("column") && !j.contains("file")) throw SpectrumObjectError("column", "'column' needs 'file'");
+      throw SpectrumObjectError(
+          key, "unknown key '" + key + "' in a spectrum (known: name, file, column, blackbody, scale)");
+  if (j.contains("column") && !j.contains("file"))
+    throw SpectrumObjectError("column", "'column' needs 'file'");
 
   SpectrumPtr base;
   if (j.contains("name")) {
@@ -77,7 +81,8 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
     }
   } else if (j.contains("blackbody")) {
     const double kelvin = number_field(j, "blackbody");
-    if (!(kelvin > 0.0) || kelvin > 1e6) throw SpectrumObjectError("blackbody", "temperature must be in (0, 1e6] K");
+    if (!(kelvin > 0.0) || kelvin > 1e6)
+      throw SpectrumObjectError("blackbody", "temperature must be in (0, 1e6] K");
     base = blackbody_unit_luminance(kelvin);
   } else {
     const std::string column = j.contains("column") ? string_field(j, "column") : "";

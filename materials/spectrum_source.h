@@ -2,10 +2,9 @@
 // Spectra named in a scene, by name or by CSV file; shared by the spectrum node and by spectrum
 // literals ({"name": "D65"}, {"file": "red.csv"}) on any input.
 
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "spectra/spectrum.h"
 
@@ -31,7 +30,8 @@ bool is_spectrum_object(const nlohmann::json& j);
 SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver& resolver);
 
 struct SpectrumObjectError : std::runtime_error {
-  SpectrumObjectError(std::string key_, const std::string& what) : std::runtime_error(what), key(std::move(key_)) {}
+  SpectrumObjectError(std::string key_, const std::string& what)
+      : std::runtime_error(what), key(std::move(key_)) {}
   std::string key;  // "name", "file", "blackbody", "scale", ... ("" for the object as a whole)
 };
 

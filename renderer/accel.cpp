@@ -195,22 +195,16 @@ bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, 
 
 }  // namespace
 
-SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray) {
-  const Mesh& mesh = meshes[hit.mesh];
-  const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
+SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
+  const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
   const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
-  const float b1 = hit.b1, b2 = hit.b2, b0 = 1.0f - b1 - b2;
+  const float b0 = 1.0f - b1 - b2;
 
   SurfacePoint sp;
   sp.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
   const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
   const float double_area = length(n);
-  if (double_area > 0.0f && std::isfinite(double_area)) {
-    sp.ng = n / double_area;
-  } else {  // degenerate triangle: face the ray
-    sp.ng = usable_unit(hit.ng) ? normalize(hit.ng) : normalize(-ray.dir);
-    sp.p = ray.origin + ray.dir * hit.t;
-  }
+  sp.ng = double_area > 0.0f && std::isfinite(double_area) ? n / double_area : Vec3(0, 0, 0);
   sp.ns = sp.ng;
   if (!mesh.normals.empty()) {
     const Vec3 ns = interpolate(mesh.normals, corner, b0, b1, b2);
@@ -228,15 +222,23 @@ SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, cons
     have_derivatives = uv_derivatives(p, uv, double_area, sp.dpdu, sp.area_scale_uv);
   }
   if (!have_derivatives) {
-    sp.dpdu = Frame::from_normal(sp.ng).s;
+    sp.dpdu = usable_unit(sp.ng) ? Frame::from_normal(sp.ng).s : Vec3(1, 0, 0);
     sp.area_scale_uv = 0.0f;
   }
   return sp;
 }
 
-// Waechter & Binder 2019 (Ray Tracing Gems ch. 6): move each coordinate by a fixed number of
-// float ulps along the normal (an offset relative to |p|), and by a fixed absolute amount near
-// the origin where ulps become tiny.
+SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray) {
+  SurfacePoint sp = surface_point(meshes[hit.mesh], hit.triangle, hit.b1, hit.b2);
+  if (!usable_unit(sp.ng)) {  // degenerate triangle: face the ray
+    sp.ng = usable_unit(hit.ng) ? normalize(hit.ng) : normalize(-ray.dir);
+    sp.ns = sp.ng;
+    sp.p = ray.origin + ray.dir * hit.t;
+    sp.dpdu = Frame::from_normal(sp.ng).s;
+  }
+  return sp;
+}
+
 Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& dir) {
   constexpr float kOriginRegion = 1.0f / 32.0f;
   constexpr float kFloatScale = 1.0f / 65536.0f;

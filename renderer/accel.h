@@ -79,6 +79,8 @@ struct SurfacePoint {
 
 // Shading point of a hit returned by Accel::intersect on the same meshes. The ray is only used
 // as a fallback for p when the triangle is degenerate.
+// The point at barycentrics (b1, b2) of a triangle; ng is 0 for a degenerate triangle.
+SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2);
 SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray);
 
 // Origin for a ray leaving the surface point p (geometric normal ng, any length) in direction

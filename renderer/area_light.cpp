@@ -6,37 +6,12 @@
 #include "materials/closure.h"
 #include "materials/lobe_arena.h"
 #include "materials/sampling.h"
-#include "materials/shading_context.h"
+#include "renderer/surface_shading.h"
 #include "spectra/cie.h"
 
 namespace ochre {
 
 namespace {
-
-struct TrianglePoint {
-  Vec3 p, ng, ns, colour{1, 1, 1};
-  Vec2 uv;
-};
-
-TrianglePoint point_on_triangle(const Mesh& mesh, size_t tri, float b1, float b2) {
-  const uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
-  const float b0 = 1.0f - b1 - b2;
-  TrianglePoint t;
-  const Vec3 &p0 = mesh.positions[i0], &p1 = mesh.positions[i1], &p2 = mesh.positions[i2];
-  t.p = p0 * b0 + p1 * b1 + p2 * b2;
-  t.ng = normalize(cross(p1 - p0, p2 - p0));
-  t.ns = t.ng;
-  if (!mesh.normals.empty()) {
-    const Vec3 n = mesh.normals[i0] * b0 + mesh.normals[i1] * b1 + mesh.normals[i2] * b2;
-    if (length(n) > 0.0f) t.ns = normalize(n);
-  }
-  if (!mesh.uvs.empty()) {
-    const Vec2 &a = mesh.uvs[i0], &b = mesh.uvs[i1], &c = mesh.uvs[i2];
-    t.uv = {a.x * b0 + b.x * b1 + c.x * b2, a.y * b0 + b.y * b1 + c.y * b2};
-  }
-  if (!mesh.colours.empty()) t.colour = mesh.colours[i0] * b0 + mesh.colours[i1] * b1 + mesh.colours[i2] * b2;
-  return t;
-}
 
 // Fixed wavelength sets used to estimate a light's power (deterministic, no sampling noise).
 float luminance_estimate(const std::function<SampledSpectrum(const SampledWavelengths&)>& radiance) {
@@ -64,39 +39,33 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
   const size_t step = std::max<size_t>(1, n / 64);
   double weighted = 0.0, area = 0.0;
   for (size_t i = 0; i < n; i += step) {
-    const TrianglePoint t = point_on_triangle(mesh, i, 1.0f / 3.0f, 1.0f / 3.0f);
-    const float y = luminance_estimate([&](const SampledWavelengths& lambda) {
-      return emitted(t.p, t.ng, t.ns, t.uv, t.colour, t.ng, lambda);
-    });
+    const SurfacePoint t = surface_point(mesh, static_cast<uint32_t>(i), 1.0f / 3.0f, 1.0f / 3.0f);
+    const float y =
+        luminance_estimate([&](const SampledWavelengths& lambda) { return emitted(t, t.ng, lambda); });
     weighted += y * areas[i];
     area += areas[i];
   }
   power_ = area > 0.0 ? static_cast<float>(kPi * total_area_ * weighted / area) : 0.0f;
 }
 
-SampledSpectrum AreaLight::emitted(const Vec3& p, const Vec3& ng, const Vec3& ns, const Vec2& uv, const Vec3& colour,
-                                   const Vec3& to_viewer, const SampledWavelengths& lambda) const {
-  if (dot(ng, to_viewer) <= 0.0f) return SampledSpectrum(0.0f);
+SampledSpectrum AreaLight::emitted(const SurfacePoint& sp, const Vec3& to_viewer,
+                                   const SampledWavelengths& lambda) const {
+  if (dot(sp.ng, to_viewer) <= 0.0f) return SampledSpectrum(0.0f);
   thread_local LobeArena arena(4096);
   arena.reset();
-  ShadingContext ctx;
-  ctx.p = p;
-  ctx.n = ns;
-  ctx.uv = uv;
-  ctx.vertex_colour = {colour.x, colour.y, colour.z};
-  ctx.lambda = &lambda;
-  ctx.textures = textures_;
   Closure closure;
-  material_.evaluate(ctx, arena, closure);
+  material_.evaluate(shading_context(sp, lambda, textures_), arena, closure);
   return closure.emission();
 }
 
-std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u, const SampledWavelengths& lambda) const {
+std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,
+                                             const SampledWavelengths& lambda) const {
   if (total_area_ <= 0.0f) return std::nullopt;
   float u_tri = 0.0f;
   const size_t tri = triangles_.sample(u.x, &u_tri);
   const Vec2 b = sample_uniform_triangle({u_tri, u.y});
-  const TrianglePoint t = point_on_triangle(mesh_, tri, b.x, b.y);
+  const SurfacePoint t = surface_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y);
+  if (dot(t.ng, t.ng) == 0.0f) return std::nullopt;
 
   const Vec3 d = t.p - ref;
   const float dist2 = dot(d, d);
@@ -106,8 +75,8 @@ std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u, con
   s.wi = d / s.distance;
   const float cos_light = -dot(t.ng, s.wi);
   if (cos_light <= 0.0f) return std::nullopt;  // back side: one-sided emitter
-  s.pdf = dist2 / (cos_light * total_area_);    // area pdf 1/A converted to solid angle
-  s.radiance = emitted(t.p, t.ng, t.ns, t.uv, t.colour, -s.wi, lambda);
+  s.pdf = dist2 / (cos_light * total_area_);   // area pdf 1/A converted to solid angle
+  s.radiance = emitted(t, -s.wi, lambda);
   s.light_normal = t.ng;
   return s;
 }

@@ -5,6 +5,7 @@
 
 #include "materials/compiled_material.h"
 #include "materials/texture_provider.h"
+#include "renderer/accel.h"
 #include "renderer/distribution_1d.h"
 #include "renderer/light.h"
 #include "renderer/mesh.h"
@@ -14,14 +15,15 @@ namespace ochre {
 class AreaLight final : public Light {
  public:
   AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures);
-  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u, const SampledWavelengths& lambda) const override;
+  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
+                                    const SampledWavelengths& lambda) const override;
   float power() const override { return power_; }
 
   // Solid-angle pdf of sampling point p (normal ng) from ref, given the point is on this light.
   float pdf(const Vec3& ref, const Vec3& p, const Vec3& ng) const;
   // Emitted radiance at a point toward `to_viewer` (0 on the back side).
-  SampledSpectrum emitted(const Vec3& p, const Vec3& ng, const Vec3& ns, const Vec2& uv, const Vec3& colour,
-                          const Vec3& to_viewer, const SampledWavelengths& lambda) const;
+  SampledSpectrum emitted(const SurfacePoint& sp, const Vec3& to_viewer,
+                          const SampledWavelengths& lambda) const;
 
  private:
   const Mesh& mesh_;

@@ -34,7 +34,8 @@ Camera Camera::perspective(const CameraBasis& basis, float fov_degrees, int widt
   c.basis_ = basis;
   c.width_ = width;
   c.height_ = height;
-  film_half_extents(std::tan(0.5f * fov_degrees * kPi / 180.0f), width, height, c.half_width_, c.half_height_);
+  film_half_extents(std::tan(0.5f * fov_degrees * kPi / 180.0f), width, height, c.half_width_,
+                    c.half_height_);
   return c;
 }
 

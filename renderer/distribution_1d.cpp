@@ -4,7 +4,8 @@
 
 namespace ochre {
 
-Distribution1D::Distribution1D(const std::vector<double>& weights) : cdf_(weights.size() + 1, 0.0), pmf_(weights.size()) {
+Distribution1D::Distribution1D(const std::vector<double>& weights)
+    : cdf_(weights.size() + 1, 0.0), pmf_(weights.size()) {
   for (size_t i = 0; i < weights.size(); ++i) cdf_[i + 1] = cdf_[i] + std::max(0.0, weights[i]);
   total_ = cdf_.back();
   if (total_ <= 0.0) return;

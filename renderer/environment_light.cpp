@@ -10,7 +10,8 @@ namespace ochre {
 EnvironmentLight::EnvironmentLight(SpectrumPtr radiance, float scene_radius)
     : radiance_(std::move(radiance)), scene_radius_(scene_radius) {}
 
-std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u, const SampledWavelengths& lambda) const {
+std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,
+                                                    const SampledWavelengths& lambda) const {
   LightSample s;
   s.wi = sample_uniform_sphere(u);
   s.distance = INFINITY;
@@ -28,6 +29,8 @@ SampledSpectrum EnvironmentLight::radiance(const Vec3&, const SampledWavelengths
   return radiance_->sample(lambda);
 }
 
-float EnvironmentLight::pdf(const Vec3&) const { return kUniformSpherePdf; }
+float EnvironmentLight::pdf(const Vec3&) const {
+  return kUniformSpherePdf;
+}
 
 }  // namespace ochre

@@ -10,7 +10,8 @@ namespace ochre {
 class EnvironmentLight final : public Light {
  public:
   EnvironmentLight(SpectrumPtr radiance, float scene_radius);
-  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u, const SampledWavelengths& lambda) const override;
+  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
+                                    const SampledWavelengths& lambda) const override;
   float power() const override;
 
   // Radiance arriving along -direction (a ray escaping the scene along `direction`).

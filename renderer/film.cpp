@@ -13,10 +13,13 @@ __int128 to_fixed(double v) {
   v = std::clamp(v, -kMaxMagnitude, kMaxMagnitude);
   return static_cast<__int128>(std::nearbyint(v * kScale));
 }
-double from_fixed(__int128 v) { return static_cast<double>(v) / kScale; }
+double from_fixed(__int128 v) {
+  return static_cast<double>(v) / kScale;
+}
 }  // namespace
 
-Film::Film(int width, int height) : width_(width), height_(height), pixels_(static_cast<size_t>(width) * height) {}
+Film::Film(int width, int height)
+    : width_(width), height_(height), pixels_(static_cast<size_t>(width) * height) {}
 
 void Film::add_sample(int x, int y, const XYZ& xyz) {
   Pixel& p = pixels_[index(x, y)];

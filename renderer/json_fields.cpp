@@ -16,11 +16,14 @@ std::string join_where(const std::string& where, const std::string& key) {
 }
 }  // namespace
 
-JsonFields::JsonFields(const nlohmann::json& object, std::string where) : object_(object), where_(std::move(where)) {
+JsonFields::JsonFields(const nlohmann::json& object, std::string where)
+    : object_(object), where_(std::move(where)) {
   if (!object_.is_object()) throw InputError(fmt::format("{}: expected a JSON object", where_));
 }
 
-std::string JsonFields::child(const std::string& key) const { return join_where(where_, key); }
+std::string JsonFields::child(const std::string& key) const {
+  return join_where(where_, key);
+}
 
 void JsonFields::fail(const std::string& key, const std::string& message) const {
   throw InputError(fmt::format("{}: {}", key.empty() ? where_ : child(key), message));
@@ -55,7 +58,8 @@ double JsonFields::required_number(const char* key, double min, double max, bool
   return x;
 }
 
-double JsonFields::number(const char* key, double fallback, double min, double max, bool min_exclusive) const {
+double JsonFields::number(const char* key, double fallback, double min, double max,
+                          bool min_exclusive) const {
   return has(key) ? required_number(key, min, max, min_exclusive) : fallback;
 }
 
@@ -79,7 +83,8 @@ std::string JsonFields::string(const char* key, const std::string& fallback) con
 }
 
 Vec3 json_vec3(const nlohmann::json& v, const std::string& where) {
-  if (!v.is_array() || v.size() != 3) throw InputError(fmt::format("{}: expected [x, y, z], got {}", where, v.dump()));
+  if (!v.is_array() || v.size() != 3)
+    throw InputError(fmt::format("{}: expected [x, y, z], got {}", where, v.dump()));
   Vec3 r;
   for (int i = 0; i < 3; ++i) {
     if (!v[i].is_number() || !std::isfinite(v[i].get<double>()) || std::fabs(v[i].get<double>()) > 3.0e38)
@@ -89,7 +94,9 @@ Vec3 json_vec3(const nlohmann::json& v, const std::string& where) {
   return r;
 }
 
-Vec3 JsonFields::required_vec3(const char* key) const { return json_vec3(require(key), child(key)); }
+Vec3 JsonFields::required_vec3(const char* key) const {
+  return json_vec3(require(key), child(key));
+}
 Vec3 JsonFields::vec3(const char* key, const Vec3& fallback) const {
   return has(key) ? required_vec3(key) : fallback;
 }

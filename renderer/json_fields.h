@@ -2,10 +2,9 @@
 // Typed access to JSON scene fields with errors that name the file and the field:
 // "scene.json: shapes[2].radius: must be > 0 (got -1)". Every error is an InputError.
 
-#include <nlohmann/json.hpp>
-
 #include <initializer_list>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "materials/vec3.h"

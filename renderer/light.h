@@ -10,19 +10,20 @@
 namespace ochre {
 
 struct LightSample {
-  Vec3 wi;                      // unit direction from the reference point toward the light
-  float distance = 0.0f;        // to the sampled point (INFINITY for the environment)
-  SampledSpectrum radiance;     // arriving radiance (point lights: intensity / distance^2)
-  float pdf = 0.0f;             // solid-angle pdf (delta lights: 1)
+  Vec3 wi;                   // unit direction from the reference point toward the light
+  float distance = 0.0f;     // to the sampled point (INFINITY for the environment)
+  SampledSpectrum radiance;  // arriving radiance (point lights: intensity / distance^2)
+  float pdf = 0.0f;          // solid-angle pdf (delta lights: 1)
   bool delta = false;
-  Vec3 light_normal;            // geometric normal at the sampled point (area lights)
+  Vec3 light_normal;  // geometric normal at the sampled point (area lights)
 };
 
 class Light {
  public:
   virtual ~Light() = default;
   // Samples a point on the light as seen from `ref` (world space).
-  virtual std::optional<LightSample> sample(const Vec3& ref, const Vec2& u, const SampledWavelengths& lambda) const = 0;
+  virtual std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
+                                            const SampledWavelengths& lambda) const = 0;
   // Flux estimate (W-like, luminance-weighted) used to choose among lights.
   virtual float power() const = 0;
   virtual bool is_delta() const { return false; }

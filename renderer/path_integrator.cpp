@@ -5,7 +5,7 @@
 #include "materials/closure.h"
 #include "materials/frame.h"
 #include "materials/sampling.h"
-#include "materials/shading_context.h"
+#include "renderer/surface_shading.h"
 
 namespace ochre {
 
@@ -19,18 +19,6 @@ struct PathVertex {
 };
 
 namespace {
-
-ShadingContext shading_context(const SurfacePoint& sp, const SampledWavelengths& lambda,
-                               const TextureProvider* textures) {
-  ShadingContext ctx;
-  ctx.p = sp.p;
-  ctx.n = sp.ns;
-  ctx.uv = sp.uv;
-  if (sp.has_colour) ctx.vertex_colour = {sp.colour.x, sp.colour.y, sp.colour.z};
-  ctx.lambda = &lambda;
-  ctx.textures = textures;
-  return ctx;
-}
 
 // Shading frame around the interpolated normal, flipped to the viewer's side of the surface.
 // Falls back to the geometric normal where the shading normal hides the viewer.
@@ -47,8 +35,8 @@ SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledW
                                              const IndependentSampler& sampler, uint32_t depth,
                                              PathStats& stats) const {
   float u_light = 0.0f;
-  const size_t index =
-      scene_.light_selection.sample(sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
+  const size_t index = scene_.light_selection.sample(
+      sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
   const float pmf = scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return SampledSpectrum(0.0f);
   const Light& light = *scene_.lights[index];
@@ -92,7 +80,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWav
       if (scene_.environment) {
         float w = 1.0f;
         if (!specular) {
-          const float light_pdf = scene_.light_pmf(scene_.environment_light) * scene_.environment->pdf(ray.dir);
+          const float light_pdf =
+              scene_.light_pmf(scene_.environment_light) * scene_.environment->pdf(ray.dir);
           w = power_heuristic(prev_pdf, light_pdf);
         }
         L += beta * scene_.environment->radiance(ray.dir, lambda) * w;

@@ -21,8 +21,8 @@ class PathIntegrator {
   explicit PathIntegrator(const Scene& scene) : scene_(scene) {}
 
   // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`.
-  SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& lambda, const IndependentSampler& sampler,
-                           LobeArena& arena, PathStats& stats) const;
+  SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& lambda,
+                           const IndependentSampler& sampler, LobeArena& arena, PathStats& stats) const;
 
  private:
   // Next-event estimation at a surface point: one light sample, MIS-weighted.

@@ -7,7 +7,8 @@ namespace ochre {
 PointLight::PointLight(const Vec3& position, SpectrumPtr intensity)
     : position_(position), intensity_(std::move(intensity)) {}
 
-std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&, const SampledWavelengths& lambda) const {
+std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&,
+                                              const SampledWavelengths& lambda) const {
   const Vec3 d = position_ - ref;
   const float dist2 = dot(d, d);
   if (!(dist2 > 0.0f)) return std::nullopt;
@@ -20,6 +21,8 @@ std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&, cons
   return s;
 }
 
-float PointLight::power() const { return 4.0f * kPi * spectrum_to_xyz(*intensity_).y; }
+float PointLight::power() const {
+  return 4.0f * kPi * spectrum_to_xyz(*intensity_).y;
+}
 
 }  // namespace ochre

@@ -9,7 +9,8 @@ namespace ochre {
 class PointLight final : public Light {
  public:
   PointLight(const Vec3& position, SpectrumPtr intensity);
-  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u, const SampledWavelengths& lambda) const override;
+  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
+                                    const SampledWavelengths& lambda) const override;
   float power() const override;
   bool is_delta() const override { return true; }
 

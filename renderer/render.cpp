@@ -52,7 +52,8 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   counters.rays += stats.rays;
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
-  if (progress) progress(static_cast<uint64_t>(x_end - tile_x * kTileSize) * (y_end - tile_y * kTileSize) * s.spp);
+  if (progress)
+    progress(static_cast<uint64_t>(x_end - tile_x * kTileSize) * (y_end - tile_y * kTileSize) * s.spp);
 }
 
 }  // namespace

@@ -39,7 +39,8 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) 
 
 void check_outputs(const OutputSettings& outputs) {
   try {
-    if (outputs.exr.empty() && outputs.png.empty()) throw InputError("no output: give -o OUT.exr and/or --png OUT.png");
+    if (outputs.exr.empty() && outputs.png.empty())
+      throw InputError("no output: give -o OUT.exr and/or --png OUT.png");
     if (!outputs.exr.empty()) check_output_writable(outputs.exr);
     if (!outputs.png.empty()) {
       check_output_writable(outputs.png);

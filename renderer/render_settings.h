@@ -15,13 +15,13 @@ struct RenderSettings {
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 3;           // Russian roulette starts after this many bounces
   uint64_t seed = 0;
-  int threads = 0;            // 0 = all cores
+  int threads = 0;                    // 0 = all cores
   std::string polarization = "auto";  // auto | off | intensity | stokes (tracing arrives with issue 4)
 };
 
 struct OutputSettings {
-  std::string exr;         // path of the EXR (empty = none)
-  std::string png;         // path of the display PNG (empty = none)
+  std::string exr;                    // path of the EXR (empty = none)
+  std::string png;                    // path of the display PNG (empty = none)
   std::string colorspace = "rec709";  // EXR working space: rec709 | acescg
   std::string ocio_config;            // "" = $OCIO, then the built-in config; "builtin"; "none"; or a path
   std::string display, view;          // OCIO display and view ("" = the config's defaults)

@@ -4,7 +4,8 @@ namespace ochre {
 
 IndependentSampler::IndependentSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index) {
   // Chain the mixes so that (seed, pixel, sample) triples never collide in practice.
-  key_ = mix64(mix64(mix64(seed + 0x9e3779b97f4a7c15ull) ^ pixel_index) ^ (sample_index * 0xd1b54a32d192ed03ull));
+  key_ = mix64(mix64(mix64(seed + 0x9e3779b97f4a7c15ull) ^ pixel_index) ^
+               (sample_index * 0xd1b54a32d192ed03ull));
 }
 
 float IndependentSampler::get_1d(uint32_t dimension) const {

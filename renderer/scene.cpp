@@ -2,7 +2,7 @@
 
 namespace ochre {
 
-void Scene::build_lights(float) {
+void Scene::build_lights() {
   mesh_light.assign(meshes.size(), -1);
   for (size_t m = 0; m < meshes.size(); ++m) {
     const CompiledMaterial& material = *materials[meshes[m].material];

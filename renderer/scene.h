@@ -30,8 +30,8 @@ struct Scene {
   std::unique_ptr<OiioTextureProvider> textures;
 
   std::vector<std::unique_ptr<Light>> lights;
-  Distribution1D light_selection;       // proportional to light power
-  std::vector<int> mesh_light;          // light index of an emissive mesh, -1 otherwise
+  Distribution1D light_selection;  // proportional to light power
+  std::vector<int> mesh_light;     // light index of an emissive mesh, -1 otherwise
   const EnvironmentLight* environment = nullptr;
   int environment_light = -1;
 
@@ -40,7 +40,7 @@ struct Scene {
   bool needs_uv = false;
 
   // Builds the light list and selection distribution (after meshes and materials exist).
-  void build_lights(float scene_radius);
+  void build_lights();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
 };
 

@@ -23,7 +23,8 @@ namespace {
 // Files named by materials resolve relative to the scene file; textures go to the OIIO provider.
 class SceneResources final : public ResourceResolver {
  public:
-  SceneResources(std::filesystem::path dir, OiioTextureProvider& textures) : dir_(std::move(dir)), textures_(textures) {}
+  SceneResources(std::filesystem::path dir, OiioTextureProvider& textures)
+      : dir_(std::move(dir)), textures_(textures) {}
   std::filesystem::path resolve(const std::string& path) const override {
     const std::filesystem::path p(path);
     return p.is_absolute() ? p : dir_ / p;
@@ -60,7 +61,8 @@ nlohmann::json read_json(const std::filesystem::path& file) {
   try {
     return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(fmt::format("{}: {}: malformed JSON ({})", file.string(), line_column(text, e.byte), e.what()));
+    throw InputError(
+        fmt::format("{}: {}: malformed JSON ({})", file.string(), line_column(text, e.byte), e.what()));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: malformed JSON ({})", file.string(), e.what()));
   }
@@ -112,8 +114,8 @@ void check_settings(const Scene& scene, const std::string& file) {
   if (s.spp < 1) throw InputError(fmt::format("{}: integrator.spp: must be >= 1", file));
   const std::string& p = s.polarization;
   if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
-    throw InputError(fmt::format("{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)",
-                                 file, p));
+    throw InputError(fmt::format(
+        "{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)", file, p));
   const std::string& cs = scene.outputs.colorspace;
   if (cs != "rec709" && cs != "acescg")
     throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
@@ -133,16 +135,20 @@ Camera load_camera(const nlohmann::json& root, const std::string& file, const Re
     basis.right = normalize(cross(basis.forward, basis.up));
     basis.up = cross(basis.right, basis.forward);
   } else {
-    const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}), up = f.vec3("up", {0, 1, 0});
+    const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
+               up = f.vec3("up", {0, 1, 0});
     if (length(target - eye) <= 0.0f) f.fail("target", "must differ from eye");
-    if (length(cross(normalize(target - eye), up)) < 1e-6f) f.fail("up", "must not be parallel to the view direction");
+    if (length(cross(normalize(target - eye), up)) < 1e-6f)
+      f.fail("up", "must not be parallel to the view direction");
     basis = camera_basis_look_at(eye, target, up);
   }
   const std::string type = f.string("type", "perspective");
   if (type == "perspective")
-    return Camera::perspective(basis, static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true)), s.width, s.height);
+    return Camera::perspective(basis, static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true)), s.width,
+                               s.height);
   if (type == "orthographic")
-    return Camera::orthographic(basis, static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true)), s.width, s.height);
+    return Camera::orthographic(basis, static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true)), s.width,
+                                s.height);
   f.fail("type", fmt::format("unknown camera type '{}' (known: perspective, orthographic)", type));
 }
 
@@ -166,8 +172,9 @@ int material_index(const Scene& scene, const JsonFields& f) {
 
 Mesh load_shape(const JsonFields& f, const Scene& scene) {
   const std::string type = f.required_string("type");
-  const Transform to_world = f.has("transform") ? parse_transform(f.require("transform"), f.child("transform"))
-                                                : Transform::identity();
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
   Mesh mesh;
   if (type == "mesh") {
     f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name"});
@@ -191,8 +198,8 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     Vec2 size{2, 2};
     if (f.has("size")) {
       const nlohmann::json& s = f.require("size");
-      if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number() || !(s[0].get<double>() > 0) ||
-          !(s[1].get<double>() > 0))
+      if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number() ||
+          !(s[0].get<double>() > 0) || !(s[1].get<double>() > 0))
         f.fail("size", "expected [width, height] > 0");
       size = {s[0].get<float>(), s[1].get<float>()};
     }
@@ -232,7 +239,8 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
       f.check_known({"type", "radiance"});
       if (scene.environment) f.fail("type", "only one environment light is allowed");
       auto env = std::make_unique<EnvironmentLight>(
-          parse_spectrum(f.require("radiance"), SpectrumRole::Illuminant, f.child("radiance"), dir), scene_radius);
+          parse_spectrum(f.require("radiance"), SpectrumRole::Illuminant, f.child("radiance"), dir),
+          scene_radius);
       scene.environment = env.get();
       scene.lights.push_back(std::move(env));
     } else if (type == "point") {
@@ -241,8 +249,10 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
           f.required_vec3("position"),
           parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir)));
     } else {
-      f.fail("type", fmt::format("unknown light type '{}' (known: environment, point; emissive shapes are area lights)",
-                                 type));
+      f.fail(
+          "type",
+          fmt::format("unknown light type '{}' (known: environment, point; emissive shapes are area lights)",
+                      type));
     }
   }
 }
@@ -274,7 +284,8 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   const std::string file = path.string();
   const nlohmann::json root = read_json(scene->file);
   const JsonFields top(root, file + ":");
-  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
+  top.check_known(
+      {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
 
   load_settings(root, file, *scene);
   apply_overrides(overrides, scene->settings);
@@ -296,7 +307,7 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
     scene->needs_uv = scene->needs_uv || m->facts().needs_uv;
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
-  scene->build_lights(radius);
+  scene->build_lights();
   return scene;
 }
 

@@ -18,7 +18,8 @@ namespace {
 
 SpectrumPtr from_rgb(const nlohmann::json& value, SpectrumRole role, const std::string& where) {
   const Vec3 c = json_vec3(value, where);
-  if (c.x < 0 || c.y < 0 || c.z < 0) throw InputError(fmt::format("{}: colour components must be >= 0", where));
+  if (c.x < 0 || c.y < 0 || c.z < 0)
+    throw InputError(fmt::format("{}: colour components must be >= 0", where));
   const RGB rgb{c.x, c.y, c.z};
   switch (role) {
     case SpectrumRole::Illuminant:
@@ -49,7 +50,8 @@ class SceneDirectory final : public ResourceResolver {
   std::filesystem::path dir_;
 };
 
-SpectrumPtr from_object(const nlohmann::json& value, const std::string& where, const std::filesystem::path& scene_dir) {
+SpectrumPtr from_object(const nlohmann::json& value, const std::string& where,
+                        const std::filesystem::path& scene_dir) {
   try {
     return spectrum_from_object(value, SceneDirectory(scene_dir));
   } catch (const SpectrumObjectError& e) {
@@ -63,12 +65,14 @@ SpectrumPtr parse_spectrum(const nlohmann::json& value, SpectrumRole role, const
                            const std::filesystem::path& scene_dir) {
   if (value.is_number()) {
     const double x = value.get<double>();
-    if (!std::isfinite(x) || x < 0) throw InputError(fmt::format("{}: must be a finite number >= 0 (got {})", where, x));
+    if (!std::isfinite(x) || x < 0)
+      throw InputError(fmt::format("{}: must be a finite number >= 0 (got {})", where, x));
     return std::make_shared<ConstantSpectrum>(static_cast<float>(x));
   }
   if (value.is_array()) return from_rgb(value, role, where);
   if (value.is_object()) return from_object(value, where, scene_dir);
-  throw InputError(fmt::format("{}: expected a spectrum (number, [r, g, b] or object), got {}", where, value.dump()));
+  throw InputError(
+      fmt::format("{}: expected a spectrum (number, [r, g, b] or object), got {}", where, value.dump()));
 }
 
 }  // namespace ochre

@@ -19,26 +19,32 @@ class SampledSpectrum {
   constexpr float& operator[](int i) { return v_[i]; }
   constexpr float operator[](int i) const { return v_[i]; }
 
-#define OCHRE_SPECTRUM_OP(op)                                             \
-  constexpr SampledSpectrum& operator op##=(const SampledSpectrum& o) {   \
-    for (int i = 0; i < kSpectrumSamples; ++i) v_[i] op## = o.v_[i];     \
-    return *this;                                                         \
-  }                                                                       \
-  constexpr SampledSpectrum& operator op##=(float s) {                    \
-    for (int i = 0; i < kSpectrumSamples; ++i) v_[i] op## = s;           \
-    return *this;                                                         \
-  }                                                                       \
+#define OCHRE_SPECTRUM_OP(op)                                                                 \
+  constexpr SampledSpectrum& operator op##=(const SampledSpectrum& o) {                       \
+    for (int i = 0; i < kSpectrumSamples; ++i) v_[i] op## = o.v_[i];                          \
+    return *this;                                                                             \
+  }                                                                                           \
+  constexpr SampledSpectrum& operator op##=(float s) {                                        \
+    for (int i = 0; i < kSpectrumSamples; ++i) v_[i] op## = s;                                \
+    return *this;                                                                             \
+  }                                                                                           \
   friend constexpr SampledSpectrum operator op(SampledSpectrum a, const SampledSpectrum& b) { \
-    return a op## = b;                                                    \
-  }                                                                       \
-  friend constexpr SampledSpectrum operator op(SampledSpectrum a, float s) { return a op## = s; }
+    return a op## = b;                                                                        \
+  }                                                                                           \
+  friend constexpr SampledSpectrum operator op(SampledSpectrum a, float s) {                  \
+    return a op## = s;                                                                        \
+  }
   OCHRE_SPECTRUM_OP(+)
   OCHRE_SPECTRUM_OP(-)
   OCHRE_SPECTRUM_OP(*)
 #undef OCHRE_SPECTRUM_OP
 
-  friend constexpr SampledSpectrum operator*(float s, SampledSpectrum a) { return a *= s; }
-  friend constexpr SampledSpectrum operator+(float s, SampledSpectrum a) { return a += s; }
+  friend constexpr SampledSpectrum operator*(float s, SampledSpectrum a) {
+    return a *= s;
+  }
+  friend constexpr SampledSpectrum operator+(float s, SampledSpectrum a) {
+    return a += s;
+  }
   friend constexpr SampledSpectrum operator-(float s, const SampledSpectrum& a) {
     return SampledSpectrum(s) - a;
   }
@@ -53,7 +59,9 @@ class SampledSpectrum {
     const float inv = 1.0f / s;
     return *this *= inv;
   }
-  friend constexpr SampledSpectrum operator/(SampledSpectrum a, float s) { return a /= s; }
+  friend constexpr SampledSpectrum operator/(SampledSpectrum a, float s) {
+    return a /= s;
+  }
   friend constexpr SampledSpectrum operator/(SampledSpectrum a, const SampledSpectrum& b) {
     for (int i = 0; i < kSpectrumSamples; ++i) a.v_[i] /= b.v_[i];
     return a;
@@ -70,9 +78,15 @@ class SampledSpectrum {
       if (!std::isfinite(x)) return false;
     return true;
   }
-  constexpr float max_value() const { return std::max(std::max(v_[0], v_[1]), std::max(v_[2], v_[3])); }
-  constexpr float min_value() const { return std::min(std::min(v_[0], v_[1]), std::min(v_[2], v_[3])); }
-  constexpr float average() const { return (v_[0] + v_[1] + v_[2] + v_[3]) * 0.25f; }
+  constexpr float max_value() const {
+    return std::max(std::max(v_[0], v_[1]), std::max(v_[2], v_[3]));
+  }
+  constexpr float min_value() const {
+    return std::min(std::min(v_[0], v_[1]), std::min(v_[2], v_[3]));
+  }
+  constexpr float average() const {
+    return (v_[0] + v_[1] + v_[2] + v_[3]) * 0.25f;
+  }
 
  private:
   std::array<float, kSpectrumSamples> v_{};

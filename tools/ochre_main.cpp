@@ -1,6 +1,5 @@
 // ochre command line: `ochre render SCENE.json -o OUT.exr [--png OUT.png] ...` (docs/cli.md).
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 #include <regex>
 
@@ -38,12 +37,14 @@ int main(int argc, char** argv) {
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
   render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
-  auto* threads_opt = render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
+  auto* threads_opt =
+      render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
   auto* seed_opt = render->add_option("--seed", seed, "Random seed");
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
   auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
-  auto* ocio_opt = render->add_option("--ocio-config", ocio, "OCIO config path, 'builtin' or 'none' (default: $OCIO, else built-in)");
+  auto* ocio_opt = render->add_option(
+      "--ocio-config", ocio, "OCIO config path, 'builtin' or 'none' (default: $OCIO, else built-in)");
   auto* display_opt = render->add_option("--display", display, "OCIO display (default: the config's)");
   auto* view_opt = render->add_option("--view", view, "OCIO view (default: the display's)");
   auto* cs_opt = render->add_option("--colorspace", colorspace, "EXR working space: rec709 | acescg")
@@ -65,7 +66,8 @@ int main(int argc, char** argv) {
   if (*res_opt) {
     int w = 0, h = 0;
     if (!parse_resolution(resolution, w, h) || w < 1 || h < 1) {
-      std::cerr << "ochre: error: --resolution: expected WxH with positive integers, got '" << resolution << "'\n";
+      std::cerr << "ochre: error: --resolution: expected WxH with positive integers, got '" << resolution
+                << "'\n";
       return 2;
     }
     cmd.overrides.width = w;

@@ -27,18 +27,20 @@ void print_summary(const Scene& scene) {
   size_t triangles = 0;
   for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
   const RenderSettings& s = scene.settings;
-  std::cerr << fmt::format("ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}\n",
-                           scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth,
-                           scene.meshes.size(), triangles, scene.lights.size(), s.seed);
+  std::cerr << fmt::format(
+      "ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}\n",
+      scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth, scene.meshes.size(), triangles,
+      scene.lights.size(), s.seed);
   std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
 }
 
 void print_stats(const RenderStats& stats) {
   std::cerr << fmt::format(
-      "ochre: rendered in {:.2f} s on {} threads: {:.3f} M samples/s, {:.3f} M rays/s ({} rays, {} shadow rays), "
+      "ochre: rendered in {:.2f} s on {} threads: {:.3f} M samples/s, {:.3f} M rays/s ({} rays, {} shadow "
+      "rays), "
       "{} discarded NaN/Inf samples\n",
-      stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6, stats.rays,
-      stats.shadow_rays, stats.discarded);
+      stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6,
+      stats.rays, stats.shadow_rays, stats.discarded);
 }
 
 int render_scene(const RenderCommand& command) {
@@ -57,7 +59,8 @@ int render_scene(const RenderCommand& command) {
 
   if (!command.quiet) print_summary(*scene);
   Film film(scene->settings.width, scene->settings.height);
-  const uint64_t total = static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
+  const uint64_t total =
+      static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   ProgressReporter progress("render", total, std::cerr, command.quiet ? false : stderr_is_terminal());
   const RenderStats stats = render(*scene, film, [&](uint64_t done) {
     if (!command.quiet) progress.advance(done);

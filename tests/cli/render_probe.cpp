@@ -30,7 +30,8 @@ LuminanceImage render_luminance(const std::string& scene_json, const std::string
   const auto* B = exr.find_channel("B");
   img.y.resize(R->size());
   // Luminance of linear Rec.709 (the Y row of the RGB -> XYZ matrix).
-  for (size_t i = 0; i < img.y.size(); ++i) img.y[i] = 0.2126729 * (*R)[i] + 0.7151522 * (*G)[i] + 0.0721750 * (*B)[i];
+  for (size_t i = 0; i < img.y.size(); ++i)
+    img.y[i] = 0.2126729 * (*R)[i] + 0.7151522 * (*G)[i] + 0.0721750 * (*B)[i];
   return img;
 }
 

@@ -1,8 +1,7 @@
 // Every bad-input path of `ochre render`: exit code 2, a message naming the file and the
 // node / parameter at fault, and no output file (an existing file is left untouched).
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <fstream>
 
@@ -15,7 +14,8 @@ namespace {
 const char* kGoodMaterials = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
 const char* kGoodShapes = R"("shapes": [{"type": "plane", "material": "grey"}])";
 
-std::string scene_text(const std::string& materials, const std::string& shapes, const std::string& extra = "") {
+std::string scene_text(const std::string& materials, const std::string& shapes,
+                       const std::string& extra = "") {
   return fmt::format(R"({{"film": {{"resolution": [8, 8]}}, "integrator": {{"spp": 1}}, {}{}, {}, )"
                      R"("lights": [{{"type": "environment", "radiance": 1}}]}})",
                      extra, materials, shapes);
@@ -32,94 +32,119 @@ void expect_rejected(const BadCase& c) {
   write_text(dir / "scene.json", c.scene);
   const CommandResult r = run_ochre("render scene.json -o out.exr --png out.png", dir);
   EXPECT_EQ(r.exit_code, 2) << c.name << "\n" << r.output;
-  EXPECT_NE(r.output.find("scene.json"), std::string::npos) << c.name << ": message must name the file\n" << r.output;
+  EXPECT_NE(r.output.find("scene.json"), std::string::npos) << c.name << ": message must name the file\n"
+                                                            << r.output;
   for (const std::string& s : c.expected)
-    EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": message must contain '" << s << "'\n" << r.output;
+    EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": message must contain '" << s << "'\n"
+                                                   << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.exr")) << c.name;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << c.name;
   for (const auto& entry : std::filesystem::directory_iterator(dir))
-    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << "temporary file left behind";
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
+        << "temporary file left behind";
 }
 
-TEST(BadInput, MalformedJson) { expect_rejected({"json", "{\"film\": {\"resolution\": [8, 8]},\n  \"shapes\": [}", {"line 2", "malformed JSON"}}); }
+TEST(BadInput, MalformedJson) {
+  expect_rejected(
+      {"json", "{\"film\": {\"resolution\": [8, 8]},\n  \"shapes\": [}", {"line 2", "malformed JSON"}});
+}
 
 TEST(BadInput, MissingMesh) {
-  expect_rejected({"mesh", scene_text(kGoodMaterials, R"("shapes": [{"type": "mesh", "file": "nope.obj", "material": "grey"}])"),
-                   {"shapes[0]", "nope.obj"}});
+  expect_rejected(
+      {"mesh",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "mesh", "file": "nope.obj", "material": "grey"}])"),
+       {"shapes[0]", "nope.obj"}});
 }
 
 TEST(BadInput, MissingTexture) {
-  expect_rejected({"texture",
-                   scene_text(R"("materials": {"rock": {"nodes": {"tex": {"type": "texture", "file": "missing.png"},
+  expect_rejected(
+      {"texture",
+       scene_text(R"("materials": {"rock": {"nodes": {"tex": {"type": "texture", "file": "missing.png"},
                      "d": {"type": "lambert", "color": {"link": "tex.color"}}}, "output": "d"}})",
-                              R"("shapes": [{"type": "plane", "material": "rock"}])"),
-                   {"rock", "tex", "missing.png"}});
+                  R"("shapes": [{"type": "plane", "material": "rock"}])"),
+       {"rock", "tex", "missing.png"}});
 }
 
 TEST(BadInput, UnknownNodeType) {
-  expect_rejected({"node", scene_text(R"("materials": {"m": {"nodes": {"x": {"type": "glitter"}}, "output": "x"}})",
-                                      R"("shapes": [{"type": "plane", "material": "m"}])"),
+  expect_rejected({"node",
+                   scene_text(R"("materials": {"m": {"nodes": {"x": {"type": "glitter"}}, "output": "x"}})",
+                              R"("shapes": [{"type": "plane", "material": "m"}])"),
                    {"'m'", "'x'", "glitter"}});
 }
 
 TEST(BadInput, TypeMismatch) {
-  expect_rejected({"type", scene_text(R"("materials": {"m": {"nodes": {
+  expect_rejected({"type",
+                   scene_text(R"("materials": {"m": {"nodes": {
                      "a": {"type": "lambert", "color": 0.5},
                      "b": {"type": "lambert", "color": {"link": "a"}}}, "output": "b"}})",
-                                      R"("shapes": [{"type": "plane", "material": "m"}])"),
+                              R"("shapes": [{"type": "plane", "material": "m"}])"),
                    {"'m'", "'b'", "color"}});
 }
 
 TEST(BadInput, Cycle) {
-  expect_rejected({"cycle", scene_text(R"("materials": {"m": {"nodes": {
+  expect_rejected({"cycle",
+                   scene_text(R"("materials": {"m": {"nodes": {
                      "a": {"type": "multiply", "a": {"link": "b"}, "b": 0.5},
                      "b": {"type": "multiply", "a": {"link": "a"}, "b": 0.5},
                      "d": {"type": "lambert", "color": {"link": "a"}}}, "output": "d"}})",
-                                       R"("shapes": [{"type": "plane", "material": "m"}])"),
+                              R"("shapes": [{"type": "plane", "material": "m"}])"),
                    {"'m'", "cycle"}});
 }
 
 TEST(BadInput, NegativeReflectance) {
-  expect_rejected({"negative", scene_text(R"("materials": {"m": {"type": "lambert", "color": -0.5}})",
-                                          R"("shapes": [{"type": "plane", "material": "m"}])"),
+  expect_rejected({"negative",
+                   scene_text(R"("materials": {"m": {"type": "lambert", "color": -0.5}})",
+                              R"("shapes": [{"type": "plane", "material": "m"}])"),
                    {"'m'", "color"}});
 }
 
 TEST(BadInput, InfiniteParameter) {
   // 1e300 is a double but +Inf as the float the renderer uses.
-  expect_rejected({"inf", scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1e300, "material": "grey"}])"),
-                   {"shapes[0].radius", "finite"}});
+  expect_rejected(
+      {"inf",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1e300, "material": "grey"}])"),
+       {"shapes[0].radius", "finite"}});
 }
 
 TEST(BadInput, NumberOverflowingJson) {
   // JSON has no Inf or NaN literal; 1e999 overflows the parser.
-  expect_rejected({"overflow", scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1e999, "material": "grey"}])"),
-                   {"overflow"}});
+  expect_rejected(
+      {"overflow",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1e999, "material": "grey"}])"),
+       {"overflow"}});
 }
 
 TEST(BadInput, NaNAsString) {
-  expect_rejected({"nan", scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": "NaN", "material": "grey"}])"),
-                   {"shapes[0].radius"}});
+  expect_rejected(
+      {"nan",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": "NaN", "material": "grey"}])"),
+       {"shapes[0].radius"}});
 }
 
 TEST(BadInput, NegativeRadius) {
-  expect_rejected({"radius", scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": -1, "material": "grey"}])"),
-                   {"shapes[0].radius"}});
+  expect_rejected(
+      {"radius",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": -1, "material": "grey"}])"),
+       {"shapes[0].radius"}});
 }
 
 TEST(BadInput, ZeroResolution) {
-  expect_rejected({"resolution", R"({"film": {"resolution": [0, 8]}, "materials": {"g": {"type": "lambert"}},
+  expect_rejected({"resolution",
+                   R"({"film": {"resolution": [0, 8]}, "materials": {"g": {"type": "lambert"}},
                    "shapes": [{"type": "plane", "material": "g"}]})",
                    {"resolution"}});
 }
 
 TEST(BadInput, UnknownParameter) {
-  expect_rejected({"param", scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1, "materal": "grey"}])"),
-                   {"shapes[0]", "materal"}});
+  expect_rejected(
+      {"param",
+       scene_text(kGoodMaterials, R"("shapes": [{"type": "sphere", "radius": 1, "materal": "grey"}])"),
+       {"shapes[0]", "materal"}});
 }
 
 TEST(BadInput, UnknownMaterialReference) {
-  expect_rejected({"material", scene_text(kGoodMaterials, R"("shapes": [{"type": "plane", "material": "gold"}])"),
+  expect_rejected({"material",
+                   scene_text(kGoodMaterials, R"("shapes": [{"type": "plane", "material": "gold"}])"),
                    {"shapes[0].material", "gold"}});
 }
 
@@ -151,7 +176,8 @@ TEST(BadInput, BadResolutionFlag) {
 TEST(BadInput, ExistingOutputSurvivesAFailedRender) {
   const auto dir = scratch_dir();
   write_text(dir / "out.exr", "precious");
-  write_text(dir / "scene.json", scene_text(R"("materials": {"m": {"type": "lambert", "color": -1}})", kGoodShapes));
+  write_text(dir / "scene.json",
+             scene_text(R"("materials": {"m": {"type": "lambert", "color": -1}})", kGoodShapes));
   const CommandResult r = run_ochre("render scene.json -o out.exr", dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   std::ifstream in(dir / "out.exr");

@@ -61,7 +61,8 @@ TEST(DisplayOutput, AcesCgConfigFromShared) {
 TEST(DisplayOutput, MissingConfigIsBadInput) {
   const auto dir = scratch_dir();
   write_text(dir / "scene.json", kGreyPlane);
-  const CommandResult r = run_ochre("render scene.json --png out.png --ocio-config /no/such/config.ocio", dir);
+  const CommandResult r =
+      run_ochre("render scene.json --png out.png --ocio-config /no/such/config.ocio", dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("/no/such/config.ocio"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));

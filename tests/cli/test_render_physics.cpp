@@ -1,16 +1,14 @@
 // Physics of whole renders through the CLI: white furnace, analytic direct lighting.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "cli/cli_runner.h"
 #include "cli/render_probe.h"
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
-
-#include <array>
 
 namespace ochre::test {
 namespace {
