@@ -49,6 +49,11 @@ Camera Camera::orthographic(const CameraBasis& basis, float view_size, int width
   return c;
 }
 
+RayCone Camera::pixel_cone() const {
+  const float pixel = 2.0f * half_height_ / static_cast<float>(height_);
+  return kind_ == Kind::Perspective ? RayCone{0.0f, pixel} : RayCone{pixel, 0.0f};
+}
+
 Ray Camera::generate_ray(float film_x, float film_y) const {
   const float sx = (2.0f * film_x / static_cast<float>(width_) - 1.0f) * half_width_;
   const float sy = (1.0f - 2.0f * film_y / static_cast<float>(height_)) * half_height_;

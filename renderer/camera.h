@@ -15,6 +15,15 @@ struct CameraBasis {
 // Basis looking from eye at target; `up` need not be orthogonal to the view direction.
 CameraBasis camera_basis_look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
 
+// A ray cone (Akenine-Moller et al. 2019, "Texture Level of Detail Strategies for Real-Time Ray
+// Tracing"): the footprint width at the origin and its growth per unit distance. Texture lookups use it
+// to pick a filter width, so distant textured surfaces are filtered, not aliased.
+struct RayCone {
+  float width = 0.0f;   // world-space width at the ray origin
+  float spread = 0.0f;  // radians: width grows by spread x distance
+  float width_at(float distance) const { return width + spread * distance; }
+};
+
 class Camera {
  public:
   enum class Kind { Perspective, Orthographic };
@@ -26,6 +35,8 @@ class Camera {
 
   // film_x, film_y in pixels (continuous; pixel (i, j) covers [i, i+1) x [j, j+1), j = 0 at the top).
   Ray generate_ray(float film_x, float film_y) const;
+  // The cone of one pixel: spread = pixel angle (perspective) or width = pixel size (orthographic).
+  RayCone pixel_cone() const;
   Kind kind() const { return kind_; }
   const CameraBasis& basis() const { return basis_; }
 

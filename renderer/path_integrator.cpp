@@ -62,15 +62,16 @@ SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledW
   return f * ls->radiance * (power_heuristic(light_pdf, bsdf_pdf) / light_pdf);
 }
 
-SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& lambda,
-                                         const IndependentSampler& sampler, LobeArena& arena,
-                                         PathStats& stats) const {
+SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& cone,
+                                         const SampledWavelengths& lambda, const IndependentSampler& sampler,
+                                         LobeArena& arena, PathStats& stats) const {
   const RenderSettings& settings = scene_.settings;
   SampledSpectrum L(0.0f), beta(1.0f);
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
   Vec3 prev_p;
   Ray ray = camera_ray;
+  float path_length = 0.0f;  // along the path so far, for the texture footprint
   PathVertex v;
 
   for (uint32_t depth = 0;; ++depth) {
@@ -94,8 +95,13 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWav
     const Mesh& mesh = scene_.meshes[hit->mesh];
     arena.reset();
     v.closure = Closure();
-    scene_.materials[mesh.material]->evaluate(shading_context(v.sp, lambda, scene_.textures.get()), arena,
-                                              v.closure);
+    path_length += hit->t * length(ray.dir);
+    ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get());
+    // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
+    // units through the triangle's world-per-uv scale.
+    if (v.sp.area_scale_uv > 0.0f)
+      ctx.uv_footprint = cone.width_at(path_length) / std::sqrt(v.sp.area_scale_uv);
+    scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
 
     // Emission seen by this path segment (one-sided: front face only).
     if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {

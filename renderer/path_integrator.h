@@ -20,8 +20,9 @@ class PathIntegrator {
  public:
   explicit PathIntegrator(const Scene& scene) : scene_(scene) {}
 
-  // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`.
-  SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& lambda,
+  // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`. `cone` is
+  // the camera ray's footprint, used to filter textures.
+  SampledSpectrum radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                            const IndependentSampler& sampler, LobeArena& arena, PathStats& stats) const;
 
  private:

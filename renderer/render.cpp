@@ -27,6 +27,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   const RenderSettings& s = scene.settings;
   thread_local LobeArena arena;
   PathStats stats;
+  const RayCone cone = scene.camera.pixel_cone();
   uint64_t discarded = 0;
   const int x_end = std::min(s.width, (tile_x + 1) * kTileSize);
   const int y_end = std::min(s.height, (tile_y + 1) * kTileSize);
@@ -39,7 +40,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
         const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
-        const SampledSpectrum L = integrator.radiance(ray, lambda, sampler, arena, stats);
+        const SampledSpectrum L = integrator.radiance(ray, cone, lambda, sampler, arena, stats);
         XYZ xyz = sampled_to_xyz(L, lambda);
         if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z)) {
           xyz = {0, 0, 0};  // never written: counted, contributes zero

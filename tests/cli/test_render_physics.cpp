@@ -167,3 +167,43 @@ TEST(Textures, TexturedPlaneShowsTexelColours) {
 
 }  // namespace
 }  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// A 256x256 black/white checker seen so that one pixel covers 32x32 texels: with the ray-cone
+// footprint, the filtered lookup returns the texels' average (0.5). Compared per pixel with a plain
+// 0.5 grey rendered with the same seed (same wavelengths, so the spectral noise cancels); point
+// sampling would give 0 or 1 per sample.
+TEST(Textures, MinifiedTextureIsFiltered) {
+  const auto dir = scratch_dir();
+  std::string ppm = "P2\n256 256\n255\n";
+  for (int y = 0; y < 256; ++y)
+    for (int x = 0; x < 256; ++x) ppm += ((x + y) % 2 ? "255\n" : "0\n");
+  write_text(dir / "checker.pgm", ppm);
+  auto scene = [](const std::string& colour) {
+    return R"({
+    "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [8, 8]},
+    "integrator": {"spp": 4, "max_depth": 1},
+    "materials": {"m": {"nodes": {"t": {"type": "texture", "file": "checker.pgm", "colorspace": "linear"},
+                                   "d": {"type": "lambert", "color": )" +
+           colour + R"(}}, "output": "d"}},
+    "lights": [{"type": "environment", "radiance": 1}],
+    "shapes": [{"type": "plane", "size": [2, 2], "material": "m"}]
+  })";
+  };
+  write_text(dir / "textured.json", scene(R"({"link": "t.color"})"));
+  write_text(dir / "grey.json", scene("0.5"));
+  ASSERT_EQ(run_ochre("render textured.json -o textured.exr", dir).exit_code, 0);
+  ASSERT_EQ(run_ochre("render grey.json -o grey.exr", dir).exit_code, 0);
+  const ExrImage textured = read_exr(dir / "textured.exr"), grey = read_exr(dir / "grey.exr");
+  double worst = 0.0;
+  for (size_t i = 0; i < 64; ++i)
+    worst = std::max(worst, std::fabs((*textured.find_channel("G"))[i] / (*grey.find_channel("G"))[i] - 1.0));
+  std::printf("minified checker vs grey 0.5: worst per-pixel ratio error %.4f\n", worst);
+  EXPECT_LT(worst, 0.05);
+}
+
+}  // namespace
+}  // namespace ochre::test
