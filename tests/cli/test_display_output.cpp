@@ -4,6 +4,7 @@
 
 #include "cli/cli_runner.h"
 #include "renderer/display_image.h"
+#include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -66,6 +67,41 @@ TEST(DisplayOutput, MissingConfigIsBadInput) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("/no/such/config.ocio"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+}  // namespace
+}  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// --colorspace acescg writes AP1 primaries: the same render's pixels are the Rec.709 ones through
+// the Rec.709 -> ACEScg matrix, and the header says so.
+TEST(ExrOutput, AcesCgWorkingSpace) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", R"({
+    "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [4, 4]}, "integrator": {"spp": 16, "max_depth": 1},
+    "materials": {"m": {"type": "lambert", "color": [0.6, 0.3, 0.1]}},
+    "lights": [{"type": "environment", "radiance": [1, 1, 1]}],
+    "shapes": [{"type": "plane", "size": [4, 4], "material": "m"}]})");
+  ASSERT_EQ(run_ochre("render scene.json -o rec709.exr", dir).exit_code, 0);
+  ASSERT_EQ(run_ochre("render scene.json -o acescg.exr --colorspace acescg", dir).exit_code, 0);
+  const ExrImage a = read_exr(dir / "rec709.exr"), b = read_exr(dir / "acescg.exr");
+  ASSERT_TRUE(b.chromaticities.has_value());
+  EXPECT_NEAR(b.chromaticities->red[0], 0.713f, 1e-3f);  // AP1 red x
+  EXPECT_NEAR(b.chromaticities->white[0], 0.32168f, 1e-4f);
+  ASSERT_TRUE(a.chromaticities.has_value());
+  EXPECT_NEAR(a.chromaticities->red[0], 0.64f, 1e-3f);
+  // Rec.709 -> ACEScg (Bradford D65 -> ACES white), rows as in the OCIO reference.
+  const double m[3][3] = {{0.6131, 0.3395, 0.0474}, {0.0702, 0.9164, 0.0134}, {0.0206, 0.1096, 0.8698}};
+  const char* names[3] = {"R", "G", "B"};
+  for (size_t i = 0; i < 16; ++i)
+    for (int r = 0; r < 3; ++r) {
+      double expected = 0.0;
+      for (int c = 0; c < 3; ++c) expected += m[r][c] * (*a.find_channel(names[c]))[i];
+      EXPECT_NEAR((*b.find_channel(names[r]))[i], expected, 1e-3) << i << " " << r;
+    }
 }
 
 }  // namespace
