@@ -14,6 +14,7 @@
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/spectrum_json.h"
+#include "renderer/spot_light.h"
 #include "renderer/transform.h"
 
 namespace ochre {
@@ -227,6 +228,21 @@ void load_shapes(const nlohmann::json& root, const std::string& file, Scene& sce
     scene.meshes.push_back(load_shape(JsonFields(shapes[i], fmt::format("{}: shapes[{}]", file, i)), scene));
 }
 
+std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
+  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity"});
+  const Vec3 position = f.required_vec3("position");
+  if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
+  const char* aim = f.has("direction") ? "direction" : "target";
+  const Vec3 direction =
+      f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
+  if (!(length(direction) > 0.0f)) f.fail(aim, "gives no direction");
+  const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
+  const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
+  return std::make_unique<SpotLight>(
+      position, direction, static_cast<float>(cone), static_cast<float>(falloff),
+      parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+}
+
 void load_lights(const nlohmann::json& root, const std::string& file, Scene& scene, float scene_radius) {
   if (!root.contains("lights")) return;
   const nlohmann::json& lights = root["lights"];
@@ -248,11 +264,13 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
       scene.lights.push_back(std::make_unique<PointLight>(
           f.required_vec3("position"),
           parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir)));
+    } else if (type == "spot") {
+      scene.lights.push_back(load_spot_light(f, dir));
     } else {
-      f.fail(
-          "type",
-          fmt::format("unknown light type '{}' (known: environment, point; emissive shapes are area lights)",
-                      type));
+      f.fail("type",
+             fmt::format(
+                 "unknown light type '{}' (known: environment, point, spot; emissive shapes are area lights)",
+                 type));
     }
   }
 }

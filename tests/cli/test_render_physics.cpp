@@ -207,3 +207,40 @@ TEST(Textures, MinifiedTextureIsFiltered) {
 
 }  // namespace
 }  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// A spot light straight above a Lambert plane: inside the inner cone the plane shows the point-light
+// value rho/pi I cos/r^2, outside the outer cone it is black, and in between it falls off smoothly.
+TEST(AnalyticDirectLighting, SpotLightCone) {
+  const double rho = 0.5, I = 10.0, h = 1.0;
+  const LuminanceImage img = render_luminance(fmt::format(R"({{
+    "camera": {{"type": "orthographic", "size": 0.125, "eye": [0, 0, 5], "target": [0, 0, 0]}},
+    "film": {{"resolution": [64, 2]}},
+    "integrator": {{"spp": 1024, "max_depth": 1}},
+    "materials": {{"m": {{"type": "lambert", "color": {}}}}},
+    "lights": [{{"type": "spot", "position": [0, 0, {}], "target": [0, 0, 0], "cone_angle": 45,
+                "falloff_start": 30, "intensity": {}}}],
+    "shapes": [{{"type": "plane", "size": [10, 10], "material": "m"}}]
+  }})",
+                                                          rho, h, I));
+  ASSERT_EQ(img.width, 64);
+  for (int i = 0; i < 64; ++i) {
+    // Pixel centre on the plane: the film is 4 x 0.125 world units, row 0 at y = 0.03125.
+    const double x = (i + 0.5) / 64 * 4 - 2, y = 0.03125;
+    const double angle = std::atan(std::sqrt(x * x + y * y) / h) * 180 / M_PI;
+    const double r2 = x * x + y * y + h * h;
+    const double point = rho / M_PI * I * (h / std::sqrt(r2)) / r2;
+    if (angle < 28) {
+      EXPECT_NEAR(img.at(i, 0), point, 0.01 * point) << "inside, x = " << x;
+    } else if (angle > 46) {
+      EXPECT_EQ(img.at(i, 0), 0.0) << "outside, x = " << x;
+    } else if (angle > 32 && angle < 43) {
+      EXPECT_LT(img.at(i, 0), point) << "falloff, x = " << x;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ochre::test

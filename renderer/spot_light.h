@@ -1,0 +1,30 @@
+#pragma once
+// Spot light: a point light whose intensity I(lambda) is confined to a cone. Full intensity inside
+// `falloff_start` (half-angle), a smoothstep down to zero at `cone_angle` (half-angle), nothing
+// outside (pbrt-v4's spotlight profile).
+
+#include "renderer/light.h"
+#include "spectra/spectrum.h"
+
+namespace ochre {
+
+class SpotLight final : public Light {
+ public:
+  // Angles are half-angles in degrees, 0 < falloff_start <= cone_angle <= 180.
+  SpotLight(const Vec3& position, const Vec3& direction, float cone_angle_deg, float falloff_start_deg,
+            SpectrumPtr intensity);
+  std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
+                                    const SampledWavelengths& lambda) const override;
+  float power() const override;
+  bool is_delta() const override { return true; }
+
+  // Angular profile in [0, 1] for a direction leaving the light.
+  float profile(const Vec3& direction) const;
+
+ private:
+  Vec3 position_, direction_;
+  float cos_cone_, cos_falloff_;
+  SpectrumPtr intensity_;
+};
+
+}  // namespace ochre
