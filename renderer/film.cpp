@@ -30,11 +30,56 @@ void Film::add_sample(int x, int y, const XYZ& xyz) {
   ++p.count;
 }
 
+void Film::enable_aovs() {
+  aovs_.assign(pixels_.size(), AovPixel{});
+}
+
+void Film::add_aov_sample(int x, int y, const XYZ& albedo, const Vec3f& normal, float depth) {
+  AovPixel& a = aovs_[index(x, y)];
+  a.albedo[0] += to_fixed(albedo.x);
+  a.albedo[1] += to_fixed(albedo.y);
+  a.albedo[2] += to_fixed(albedo.z);
+  a.normal[0] += to_fixed(normal.x);
+  a.normal[1] += to_fixed(normal.y);
+  a.normal[2] += to_fixed(normal.z);
+  if (depth > 0.0f) {
+    a.depth += to_fixed(depth);
+    ++a.hits;
+  }
+}
+
+XYZ Film::mean_albedo(int x, int y) const {
+  const AovPixel& a = aovs_[index(x, y)];
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[index(x, y)].count));
+  return {static_cast<float>(from_fixed(a.albedo[0]) / n), static_cast<float>(from_fixed(a.albedo[1]) / n),
+          static_cast<float>(from_fixed(a.albedo[2]) / n)};
+}
+
+Vec3f Film::mean_normal(int x, int y) const {
+  const AovPixel& a = aovs_[index(x, y)];
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[index(x, y)].count));
+  return {static_cast<float>(from_fixed(a.normal[0]) / n), static_cast<float>(from_fixed(a.normal[1]) / n),
+          static_cast<float>(from_fixed(a.normal[2]) / n)};
+}
+
+float Film::mean_depth(int x, int y) const {
+  const AovPixel& a = aovs_[index(x, y)];
+  return a.hits ? static_cast<float>(from_fixed(a.depth) / static_cast<double>(a.hits)) : 0.0f;
+}
+
 void Film::merge(const Film& other) {
   for (size_t i = 0; i < pixels_.size(); ++i) {
     for (int c = 0; c < 3; ++c) pixels_[i].xyz[c] += other.pixels_[i].xyz[c];
     pixels_[i].y2 += other.pixels_[i].y2;
     pixels_[i].count += other.pixels_[i].count;
+  }
+  for (size_t i = 0; i < aovs_.size() && i < other.aovs_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      aovs_[i].albedo[c] += other.aovs_[i].albedo[c];
+      aovs_[i].normal[c] += other.aovs_[i].normal[c];
+    }
+    aovs_[i].depth += other.aovs_[i].depth;
+    aovs_[i].hits += other.aovs_[i].hits;
   }
 }
 

@@ -15,6 +15,10 @@
 
 namespace ochre {
 
+struct Vec3f {
+  float x = 0, y = 0, z = 0;
+};
+
 class Film {
  public:
   Film(int width, int height);
@@ -24,6 +28,16 @@ class Film {
 
   // Adds one sample's XYZ (already divided by the wavelength pdfs) to pixel (x, y).
   void add_sample(int x, int y, const XYZ& xyz);
+  // AOVs (albedo, shading normal, depth at the first hit) cost memory: only when asked for.
+  void enable_aovs();
+  bool has_aovs() const { return !aovs_.empty(); }
+  // Adds one sample's first-hit values (the sample is also added with add_sample).
+  void add_aov_sample(int x, int y, const XYZ& albedo, const Vec3f& normal, float depth);
+  // Means: albedo (XYZ) and normal over all samples, depth over the samples that hit something.
+  XYZ mean_albedo(int x, int y) const;
+  Vec3f mean_normal(int x, int y) const;
+  float mean_depth(int x, int y) const;
+
   // Adds the sums of another film over the same pixels (a disjoint sample range).
   void merge(const Film& other);
 
@@ -34,6 +48,12 @@ class Film {
   double variance_y(int x, int y) const;
 
  private:
+  struct AovPixel {
+    __int128 albedo[3] = {0, 0, 0};
+    __int128 normal[3] = {0, 0, 0};
+    __int128 depth = 0;
+    uint64_t hits = 0;
+  };
   struct Pixel {
     __int128 xyz[3] = {0, 0, 0};
     __int128 y2 = 0;
@@ -43,6 +63,7 @@ class Film {
 
   int width_, height_;
   std::vector<Pixel> pixels_;
+  std::vector<AovPixel> aovs_;
 };
 
 }  // namespace ochre

@@ -29,6 +29,17 @@ Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo) {
   return Frame::from_normal(ns);
 }
 
+void record_first_hit(const PathVertex& v, float distance, const SampledWavelengths& lambda, FirstHit& out) {
+  out.hit = true;
+  out.depth = distance;
+  out.normal = v.frame.n;
+  out.albedo = SampledSpectrum(0.0f);
+  for (int i = 0; i < v.closure.lobe_count(); ++i) {
+    const WeightedLobe& l = v.closure.lobe(i);
+    out.albedo += l.weight * l.lobe->albedo_hint(v.wo_local, lambda);
+  }
+}
+
 }  // namespace
 
 SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledWavelengths& lambda,
@@ -64,7 +75,7 @@ SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledW
 
 SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& cone,
                                          const SampledWavelengths& lambda, const IndependentSampler& sampler,
-                                         LobeArena& arena, PathStats& stats) const {
+                                         LobeArena& arena, PathStats& stats, FirstHit* first_hit) const {
   const RenderSettings& settings = scene_.settings;
   SampledSpectrum L(0.0f), beta(1.0f);
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
@@ -118,6 +129,7 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
     v.ng = dot(v.sp.ng, wo) < 0.0f ? -v.sp.ng : v.sp.ng;
     v.frame = shading_frame(v.sp, v.ng, wo);
     v.wo_local = v.frame.to_local(wo);
+    if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
     if (v.closure.has_non_delta_lobes() && !scene_.lights.empty())
       L += beta * direct_light(v, lambda, sampler, depth, stats);

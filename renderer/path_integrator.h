@@ -11,6 +11,14 @@
 
 namespace ochre {
 
+// What the camera ray saw first, for the AOV layers of the EXR (albedo, normal, depth).
+struct FirstHit {
+  bool hit = false;
+  SampledSpectrum albedo;  // sum of lobe weights x directional albedo estimates
+  Vec3 normal;             // world-space shading normal, facing the camera
+  float depth = 0.0f;      // distance along the camera ray
+};
+
 struct PathStats {
   uint64_t rays = 0;         // camera + continuation rays (rtcIntersect1)
   uint64_t shadow_rays = 0;  // rtcOccluded1
@@ -23,7 +31,8 @@ class PathIntegrator {
   // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`. `cone` is
   // the camera ray's footprint, used to filter textures.
   SampledSpectrum radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
-                           const IndependentSampler& sampler, LobeArena& arena, PathStats& stats) const;
+                           const IndependentSampler& sampler, LobeArena& arena, PathStats& stats,
+                           FirstHit* first_hit = nullptr) const;
 
  private:
   // Next-event estimation at a surface point: one light sample, MIS-weighted.

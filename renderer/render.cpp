@@ -22,6 +22,16 @@ struct TileCounters {
   std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0};
 };
 
+// First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
+void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWavelengths& lambda) {
+  static const SpectrumPtr white = d65();
+  XYZ albedo{0, 0, 0};
+  if (first.hit) albedo = sampled_to_xyz(first.albedo * white->sample(lambda), lambda);
+  if (!std::isfinite(albedo.x) || !std::isfinite(albedo.y) || !std::isfinite(albedo.z)) albedo = {0, 0, 0};
+  film.add_aov_sample(x, y, albedo, {first.normal.x, first.normal.y, first.normal.z},
+                      first.hit ? first.depth : 0.0f);
+}
+
 void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
                  TileCounters& counters, const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
@@ -40,7 +50,10 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
         const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
-        const SampledSpectrum L = integrator.radiance(ray, cone, lambda, sampler, arena, stats);
+        FirstHit first;
+        const SampledSpectrum L =
+            integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
+        if (film.has_aovs()) add_aovs(film, x, y, first, lambda);
         XYZ xyz = sampled_to_xyz(L, lambda);
         if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z)) {
           xyz = {0, 0, 0};  // never written: counted, contributes zero

@@ -21,6 +21,32 @@ DisplayOptions display_options(const OutputSettings& o) {
   d.exposure_stops = o.exposure;
   return d;
 }
+// Layers "albedo.R/G/B" (working space), "normal.X/Y/Z" (world), "depth.Z" (distance along the camera
+// ray, 0 where nothing was hit) and "samples.Y" (samples per pixel).
+void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage& image) {
+  const ColorSpace space = parse_color_space(colorspace);
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::vector<std::vector<float>> c(8, std::vector<float>(n));
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const size_t i = static_cast<size_t>(y) * film.width() + x;
+      const RGB albedo = xyz_to_rgb(film.mean_albedo(x, y), space);
+      const Vec3f normal = film.mean_normal(x, y);
+      const float values[8] = {albedo.r,
+                               albedo.g,
+                               albedo.b,
+                               normal.x,
+                               normal.y,
+                               normal.z,
+                               film.mean_depth(x, y),
+                               static_cast<float>(film.sample_count(x, y))};
+      for (int k = 0; k < 8; ++k) c[k][i] = values[k];
+    }
+  const char* names[8] = {"albedo.R", "albedo.G", "albedo.B", "normal.X",
+                          "normal.Y", "normal.Z", "depth.Z",  "samples.Y"};
+  for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
+}
+
 }  // namespace
 
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
@@ -69,6 +95,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
       for (size_t i = 0; i < n; ++i) channel[i] = rgb[i * 3 + c];
       image.channels.emplace_back(names[c], std::move(channel));
     }
+    if (film.has_aovs()) add_aov_channels(film, outputs.colorspace, image);
     image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
     image.string_attributes["software"] = "ochre 0.1.0";
     image.string_attributes["ochre.scene"] = scene_file;

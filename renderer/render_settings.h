@@ -26,6 +26,7 @@ struct OutputSettings {
   std::string ocio_config;            // "" = $OCIO, then the built-in config; "builtin"; "none"; or a path
   std::string display, view;          // OCIO display and view ("" = the config's defaults)
   float exposure = 0.0f;              // stops applied to the display image only
+  bool aovs = false;                  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
 };
 
 }  // namespace ochre

@@ -96,7 +96,7 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
   }
   if (root.contains("output")) {
     const JsonFields f(root["output"], file + ": output");
-    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure"});
+    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs"});
     const std::filesystem::path dir = scene.file.parent_path();
     if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
     if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
@@ -104,6 +104,10 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
     scene.outputs.display = f.string("display", "");
     scene.outputs.view = f.string("view", "");
     scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    if (f.has("aovs")) {
+      if (!f.require("aovs").is_boolean()) f.fail("aovs", "expected true or false");
+      scene.outputs.aovs = f.require("aovs").get<bool>();
+    }
   }
 }
 

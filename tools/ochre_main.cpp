@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
                      ->check(CLI::IsMember({"rec709", "acescg"}));
   auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops");
   render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
+  render->add_flag("--aovs", cmd.aovs, "Add albedo, normal, depth and sample-count layers to the EXR");
 
   try {
     app.parse(argc, argv);

@@ -53,12 +53,14 @@ int render_scene(const RenderCommand& command) {
   if (command.view) out.view = *command.view;
   if (command.colorspace) out.colorspace = *command.colorspace;
   if (command.exposure) out.exposure = *command.exposure;
+  if (command.aovs) out.aovs = true;
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);
 
   if (!command.quiet) print_summary(*scene);
   Film film(scene->settings.width, scene->settings.height);
+  if (out.aovs && !out.exr.empty()) film.enable_aovs();
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   ProgressReporter progress("render", total, std::cerr, command.quiet ? false : stderr_is_terminal());

@@ -16,6 +16,7 @@ struct RenderCommand {
   std::optional<std::string> ocio_config, display, view, colorspace;
   std::optional<float> exposure;
   bool quiet = false;
+  bool aovs = false;
 };
 
 int run_render(const RenderCommand& command);

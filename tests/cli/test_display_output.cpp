@@ -106,3 +106,37 @@ TEST(ExrOutput, AcesCgWorkingSpace) {
 
 }  // namespace
 }  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// --aovs adds first-hit layers: a 0.5 Lambert plane seen straight down from 5 units has albedo 0.5,
+// normal +z, depth 5 and spp samples per pixel.
+TEST(ExrOutput, AovLayers) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", R"({
+    "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [4, 4]}, "integrator": {"spp": 8, "max_depth": 1},
+    "materials": {"m": {"type": "lambert", "color": 0.5}},
+    "lights": [{"type": "environment", "radiance": 1}],
+    "shapes": [{"type": "plane", "size": [4, 4], "material": "m"}]})");
+  ASSERT_EQ(run_ochre("render scene.json -o out.exr --aovs", dir).exit_code, 0);
+  const ExrImage exr = read_exr(dir / "out.exr");
+  for (const char* name :
+       {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z", "samples.Y"})
+    ASSERT_NE(exr.find_channel(name), nullptr) << name;
+  for (size_t i = 0; i < 16; ++i) {
+    // Albedo: grey 0.5 under D65, through the spectral estimator (4 wavelengths x 8 samples).
+    EXPECT_NEAR((*exr.find_channel("albedo.G"))[i], 0.5, 0.05);
+    EXPECT_NEAR((*exr.find_channel("normal.Z"))[i], 1.0, 1e-6);
+    EXPECT_NEAR((*exr.find_channel("normal.X"))[i], 0.0, 1e-6);
+    EXPECT_NEAR((*exr.find_channel("depth.Z"))[i], 5.0, 1e-5);
+    EXPECT_EQ((*exr.find_channel("samples.Y"))[i], 8.0f);
+  }
+  // Without the flag, no AOV layer is written (no cost a scene does not need).
+  ASSERT_EQ(run_ochre("render scene.json -o plain.exr", dir).exit_code, 0);
+  EXPECT_EQ(read_exr(dir / "plain.exr").find_channel("depth.Z"), nullptr);
+}
+
+}  // namespace
+}  // namespace ochre::test
