@@ -1,36 +1,106 @@
 #include "renderer/environment_light.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <stdexcept>
 
 #include "materials/sampling.h"
+#include "renderer/spectrum_json.h"
 #include "spectra/cie.h"
+#include "spectra/rgb_to_spectrum_table.h"
 
 namespace ochre {
 
-EnvironmentLight::EnvironmentLight(SpectrumPtr radiance, float scene_radius)
-    : radiance_(std::move(radiance)), scene_radius_(scene_radius) {}
+EnvironmentLight::EnvironmentLight(SpectrumPtr radiance, float scene_radius, float scale)
+    : radiance_(std::move(radiance)), scene_radius_(scene_radius), scale_(scale) {}
+
+EnvironmentLight::EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, float scene_radius, float scale,
+                                   float rotation_degrees)
+    : map_(std::move(map)), d65_(d65()), scene_radius_(scene_radius), scale_(scale) {
+  const double radians = rotation_degrees * M_PI / 180.0;
+  cos_rotation_ = static_cast<float>(std::cos(radians));
+  sin_rotation_ = static_cast<float>(std::sin(radians));
+}
+
+// map_to_world is the right-handed rotation R_y(angle): (x, z) -> (c x + s z, -s x + c z);
+// world_to_map is its inverse R_y(-angle).
+Vec3 EnvironmentLight::world_to_map(const Vec3& d) const {
+  return {cos_rotation_ * d.x - sin_rotation_ * d.z, d.y, sin_rotation_ * d.x + cos_rotation_ * d.z};
+}
+
+Vec3 EnvironmentLight::map_to_world(const Vec3& d) const {
+  return {cos_rotation_ * d.x + sin_rotation_ * d.z, d.y, -sin_rotation_ * d.x + cos_rotation_ * d.z};
+}
+
+// Exactly RGBIlluminantSpectrum(rgb).sample(lambda) (spectra/rgb_spectrum.cpp) without building the
+// object: m = 2 max(rgb), sigmoid polynomial of rgb / m, times m times D65; then the light's scale.
+SampledSpectrum EnvironmentLight::texel_radiance(const RGB& rgb, const SampledWavelengths& lambda) const {
+  const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
+  if (!(m > 0.0f)) return SampledSpectrum(0.0f);
+  const RGBSigmoidPolynomial poly = RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m});
+  SampledSpectrum s = d65_->sample(lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= m * poly.eval(lambda[i]);
+  return s * scale_;
+}
 
 std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,
                                                     const SampledWavelengths& lambda) const {
   LightSample s;
-  s.wi = sample_uniform_sphere(u);
   s.distance = INFINITY;
-  s.radiance = radiance_->sample(lambda);
-  s.pdf = kUniformSpherePdf;
+  if (!map_) {
+    s.wi = sample_uniform_sphere(u);
+    s.radiance = radiance_->sample(lambda) * scale_;
+    s.pdf = kUniformSpherePdf;
+    return s;
+  }
+  const EnvironmentMap::Sample m = map_->sample(u);
+  if (!(m.pdf > 0.0f)) return std::nullopt;
+  s.wi = map_to_world(m.direction);
+  s.radiance = texel_radiance(m.rgb, lambda);
+  s.pdf = m.pdf;
   return s;
 }
 
 float EnvironmentLight::power() const {
-  // Flux of a uniform radiance field through the scene's bounding sphere (pbrt's estimate).
-  return 4.0f * kPi * kPi * scene_radius_ * scene_radius_ * spectrum_to_xyz(*radiance_).y;
+  // Flux of the radiance field through the scene's bounding sphere (pbrt's estimate):
+  // pi r^2 x (integral of L over the sphere) = 4 pi^2 r^2 x mean luminance.
+  const double mean = map_ ? map_->mean_luminance() : spectrum_to_xyz(*radiance_).y;
+  return static_cast<float>(4.0 * M_PI * M_PI * scene_radius_ * scene_radius_ * mean * scale_);
 }
 
-SampledSpectrum EnvironmentLight::radiance(const Vec3&, const SampledWavelengths& lambda) const {
-  return radiance_->sample(lambda);
+SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda) const {
+  if (!map_) return radiance_->sample(lambda) * scale_;
+  return texel_radiance(map_->lookup(world_to_map(direction)), lambda);
 }
 
-float EnvironmentLight::pdf(const Vec3&) const {
-  return kUniformSpherePdf;
+float EnvironmentLight::pdf(const Vec3& direction) const {
+  if (!map_) return kUniformSpherePdf;
+  return map_->pdf(world_to_map(direction));
+}
+
+std::unique_ptr<EnvironmentLight> make_environment_light(const JsonFields& f,
+                                                         const std::filesystem::path& scene_dir,
+                                                         float scene_radius) {
+  f.check_known({"type", "radiance", "file", "scale", "rotation"});
+  const float scale = static_cast<float>(f.number("scale", 1.0, 0.0));
+  const float rotation = static_cast<float>(f.number("rotation", 0.0));
+  if (f.has("radiance") == f.has("file"))
+    f.fail("", "an environment light needs exactly one of 'radiance' (constant) and 'file' (HDR map)");
+  if (f.has("radiance")) {  // a rotation is accepted and has no effect on a constant
+    return std::make_unique<EnvironmentLight>(
+        parse_spectrum(f.require("radiance"), SpectrumRole::Illuminant, f.child("radiance"), scene_dir),
+        scene_radius, scale);
+  }
+  const std::string file = f.required_string("file");
+  const std::filesystem::path path = scene_dir / file;
+  std::shared_ptr<const EnvironmentMap> map;
+  try {
+    map = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(path));
+  } catch (const std::exception& e) {
+    f.fail("file", fmt::format("cannot read environment map '{}': {}", path.string(), e.what()));
+  }
+  return std::make_unique<EnvironmentLight>(std::move(map), scene_radius, scale, rotation);
 }
 
 }  // namespace ochre

@@ -1,7 +1,23 @@
 #pragma once
-// Constant environment: radiance L(lambda) arriving from every direction at infinity.
-// Sampled uniformly over the sphere (HDR maps with importance sampling come in Backbone II).
+// EnvironmentLight: radiance arriving from every direction at infinity, either
+//   - constant: one spectrum L(lambda), sampled uniformly over the sphere, or
+//   - an HDR lat-long map (environment_map.h): RGB texels (linear Rec.709) turned into illuminant
+//     spectra per lookup (RGBIlluminantSpectrum semantics: sigmoid fit of rgb / (2 max) times 2 max
+//     times D65 at luminance 1), importance sampled in proportion to luminance x sin(theta).
+// Both take a scale (>= 0) that multiplies the radiance. A map also takes a rotation in degrees about
+// the world +y axis, right-handed (counter-clockwise seen from above): with +90, what the map shows
+// along -z (its centre column) appears along -x, and what it shows along +x appears along -z.
+//
+// Scene JSON (make_environment_light):
+//   {"type": "environment", "radiance": <spectrum>, "scale": 1}                 constant
+//   {"type": "environment", "file": "sky.hdr", "scale": 1, "rotation": 0}       map (path relative to the
+//   scene)
 
+#include <filesystem>
+#include <memory>
+
+#include "renderer/environment_map.h"
+#include "renderer/json_fields.h"
 #include "renderer/light.h"
 #include "spectra/spectrum.h"
 
@@ -9,19 +25,41 @@ namespace ochre {
 
 class EnvironmentLight final : public Light {
  public:
-  EnvironmentLight(SpectrumPtr radiance, float scene_radius);
+  // Constant environment.
+  EnvironmentLight(SpectrumPtr radiance, float scene_radius, float scale = 1.0f);
+  // Map environment.
+  EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, float scene_radius, float scale = 1.0f,
+                   float rotation_degrees = 0.0f);
+
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
 
-  // Radiance arriving along -direction (a ray escaping the scene along `direction`).
+  // Radiance arriving along -direction (a ray escaping the scene along `direction`, any length > 0).
   SampledSpectrum radiance(const Vec3& direction, const SampledWavelengths& lambda) const;
   // Solid-angle pdf of sample() producing `direction`.
   float pdf(const Vec3& direction) const;
 
+  const EnvironmentMap* map() const { return map_.get(); }
+
  private:
-  SpectrumPtr radiance_;
+  Vec3 world_to_map(const Vec3& d) const;
+  Vec3 map_to_world(const Vec3& d) const;
+  SampledSpectrum texel_radiance(const RGB& rgb, const SampledWavelengths& lambda) const;
+
+  SpectrumPtr radiance_;  // constant environment (null for a map)
+  std::shared_ptr<const EnvironmentMap> map_;
+  SpectrumPtr d65_;  // the illuminant of map texels
   float scene_radius_;
+  float scale_;
+  float cos_rotation_ = 1.0f, sin_rotation_ = 0.0f;
 };
+
+// Builds the environment light of a scene's "lights" entry: keys "type", "radiance" XOR "file",
+// "scale" (>= 0, default 1), "rotation" (degrees, default 0; maps only). Throws InputError naming
+// the file and the field (unknown key, both or neither of radiance/file, missing or unreadable map).
+std::unique_ptr<EnvironmentLight> make_environment_light(const JsonFields& f,
+                                                         const std::filesystem::path& scene_dir,
+                                                         float scene_radius);
 
 }  // namespace ochre

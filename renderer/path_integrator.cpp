@@ -42,9 +42,9 @@ void record_first_hit(const PathVertex& v, float distance, const SampledWaveleng
 
 }  // namespace
 
+template <class Sampler>
 SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledWavelengths& lambda,
-                                             const IndependentSampler& sampler, uint32_t depth,
-                                             PathStats& stats) const {
+                                             const Sampler& sampler, uint32_t depth, PathStats& stats) const {
   float u_light = 0.0f;
   const size_t index = scene_.light_selection.sample(
       sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
@@ -73,8 +73,9 @@ SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledW
   return f * ls->radiance * (power_heuristic(light_pdf, bsdf_pdf) / light_pdf);
 }
 
+template <class Sampler>
 SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& cone,
-                                         const SampledWavelengths& lambda, const IndependentSampler& sampler,
+                                         const SampledWavelengths& lambda, const Sampler& sampler,
                                          LobeArena& arena, PathStats& stats, FirstHit* first_hit) const {
   const RenderSettings& settings = scene_.settings;
   SampledSpectrum L(0.0f), beta(1.0f);
@@ -159,5 +160,12 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
   }
   return L;
 }
+
+template SampledSpectrum PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                                  const IndependentSampler&, LobeArena&, PathStats&,
+                                                  FirstHit*) const;
+template SampledSpectrum PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                                  const SobolSampler&, LobeArena&, PathStats&,
+                                                  FirstHit*) const;
 
 }  // namespace ochre

@@ -8,6 +8,7 @@
 #include "materials/lobe_arena.h"
 #include "renderer/sampler.h"
 #include "renderer/scene.h"
+#include "renderer/sobol_sampler.h"
 
 namespace ochre {
 
@@ -30,14 +31,17 @@ class PathIntegrator {
 
   // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`. `cone` is
   // the camera ray's footprint, used to filter textures.
+  // Instantiated for IndependentSampler and SobolSampler.
+  template <class Sampler>
   SampledSpectrum radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
-                           const IndependentSampler& sampler, LobeArena& arena, PathStats& stats,
+                           const Sampler& sampler, LobeArena& arena, PathStats& stats,
                            FirstHit* first_hit = nullptr) const;
 
  private:
   // Next-event estimation at a surface point: one light sample, MIS-weighted.
+  template <class Sampler>
   SampledSpectrum direct_light(const struct PathVertex& v, const SampledWavelengths& lambda,
-                               const IndependentSampler& sampler, uint32_t depth, PathStats& stats) const;
+                               const Sampler& sampler, uint32_t depth, PathStats& stats) const;
 
   const Scene& scene_;
 };

@@ -32,6 +32,7 @@ void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWave
                       first.hit ? first.depth : 0.0f);
 }
 
+template <class Sampler>
 void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
                  TileCounters& counters, const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
@@ -45,7 +46,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
     for (int x = tile_x * kTileSize; x < x_end; ++x) {
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       for (uint32_t k = 0; k < s.spp; ++k) {
-        const IndependentSampler sampler(s.seed, pixel_index, s.sample_begin + k);
+        const Sampler sampler(s.seed, pixel_index, s.sample_begin + k);
         const SampledWavelengths lambda =
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
         const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
@@ -86,7 +87,11 @@ RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progr
       tbb::blocked_range<int>(0, tiles_x * tiles_y),
       [&](const tbb::blocked_range<int>& range) {
         for (int t = range.begin(); t != range.end(); ++t)
-          render_tile(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress);
+          if (s.sampler == "sobol")
+            render_tile<SobolSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress);
+          else
+            render_tile<IndependentSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters,
+                                            progress);
       },
       tbb::simple_partitioner());
   RenderStats stats;

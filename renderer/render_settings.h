@@ -15,8 +15,9 @@ struct RenderSettings {
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 3;           // Russian roulette starts after this many bounces
   uint64_t seed = 0;
-  int threads = 0;                    // 0 = all cores
-  std::string polarization = "auto";  // auto | off | intensity | stokes (tracing arrives with issue 4)
+  int threads = 0;                      // 0 = all cores
+  std::string sampler = "independent";  // independent | sobol (padded Owen-scrambled (0,2)-sequences)
+  std::string polarization = "auto";    // auto | off | intensity | stokes (tracing arrives with issue 4)
 };
 
 struct OutputSettings {

@@ -8,6 +8,8 @@
 #include "materials/graph_error.h"
 #include "materials/material_compiler.h"
 #include "materials/resource_resolver.h"
+#include "renderer/control_mesh.h"
+#include "renderer/displacement.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/mesh_import.h"
@@ -15,6 +17,7 @@
 #include "renderer/procedural_shapes.h"
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
+#include "renderer/subdivision.h"
 #include "renderer/transform.h"
 
 namespace ochre {
@@ -85,7 +88,7 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
   }
   if (root.contains("integrator")) {
     const JsonFields f(root["integrator"], file + ": integrator");
-    f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization"});
+    f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization", "sampler"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
@@ -93,6 +96,7 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, 4096));
     s.polarization = f.string("polarization", s.polarization);
+    s.sampler = f.string("sampler", s.sampler);
   }
   if (root.contains("output")) {
     const JsonFields f(root["output"], file + ": output");
@@ -121,6 +125,9 @@ void check_settings(const Scene& scene, const std::string& file) {
   if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
     throw InputError(fmt::format(
         "{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)", file, p));
+  if (s.sampler != "independent" && s.sampler != "sobol")
+    throw InputError(fmt::format("{}: integrator.sampler: unknown sampler '{}' (known: independent, sobol)",
+                                 file, s.sampler));
   const std::string& cs = scene.outputs.colorspace;
   if (cs != "rec709" && cs != "acescg")
     throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
@@ -175,6 +182,30 @@ int material_index(const Scene& scene, const JsonFields& f) {
   f.fail("material", fmt::format("unknown material '{}'", name));
 }
 
+Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world) {
+  MeshImportOptions options;
+  if (f.has("smooth_normals")) options.smooth_normals = f.require("smooth_normals").get<bool>();
+  if (f.has("flip_uv_v")) options.flip_uv_v = f.require("flip_uv_v").get<bool>();
+  if (f.has("displacement"))
+    f.fail("displacement", "needs \"subdivision\" (displacement moves the refined vertices)");
+  return import_mesh(path, to_world, options);
+}
+
+// Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
+// smooth normal (shading normals recomputed).
+Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
+                     const Scene& scene) {
+  const SubdivisionOptions options =
+      parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
+  Mesh mesh = subdivide(import_control_mesh(path, to_world), options);
+  if (f.has("displacement")) {
+    const DisplacementOptions d = parse_displacement(
+        JsonFields(f.require("displacement"), f.child("displacement")), scene.file.parent_path());
+    displace(mesh, d, *scene.textures);
+  }
+  return mesh;
+}
+
 Mesh load_shape(const JsonFields& f, const Scene& scene) {
   const std::string type = f.required_string("type");
   const Transform to_world = f.has("transform")
@@ -182,16 +213,17 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
                                  : Transform::identity();
   Mesh mesh;
   if (type == "mesh") {
-    f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name"});
+    f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name",
+                   "subdivision", "displacement"});
     std::filesystem::path path = f.required_string("file");
     if (path.is_relative()) path = scene.file.parent_path() / path;
-    MeshImportOptions options;
-    if (f.has("smooth_normals")) options.smooth_normals = f.require("smooth_normals").get<bool>();
-    if (f.has("flip_uv_v")) options.flip_uv_v = f.require("flip_uv_v").get<bool>();
     try {
-      mesh = import_mesh(path, to_world, options);
+      mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
+                                  : load_triangles(f, path, to_world);
     } catch (const InputError& e) {
-      f.fail("file", e.what());
+      const std::string what = e.what();
+      if (what.find(f.where()) != std::string::npos) throw;
+      f.fail("file", what);
     }
   } else if (type == "sphere") {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name"});
@@ -256,11 +288,8 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
     const JsonFields f(lights[i], fmt::format("{}: lights[{}]", file, i));
     const std::string type = f.required_string("type");
     if (type == "environment") {
-      f.check_known({"type", "radiance"});
       if (scene.environment) f.fail("type", "only one environment light is allowed");
-      auto env = std::make_unique<EnvironmentLight>(
-          parse_spectrum(f.require("radiance"), SpectrumRole::Illuminant, f.child("radiance"), dir),
-          scene_radius);
+      auto env = make_environment_light(f, dir, scene_radius);
       scene.environment = env.get();
       scene.lights.push_back(std::move(env));
     } else if (type == "point") {
@@ -296,6 +325,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.width) s.width = *o.width;
   if (o.height) s.height = *o.height;
   if (o.polarization) s.polarization = *o.polarization;
+  if (o.sampler) s.sampler = *o.sampler;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ struct SceneOverrides {
   std::optional<uint64_t> seed;
   std::optional<int> width, height;
   std::optional<std::string> polarization;
+  std::optional<std::string> sampler;
 };
 
 std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});

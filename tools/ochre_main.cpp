@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   int threads = -1;
   uint64_t seed = 0;
   float exposure = 0.0f;
-  std::string polarization;
+  std::string polarization, sampler;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
   render->add_option("scene", cmd.scene, "Scene file (JSON, docs/scene-format.md)")->required();
@@ -43,6 +43,8 @@ int main(int argc, char** argv) {
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
   auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
+  auto* sampler_opt = render->add_option("--sampler", sampler, "independent | sobol")
+                          ->check(CLI::IsMember({"independent", "sobol"}));
   auto* ocio_opt = render->add_option(
       "--ocio-config", ocio, "OCIO config path, 'builtin' or 'none' (default: $OCIO, else built-in)");
   auto* display_opt = render->add_option("--display", display, "OCIO display (default: the config's)");
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
   if (*pol_opt) cmd.overrides.polarization = polarization;
+  if (*sampler_opt) cmd.overrides.sampler = sampler;
   if (*res_opt) {
     int w = 0, h = 0;
     if (!parse_resolution(resolution, w, h) || w < 1 || h < 1) {

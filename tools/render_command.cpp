@@ -28,9 +28,9 @@ void print_summary(const Scene& scene) {
   for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
   const RenderSettings& s = scene.settings;
   std::cerr << fmt::format(
-      "ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}\n",
+      "ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
       scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth, scene.meshes.size(), triangles,
-      scene.lights.size(), s.seed);
+      scene.lights.size(), s.seed, s.sampler);
   std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
 }
 

@@ -1,0 +1,146 @@
+// Lat-long environment map: image, direction <-> (u, v) mapping and importance sampling
+// (see environment_map.h for the convention and the formulas).
+
+#include "renderer/environment_map.h"
+
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
+#include <fmt/format.h>
+// OIIO after fmt.
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+
+#include "spectra/color_space.h"
+
+namespace ochre {
+
+namespace {
+
+// Texel luminance Y of linear Rec.709 RGB, with the project's D65 white (RGB (1,1,1) -> Y = 1).
+double luminance(const RGB& rgb) {
+  return rgb_to_xyz(rgb, ColorSpace::LinearRec709).y;
+}
+
+bool is_float_format(OIIO::TypeDesc format) {
+  return format.basetype == OIIO::TypeDesc::HALF || format.basetype == OIIO::TypeDesc::FLOAT ||
+         format.basetype == OIIO::TypeDesc::DOUBLE;
+}
+
+// Solid angle of one texel of row `row`: (2 pi / width) * (cos theta_top - cos theta_bottom).
+double texel_solid_angle(int row, int width, int height) {
+  const double theta0 = M_PI * row / height, theta1 = M_PI * (row + 1) / height;
+  return 2.0 * M_PI / width * (std::cos(theta0) - std::cos(theta1));
+}
+
+}  // namespace
+
+Vec2 direction_to_equirect_uv(const Vec3& direction) {
+  const Vec3 d = normalize(direction);
+  const float phi = std::atan2(d.x, -d.z);
+  const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+  float u = 0.5f + phi * (0.5f / kPi);
+  if (!(u < 1.0f)) u = 0.0f;  // phi = pi (+z) belongs to the seam at u = 0
+  return {std::max(u, 0.0f), std::clamp(theta / kPi, 0.0f, 1.0f)};
+}
+
+Vec3 equirect_uv_to_direction(const Vec2& uv) {
+  const float phi = 2.0f * kPi * (uv.x - 0.5f);
+  const float theta = kPi * uv.y;
+  const float sin_theta = std::sin(theta);
+  return {sin_theta * std::sin(phi), std::cos(theta), -sin_theta * std::cos(phi)};
+}
+
+EnvironmentMap::EnvironmentMap(int width, int height, std::vector<RGB> rgb)
+    : width_(width), height_(height), rgb_(std::move(rgb)) {
+  if (width < 1 || height < 1 || rgb_.size() != static_cast<size_t>(width) * static_cast<size_t>(height))
+    throw std::invalid_argument(
+        fmt::format("environment map: expected {} x {} texels, got {}", width, height, rgb_.size()));
+  std::vector<double> lum(rgb_.size());
+  double total = 0.0;
+  for (int row = 0; row < height; ++row) {
+    double row_sum = 0.0;
+    for (int column = 0; column < width; ++column) {
+      const size_t i = static_cast<size_t>(row) * width + column;
+      for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(rgb_[i][c]))
+          throw std::invalid_argument(fmt::format("texel (column {}, row {}) is not finite", column, row));
+        rgb_[i][c] = std::max(rgb_[i][c], 0.0f);
+      }
+      lum[i] = luminance(rgb_[i]);
+      row_sum += lum[i];
+    }
+    total += row_sum * texel_solid_angle(row, width, height);
+  }
+  mean_luminance_ = total / (4.0 * M_PI);
+
+  // Sampling weights: luminance x sin(theta) is proportional to the texel's power in (u, v) space.
+  double mean_texel = 0.0;
+  for (double l : lum) mean_texel += l;
+  mean_texel /= static_cast<double>(lum.size());
+  const double floor = mean_texel > 0.0 ? 1e-3 * mean_texel : 1.0;
+  for (int row = 0; row < height; ++row) {
+    const double sin_theta = std::sin(M_PI * (row + 0.5) / height);
+    for (int column = 0; column < width; ++column) {
+      double& w = lum[static_cast<size_t>(row) * width + column];
+      w = (w + floor) * sin_theta;
+    }
+  }
+  distribution_ = Distribution2D(lum, width, height);
+}
+
+EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) throw std::runtime_error("no such file");
+  auto input = OIIO::ImageInput::open(path.string());
+  if (!input) throw std::runtime_error(OIIO::geterror());
+  const OIIO::ImageSpec spec = input->spec();
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) throw std::runtime_error("the image is empty");
+  if (!is_float_format(spec.format))
+    throw std::runtime_error(
+        fmt::format("expected a linear HDR image (.hdr or .exr, floating-point pixels), got {} pixels",
+                    spec.format.c_str()));
+  const int channels = spec.nchannels;
+  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw std::runtime_error(input->geterror());
+  std::vector<RGB> rgb(static_cast<size_t>(spec.width) * spec.height);
+  for (size_t i = 0; i < rgb.size(); ++i) {
+    const float* p = &pixels[i * channels];
+    rgb[i] = channels >= 3 ? RGB{p[0], p[1], p[2]} : RGB{p[0], p[0], p[0]};
+  }
+  try {
+    return EnvironmentMap(spec.width, spec.height, std::move(rgb));
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(e.what());
+  }
+}
+
+const RGB& EnvironmentMap::lookup(const Vec3& direction) const {
+  const Vec2 uv = direction_to_equirect_uv(direction);
+  const int column = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
+  const int row = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
+  return texel(column, row);
+}
+
+EnvironmentMap::Sample EnvironmentMap::sample(const Vec2& u) const {
+  const Distribution2D::Sample s = distribution_.sample(u);
+  Sample result;
+  result.direction = equirect_uv_to_direction(s.uv);
+  result.rgb = texel(s.column, s.row);
+  const float sin_theta = std::sin(kPi * s.uv.y);
+  // dw = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv.
+  result.pdf = sin_theta > 0.0f ? s.pdf / (2.0f * kPi * kPi * sin_theta) : 0.0f;
+  return result;
+}
+
+float EnvironmentMap::pdf(const Vec3& direction) const {
+  const Vec3 d = normalize(direction);
+  const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
+  if (!(sin_theta > 0.0f)) return 0.0f;
+  return distribution_.pdf(direction_to_equirect_uv(d)) / (2.0f * kPi * kPi * sin_theta);
+}
+
+}  // namespace ochre
