@@ -16,7 +16,7 @@ struct RenderSettings {
   int rr_depth = 3;           // Russian roulette starts after this many bounces
   uint64_t seed = 0;
   int threads = 0;                      // 0 = all cores
-  std::string sampler = "independent";  // independent | sobol (padded Owen-scrambled (0,2)-sequences)
+  std::string sampler = "sobol";  // independent | sobol (padded Owen-scrambled (0,2)-sequences)
   std::string polarization = "auto";    // auto | off | intensity | stokes (tracing arrives with issue 4)
 };
 

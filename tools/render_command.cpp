@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <optional>
 
 #include "materials/graph_error.h"
 #include "renderer/image_error.h"
@@ -63,11 +64,12 @@ int render_scene(const RenderCommand& command) {
   if (out.aovs && !out.exr.empty()) film.enable_aovs();
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
-  ProgressReporter progress("render", total, std::cerr, command.quiet ? false : stderr_is_terminal());
+  std::optional<ProgressReporter> progress;
+  if (!command.quiet) progress.emplace("render", total, std::cerr, stderr_is_terminal());
   const RenderStats stats = render(*scene, film, [&](uint64_t done) {
-    if (!command.quiet) progress.advance(done);
+    if (progress) progress->advance(done);
   });
-  progress.finish();
+  if (progress) progress->finish();
   if (!command.quiet) print_stats(stats);
 
   for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
