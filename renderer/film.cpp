@@ -67,12 +67,40 @@ float Film::mean_depth(int x, int y) const {
   return a.hits ? static_cast<float>(from_fixed(a.depth) / static_cast<double>(a.hits)) : 0.0f;
 }
 
+void Film::enable_spectral(int bins, float lambda_min, float lambda_max) {
+  spectral_bins_ = bins;
+  lambda_min_ = lambda_min;
+  bin_width_ = (lambda_max - lambda_min) / static_cast<float>(bins);
+  spectral_.assign(pixels_.size() * static_cast<size_t>(bins), 0);
+}
+
+void Film::add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  __int128* bins = &spectral_[index(x, y) * static_cast<size_t>(spectral_bins_)];
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    const float pdf = lambda.pdf()[i];
+    if (!(pdf > 0.0f) || !std::isfinite(L[i])) continue;
+    const int bin = static_cast<int>(std::floor((lambda[i] - lambda_min_) / bin_width_));
+    if (bin < 0 || bin >= spectral_bins_) continue;
+    // E[L(l) 1_bin(l) / pdf(l)] = integral of L over the bin; / width = the bin's mean; / 4 lanes.
+    bins[bin] +=
+        to_fixed(static_cast<double>(L[i]) / (static_cast<double>(pdf) * bin_width_ * kSpectrumSamples));
+  }
+}
+
+float Film::mean_spectral(int x, int y, int bin) const {
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[index(x, y)].count));
+  return static_cast<float>(from_fixed(spectral_[index(x, y) * static_cast<size_t>(spectral_bins_) + bin]) /
+                            n);
+}
+
 void Film::merge(const Film& other) {
   for (size_t i = 0; i < pixels_.size(); ++i) {
     for (int c = 0; c < 3; ++c) pixels_[i].xyz[c] += other.pixels_[i].xyz[c];
     pixels_[i].y2 += other.pixels_[i].y2;
     pixels_[i].count += other.pixels_[i].count;
   }
+  for (size_t i = 0; i < spectral_.size() && i < other.spectral_.size(); ++i)
+    spectral_[i] += other.spectral_[i];
   for (size_t i = 0; i < aovs_.size() && i < other.aovs_.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       aovs_[i].albedo[c] += other.aovs_[i].albedo[c];

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "spectra/color_types.h"
+#include "spectra/sampled_wavelengths.h"
 
 namespace ochre {
 
@@ -37,6 +38,14 @@ class Film {
   XYZ mean_albedo(int x, int y) const;
   Vec3f mean_normal(int x, int y) const;
   float mean_depth(int x, int y) const;
+
+  // Spectral radiance bins (uniform over [lambda_min, lambda_max] nm), only when asked for.
+  void enable_spectral(int bins, float lambda_min, float lambda_max);
+  int spectral_bins() const { return spectral_bins_; }
+  float spectral_bin_centre(int bin) const { return lambda_min_ + (bin + 0.5f) * bin_width_; }
+  // Adds one sample's radiance at its wavelengths: the Monte-Carlo estimate of each bin's mean radiance.
+  void add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda);
+  float mean_spectral(int x, int y, int bin) const;
 
   // Adds the sums of another film over the same pixels (a disjoint sample range).
   void merge(const Film& other);
@@ -64,6 +73,9 @@ class Film {
   int width_, height_;
   std::vector<Pixel> pixels_;
   std::vector<AovPixel> aovs_;
+  std::vector<__int128> spectral_;  // bins per pixel
+  int spectral_bins_ = 0;
+  float lambda_min_ = 0.0f, bin_width_ = 0.0f;
 };
 
 }  // namespace ochre

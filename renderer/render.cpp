@@ -55,6 +55,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
         const SampledSpectrum L =
             integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
         if (film.has_aovs()) add_aovs(film, x, y, first, lambda);
+        if (film.spectral_bins() > 0) film.add_spectral_sample(x, y, L, lambda);
         XYZ xyz = sampled_to_xyz(L, lambda);
         if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z)) {
           xyz = {0, 0, 0};  // never written: counted, contributes zero

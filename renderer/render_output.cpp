@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "renderer/atomic_file.h"
 #include "renderer/display_image.h"
 #include "renderer/exr_writer.h"
@@ -45,6 +47,27 @@ void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage&
   const char* names[8] = {"albedo.R", "albedo.G", "albedo.B", "normal.X",
                           "normal.Y", "normal.Z", "depth.Z",  "samples.Y"};
   for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
+}
+
+// "S0.550,000000nm": the OpenEXR spectral layout of Fichet, Pacanowski & Wilkie (JCGT 2021): Stokes
+// component, a dot, the bin centre with a decimal comma, the unit.
+std::string spectral_channel_name(float centre_nm) {
+  std::string value = fmt::format("{:.6f}", centre_nm);
+  std::replace(value.begin(), value.end(), '.', ',');
+  return "S0." + value + "nm";
+}
+
+void add_spectral_channels(const Film& film, ExrImage& image) {
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  for (int b = 0; b < film.spectral_bins(); ++b) {
+    std::vector<float> channel(n);
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x)
+        channel[static_cast<size_t>(y) * film.width() + x] = film.mean_spectral(x, y, b);
+    image.channels.emplace_back(spectral_channel_name(film.spectral_bin_centre(b)), std::move(channel));
+  }
+  image.string_attributes["spectralLayoutVersion"] = "1.0";
+  image.string_attributes["emissiveUnits"] = "W.m^-2.sr^-1";
 }
 
 }  // namespace
@@ -96,6 +119,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
       image.channels.emplace_back(names[c], std::move(channel));
     }
     if (film.has_aovs()) add_aov_channels(film, outputs.colorspace, image);
+    if (film.spectral_bins() > 0) add_spectral_channels(film, image);
     image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
     image.string_attributes["software"] = "ochre 0.1.0";
     image.string_attributes["ochre.scene"] = scene_file;

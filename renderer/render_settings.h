@@ -15,9 +15,9 @@ struct RenderSettings {
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 3;           // Russian roulette starts after this many bounces
   uint64_t seed = 0;
-  int threads = 0;                      // 0 = all cores
-  std::string sampler = "sobol";  // independent | sobol (padded Owen-scrambled (0,2)-sequences)
-  std::string polarization = "auto";    // auto | off | intensity | stokes (tracing arrives with issue 4)
+  int threads = 0;                    // 0 = all cores
+  std::string sampler = "sobol";      // independent | sobol (padded Owen-scrambled (0,2)-sequences)
+  std::string polarization = "auto";  // auto | off | intensity | stokes (tracing arrives with issue 4)
 };
 
 struct OutputSettings {
@@ -27,7 +27,10 @@ struct OutputSettings {
   std::string ocio_config;            // "" = $OCIO, then the built-in config; "builtin"; "none"; or a path
   std::string display, view;          // OCIO display and view ("" = the config's defaults)
   float exposure = 0.0f;              // stops applied to the display image only
-  bool aovs = false;                  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
+  bool aovs = false;
+  int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
+  float spectral_min = 360.0f,
+        spectral_max = 830.0f;  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
 };
 
 }  // namespace ochre

@@ -100,7 +100,8 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
   }
   if (root.contains("output")) {
     const JsonFields f(root["output"], file + ": output");
-    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs"});
+    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs", "spectral_bins",
+                   "spectral_range"});
     const std::filesystem::path dir = scene.file.parent_path();
     if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
     if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
@@ -108,6 +109,16 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
     scene.outputs.display = f.string("display", "");
     scene.outputs.view = f.string("view", "");
     scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
+    if (f.has("spectral_range")) {
+      const nlohmann::json& r = f.require("spectral_range");
+      if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
+          !(r[0].get<double>() >= 360) || !(r[1].get<double>() <= 830) ||
+          !(r[0].get<double>() < r[1].get<double>()))
+        f.fail("spectral_range", "expected [min, max] nm with 360 <= min < max <= 830");
+      scene.outputs.spectral_min = r[0].get<float>();
+      scene.outputs.spectral_max = r[1].get<float>();
+    }
     if (f.has("aovs")) {
       if (!f.require("aovs").is_boolean()) f.fail("aovs", "expected true or false");
       scene.outputs.aovs = f.require("aovs").get<bool>();

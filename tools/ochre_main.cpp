@@ -53,6 +53,9 @@ int main(int argc, char** argv) {
                      ->check(CLI::IsMember({"rec709", "acescg"}));
   auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops");
   render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
+  render
+      ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")
+      ->check(CLI::Range(1, 471));
   render->add_flag("--aovs", cmd.aovs, "Add albedo, normal, depth and sample-count layers to the EXR");
 
   try {

@@ -55,6 +55,7 @@ int render_scene(const RenderCommand& command) {
   if (command.colorspace) out.colorspace = *command.colorspace;
   if (command.exposure) out.exposure = *command.exposure;
   if (command.aovs) out.aovs = true;
+  if (command.spectral_bins > 0) out.spectral_bins = command.spectral_bins;
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);
@@ -62,6 +63,8 @@ int render_scene(const RenderCommand& command) {
   if (!command.quiet) print_summary(*scene);
   Film film(scene->settings.width, scene->settings.height);
   if (out.aovs && !out.exr.empty()) film.enable_aovs();
+  if (out.spectral_bins > 0 && !out.exr.empty())
+    film.enable_spectral(out.spectral_bins, out.spectral_min, out.spectral_max);
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   std::optional<ProgressReporter> progress;

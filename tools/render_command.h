@@ -17,6 +17,7 @@ struct RenderCommand {
   std::optional<float> exposure;
   bool quiet = false;
   bool aovs = false;
+  int spectral_bins = 0;
 };
 
 int run_render(const RenderCommand& command);

@@ -1,5 +1,6 @@
 // Display output through OpenColorIO from the command line: the built-in config, the no-OCIO
 // fallback, and the ACES cg config of ../shared (skipped when ../shared is absent).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "cli/cli_runner.h"
@@ -136,6 +137,41 @@ TEST(ExrOutput, AovLayers) {
   // Without the flag, no AOV layer is written (no cost a scene does not need).
   ASSERT_EQ(run_ochre("render scene.json -o plain.exr", dir).exit_code, 0);
   EXPECT_EQ(read_exr(dir / "plain.exr").find_channel("depth.Z"), nullptr);
+}
+
+}  // namespace
+}  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// --spectral-bins writes the Fichet et al. layout: S0.<centre>nm channels with a decimal comma and
+// the layout attributes. The camera sees a constant environment of radiance 2: every bin holds 2.
+TEST(ExrOutput, SpectralLayers) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", R"({
+    "camera": {"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [8, 8]}, "integrator": {"spp": 512},
+    "materials": {"m": {"type": "lambert"}},
+    "lights": [{"type": "environment", "radiance": 2}],
+    "shapes": [{"type": "disk", "radius": 0.001, "material": "m", "transform": [{"translate": [0, 0, -100]}]}],
+    "output": {"spectral_range": [400, 720]}})");
+  const CommandResult r = run_ochre("render scene.json -o out.exr --spectral-bins 16", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const ExrImage exr = read_exr(dir / "out.exr");
+  EXPECT_EQ(exr.string_attributes.at("spectralLayoutVersion"), "1.0");
+  EXPECT_EQ(exr.string_attributes.at("emissiveUnits"), "W.m^-2.sr^-1");
+  ASSERT_NE(exr.find_channel("S0.410,000000nm"), nullptr);
+  ASSERT_NE(exr.find_channel("S0.710,000000nm"), nullptr);
+  EXPECT_EQ(exr.find_channel("S0.390,000000nm"), nullptr);
+  for (int b = 0; b < 16; ++b) {
+    const std::string name = fmt::format("S0.{},000000nm", 410 + 20 * b);
+    const std::vector<float>* channel = exr.find_channel(name);
+    ASSERT_NE(channel, nullptr) << name;
+    double mean = 0.0;
+    for (float v : *channel) mean += v / 64.0;
+    EXPECT_NEAR(mean, 2.0, 0.06) << name;
+  }
 }
 
 }  // namespace
