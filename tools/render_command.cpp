@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <iostream>
 #include <optional>
 
@@ -32,6 +33,10 @@ void print_summary(const Scene& scene) {
       "ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
       scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth, scene.meshes.size(), triangles,
       scene.lights.size(), s.seed, s.sampler);
+  std::cerr << fmt::format(
+      "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
+      scene.accel->build_seconds(), scene.accel->memory_bytes() / 1e6,
+      triangles ? static_cast<double>(scene.accel->memory_bytes()) / triangles : 0.0);
   std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
 }
 
@@ -45,7 +50,10 @@ void print_stats(const RenderStats& stats) {
 }
 
 int render_scene(const RenderCommand& command) {
+  const auto load_start = std::chrono::steady_clock::now();
   std::unique_ptr<Scene> scene = load_scene(command.scene, command.overrides);
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
   OutputSettings& out = scene->outputs;
   if (!command.exr.empty()) out.exr = command.exr;
   if (!command.png.empty()) out.png = command.png;
@@ -60,7 +68,10 @@ int render_scene(const RenderCommand& command) {
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);
 
-  if (!command.quiet) print_summary(*scene);
+  if (!command.quiet) {
+    print_summary(*scene);
+    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
+  }
   Film film(scene->settings.width, scene->settings.height);
   if (out.aovs && !out.exr.empty()) film.enable_aovs();
   if (out.spectral_bins > 0 && !out.exr.empty())
