@@ -10,10 +10,12 @@
 
 namespace ochre::test {
 
-CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir) {
+CommandResult run_tool(const std::string& tool, const std::string& args,
+                       const std::filesystem::path& working_dir, bool stdout_only) {
   std::string command;
   if (!working_dir.empty()) command = "cd '" + working_dir.string() + "' && ";
-  command += "OCHRE_PROGRESS=none '" + (bin_dir() / "ochre").string() + "' " + args + " 2>&1";
+  command += "OCHRE_PROGRESS=none '" + (bin_dir() / tool).string() + "' " + args +
+             (stdout_only ? " 2>/dev/null" : " 2>&1");
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

@@ -11,8 +11,14 @@ struct CommandResult {
   std::string output;  // stdout and stderr
 };
 
+// Runs `bin_dir()/TOOL ARGS` in `working_dir` (progress output off). stderr is merged into the
+// output unless `stdout_only`.
+CommandResult run_tool(const std::string& tool, const std::string& args,
+                       const std::filesystem::path& working_dir = {}, bool stdout_only = false);
 // Runs `bin_dir()/ochre ARGS` in `working_dir`.
-CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {});
+inline CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {}) {
+  return run_tool("ochre", args, working_dir);
+}
 
 // Writes `text` to `path` (creating directories).
 void write_text(const std::filesystem::path& path, const std::string& text);

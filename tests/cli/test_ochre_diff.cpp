@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_runner.h"
 #include "renderer/display_image.h"
 #include "renderer/exr_writer.h"
 #include "support/test_paths.h"
@@ -22,17 +23,8 @@ struct DiffResult {
 
 // Runs `ochre-diff ARGS` in dir; stderr is merged into the output unless stdout_only.
 DiffResult run_diff(const std::string& args, const std::filesystem::path& dir, bool stdout_only = false) {
-  const std::string command = "cd '" + dir.string() + "' && '" + (bin_dir() / "ochre-diff").string() + "' " +
-                              args + (stdout_only ? " 2>/dev/null" : " 2>&1");
-  DiffResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  const CommandResult r = run_tool("ochre-diff", args, dir, stdout_only);
+  return {r.exit_code, r.output};
 }
 
 constexpr int kWidth = 16, kHeight = 12;
