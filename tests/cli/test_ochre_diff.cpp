@@ -1,7 +1,6 @@
 // ochre-diff end to end: an image against itself, against perturbed copies (one pixel, +5 % exposure),
 // the heat-map, thresholds and exit codes, bad input.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cmath>

@@ -1,0 +1,111 @@
+// ochre-bench: renderer throughput against raw Embree on the same triangles (docs/tools.md).
+//   ochre-bench [SCENE.json ...] [--spp N] [--threads N] [--seconds S]
+// For each scene: renders it (samples/s, rays/s counting intersect and occlusion queries), then traces
+// random incoherent rays through a plain Embree BVH of the same meshes (renderer/raw_embree_benchmark.h)
+// and prints renderer rays/s / raw rays/s. Exit codes: 0 = done, 2 = bad input or usage.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/film.h"
+#include "renderer/raw_embree_benchmark.h"
+#include "renderer/render.h"
+#include "renderer/scene_loader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The target of DESIGN.md / docs/performance.md: the renderer keeps at least half of raw Embree's rate.
+constexpr double kGoalRatio = 0.5;
+
+struct BenchCommand {
+  std::vector<std::string> scenes;
+  std::optional<uint32_t> spp;
+  int threads = 0;
+  double seconds = 2.0;
+  uint64_t seed = 1;
+};
+
+// scenes/default and scenes/cornell-box of the source tree: beside the executable (build/bin/../..),
+// else the source directory this tool was built from.
+std::vector<std::string> default_scenes() {
+  fs::path root = OCHRE_SOURCE_DIR;
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (!error && fs::exists(exe.parent_path() / ".." / ".." / "scenes" / "default" / "default.json"))
+    root = exe.parent_path() / ".." / "..";
+  return {(root / "scenes" / "default" / "default.json").lexically_normal().string(),
+          (root / "scenes" / "cornell-box" / "cornell-box.json").lexically_normal().string()};
+}
+
+std::string rate(double per_second) {
+  if (per_second >= 1e6) return fmt::format("{:.2f} M/s", per_second / 1e6);
+  return fmt::format("{:.1f} k/s", per_second / 1e3);
+}
+
+// Returns the renderer / raw ratio of one scene.
+double bench_scene(const BenchCommand& cmd, const std::string& file) {
+  ochre::SceneOverrides overrides;
+  overrides.spp = cmd.spp;
+  if (cmd.threads > 0) overrides.threads = cmd.threads;
+  const auto scene = ochre::load_scene(file, overrides);
+  size_t triangles = 0;
+  for (const ochre::Mesh& mesh : scene->meshes) triangles += mesh.triangle_count();
+  fmt::print("{}: {} meshes, {} triangles, {}x{} at {} spp\n", file, scene->meshes.size(), triangles,
+             scene->settings.width, scene->settings.height, scene->settings.spp);
+  std::fflush(stdout);
+
+  ochre::Film film(scene->settings.width, scene->settings.height);
+  const ochre::RenderStats stats = ochre::render(*scene, film);
+  fmt::print("  renderer:  {:.3f} s on {} threads, {} samples/s, {} rays/s ({} intersect + {} occlusion)\n",
+             stats.seconds, stats.threads, rate(stats.samples_per_second()), rate(stats.rays_per_second()),
+             stats.rays, stats.shadow_rays);
+  std::fflush(stdout);
+
+  const ochre::RawEmbreeResult raw =
+      ochre::benchmark_raw_embree(scene->meshes, stats.threads, cmd.seconds, cmd.seed);
+  fmt::print("  raw Embree: {:.3f} s on {} threads, {} rays/s ({} rays, {:.1f} % hit; BVH build {:.3f} s)\n",
+             raw.seconds, raw.threads, rate(raw.rays_per_second()), raw.rays,
+             raw.rays ? 100.0 * raw.hits / raw.rays : 0.0, raw.build_seconds);
+  const double ratio = raw.rays_per_second() > 0 ? stats.rays_per_second() / raw.rays_per_second() : 0.0;
+  fmt::print("  ratio renderer/raw rays/s: {:.1f} % (goal >= {:.0f} %){}\n", 100.0 * ratio,
+             100.0 * kGoalRatio, ratio >= kGoalRatio ? "" : "  BELOW GOAL");
+  return ratio;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ochre-bench: renderer rays/s against raw Embree rays/s on the same geometry"};
+  BenchCommand cmd;
+  uint32_t spp = 0;
+  app.add_option("scenes", cmd.scenes, "Scenes (JSON; default scenes/default and scenes/cornell-box)");
+  auto* spp_opt =
+      app.add_option("--spp", spp, "Samples per pixel (default: the scene's)")->check(CLI::PositiveNumber);
+  app.add_option("--threads", cmd.threads, "Threads for both (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--seconds", cmd.seconds, "Minimum duration of the raw Embree run (default 2)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  if (*spp_opt) cmd.spp = spp;
+  if (cmd.scenes.empty()) cmd.scenes = default_scenes();
+  try {
+    for (const std::string& scene : cmd.scenes) bench_scene(cmd, scene);
+    return 0;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ochre-bench: error: {}\n", e.what());
+    return 2;
+  }
+}
