@@ -7,17 +7,23 @@ namespace ochre {
 PointLight::PointLight(const Vec3& position, SpectrumPtr intensity)
     : position_(position), intensity_(std::move(intensity)) {}
 
-std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&,
-                                              const SampledWavelengths& lambda) const {
-  const Vec3 d = position_ - ref;
+std::optional<LightSample> sample_point_source(const Vec3& position, const Vec3& ref) {
+  const Vec3 d = position - ref;
   const float dist2 = dot(d, d);
   if (!(dist2 > 0.0f)) return std::nullopt;
   LightSample s;
   s.distance = std::sqrt(dist2);
   s.wi = d / s.distance;
-  s.radiance = intensity_->sample(lambda) / dist2;  // inverse-square law
+  s.radiance = SampledSpectrum(1.0f / dist2);  // inverse-square law
   s.pdf = 1.0f;
   s.delta = true;
+  return s;
+}
+
+std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&,
+                                              const SampledWavelengths& lambda) const {
+  auto s = sample_point_source(position_, ref);
+  if (s) s->radiance *= intensity_->sample(lambda);
   return s;
 }
 

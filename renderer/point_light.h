@@ -6,6 +6,10 @@
 
 namespace ochre {
 
+// Direction, distance and inverse-square falloff from `ref` to a point source at `position`
+// (radiance = 1 / distance^2, to be multiplied by the source's intensity). Shared by point and spot lights.
+std::optional<LightSample> sample_point_source(const Vec3& position, const Vec3& ref);
+
 class PointLight final : public Light {
  public:
   PointLight(const Vec3& position, SpectrumPtr intensity);

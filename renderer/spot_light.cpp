@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/point_light.h"
 #include "spectra/cie.h"
 
 namespace ochre {
@@ -25,17 +26,11 @@ float SpotLight::profile(const Vec3& direction) const {
 
 std::optional<LightSample> SpotLight::sample(const Vec3& ref, const Vec2&,
                                              const SampledWavelengths& lambda) const {
-  const Vec3 d = position_ - ref;
-  const float dist2 = dot(d, d);
-  if (!(dist2 > 0.0f)) return std::nullopt;
-  LightSample s;
-  s.distance = std::sqrt(dist2);
-  s.wi = d / s.distance;
-  const float k = profile(-s.wi);
+  auto s = sample_point_source(position_, ref);
+  if (!s) return std::nullopt;
+  const float k = profile(-s->wi);
   if (k <= 0.0f) return std::nullopt;
-  s.radiance = intensity_->sample(lambda) * (k / dist2);
-  s.pdf = 1.0f;
-  s.delta = true;
+  s->radiance *= intensity_->sample(lambda) * k;
   return s;
 }
 
