@@ -79,7 +79,13 @@ int render_scene(const RenderCommand& command) {
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   std::optional<ProgressReporter> progress;
-  if (!command.quiet) progress.emplace("render", total, std::cerr, stderr_is_terminal());
+  if (!command.quiet) {
+    try {
+      progress.emplace("render", total, std::cerr, stderr_is_terminal());
+    } catch (const std::invalid_argument& e) {  // a bad OCHRE_PROGRESS value is bad input, not a crash
+      throw InputError(std::string("OCHRE_PROGRESS: ") + e.what());
+    }
+  }
   const RenderStats stats = render(*scene, film, [&](uint64_t done) {
     if (progress) progress->advance(done);
   });

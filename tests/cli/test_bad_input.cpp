@@ -2,8 +2,11 @@
 // node / parameter at fault, and no output file (an existing file is left untouched).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <iterator>
 
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
@@ -190,6 +193,27 @@ TEST(Cli, HelpExitsZero) {
   const CommandResult r = run_ochre("render --help");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.output.find("--spp"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+TEST(BadInput, UnknownProgressStyle) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", R"({"film": {"resolution": [4, 4]}, "materials": {"g": {"type": "lambert"}},
+    "shapes": [{"type": "plane", "material": "g"}]})");
+  const std::string command = "cd '" + dir.string() + "' && OCHRE_PROGRESS=fancy '" +
+                              (bin_dir() / "ochre").string() +
+                              "' render scene.json -o out.exr > log.txt 2>&1";
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2);
+  std::ifstream log(dir / "log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("OCHRE_PROGRESS"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.exr"));
 }
 
 }  // namespace
