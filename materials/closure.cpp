@@ -41,6 +41,46 @@ SampledSpectrum Closure::eval(const Vec3& wo, const Vec3& wi, const SampledWavel
   return f;
 }
 
+bool Closure::has_polarizing_non_delta_lobes() const {
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta() && lobes_[i].lobe->polarizes()) return true;
+  return false;
+}
+
+MuellerResponse Closure::eval_mueller(const Vec3& wo, const Vec3& wi,
+                                      const SampledWavelengths& lambda) const {
+  if (!has_polarizing_non_delta_lobes()) return depolarizing_response(eval(wo, wi, lambda), wo, wi);
+  MuellerResponse sum;
+  bool have_frames = false;
+  SampledSpectrum depolarized(0.0f);  // depolarizers only add to M00, in any frame
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    if (l.lobe->is_delta()) continue;
+    if (!l.lobe->polarizes()) {
+      depolarized += l.weight * l.lobe->eval(wo, wi, lambda);
+      continue;
+    }
+    MuellerResponse r = l.lobe->eval_mueller(wo, wi, lambda);
+    if (!have_frames) {
+      sum.in_x = r.in_x;
+      sum.out_x = r.out_x;
+      sum.m = r.m * l.weight;
+      have_frames = true;
+      continue;
+    }
+    // Bring this lobe's frames to the common ones: M' = R(out_r -> out) M R(in -> in_r).
+    const Mueller out_rotation = stokes_basis_rotation(wo, r.out_x, sum.out_x);
+    const Mueller in_rotation = stokes_basis_rotation(-wi, sum.in_x, r.in_x);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      const Mueller term = out_rotation * r.m[k] * in_rotation;
+      for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) sum.m[k](row, col) += term(row, col) * l.weight[k];
+    }
+  }
+  for (int k = 0; k < kSpectrumSamples; ++k) sum.m[k](0, 0) += depolarized[k];
+  return sum;
+}
+
 float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
                                  std::array<float, kMaxLobes>& p) const {
   float total = 0.0f;
@@ -88,6 +128,7 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
   if (s->delta) {
     s->weight = s->weight * chosen.weight / pick;
     s->pdf *= pick;
+    if (s->has_mueller) s->mueller.m = s->mueller.m * (chosen.weight / pick);
     return s;
   }
   // One BSDF for MIS: value and pdf of the whole non-delta mixture in the sampled direction.
@@ -95,7 +136,7 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
   if (!(pdf > 0.0f)) return std::nullopt;
   s->pdf = pdf;
   s->weight = eval(wo, s->wi, lambda) * (abs_cos_theta(s->wi) / pdf);
-  s->has_mueller = false;  // polarized mixtures are assembled by the integrator (issue 4)
+  s->has_mueller = false;  // the mixture's Mueller response comes from eval_mueller() when needed
   return s;
 }
 

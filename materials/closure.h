@@ -36,6 +36,11 @@ class Closure {
 
   // Sum of the non-delta lobes' weighted values (no cosine).
   SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
+  // Mueller response of the non-delta lobes (no cosine): their matrices brought to common frames (those
+  // of the first polarizing lobe) and summed; an ideal depolarizer when no non-delta lobe polarizes.
+  // Its M00 equals eval().
+  MuellerResponse eval_mueller(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
+  bool has_polarizing_non_delta_lobes() const;
   // Pdf of sample() producing wi through its non-delta lobes (the one-sample mixture pdf).
   float pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
   // Picks a lobe with probability proportional to its weighted albedo, samples it; for a

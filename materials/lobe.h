@@ -33,14 +33,31 @@ enum LobeFlags : uint32_t {
   kLobePolarizing = 1u << 5,  // eval_mueller() is not a depolarizer
 };
 
+// A Mueller matrix per wavelength together with the two Stokes reference frames it connects, in the
+// local shading frame. `m` maps the Stokes vector of the light arriving at the surface (propagating
+// along -wi, reference x axis `in_x`) to the Stokes vector of the light leaving it (propagating along
+// wo, reference x axis `out_x`). Each x axis is a unit vector perpendicular to its propagation
+// direction d; the frame's y axis is cross(d, x), so (x, y, d) is right-handed (docs/polarization.md).
+// The integrator carries each path segment's frame along the path and rotates it into these axes, so a
+// lobe may pick whatever axes make its matrix simple (e.g. s-polarization for Fresnel reflection).
+struct MuellerResponse {
+  MuellerSpectrum m{};
+  Vec3 in_x;   // reference axis for the incident light (propagating along -wi)
+  Vec3 out_x;  // reference axis for the exiting light (propagating along wo)
+};
+
+// Ideal depolarizer response: only M00 = f; the axes are any perpendiculars (irrelevant to a
+// depolarizer, but kept valid so frame rotations stay well defined).
+MuellerResponse depolarizing_response(const SampledSpectrum& f, const Vec3& wo, const Vec3& wi);
+
 struct LobeSample {
   Vec3 wi;  // sampled direction toward the light, local frame
   SampledSpectrum
       weight;        // f |cos wi| / pdf per wavelength (delta: reflectance of the exit / its probability)
   float pdf = 0.0f;  // solid-angle pdf, or the discrete probability of a delta exit
   bool delta = false;
-  bool has_mueller = false;  // set by polarizing lobes: `mueller` is the exit's matrix times |cos|/pdf
-  MuellerSpectrum mueller{};
+  bool has_mueller = false;  // set by polarizing lobes: `mueller.m` is the exit's matrix times |cos|/pdf
+  MuellerResponse mueller{};
 };
 
 // Local-frame cosine helpers.
@@ -64,11 +81,12 @@ class Lobe {
   // Draws wi. u_choice picks among discrete exits or mixture components; u is for the direction.
   virtual std::optional<LobeSample> sample(const Vec3& wo, float u_choice, const Vec2& u,
                                            const SampledWavelengths& lambda) const = 0;
-  // Mueller matrix per wavelength between the local frames of wo and wi (issue 4 fixes the
-  // frame convention). Default: ideal depolarizer, correct for every non-polarizing lobe.
-  virtual MuellerSpectrum eval_mueller(const Vec3& wo, const Vec3& wi,
+  // Mueller matrix per wavelength (without the cosine) with its reference frames, see
+  // MuellerResponse. Its M00 equals eval(). Default: ideal depolarizer, correct for every
+  // non-polarizing lobe.
+  virtual MuellerResponse eval_mueller(const Vec3& wo, const Vec3& wi,
                                        const SampledWavelengths& lambda) const {
-    return depolarizer(eval(wo, wi, lambda));
+    return depolarizing_response(eval(wo, wi, lambda), wo, wi);
   }
   // Directional albedo estimate used to choose among lobes (need not be exact).
   virtual SampledSpectrum albedo_hint(const Vec3& wo, const SampledWavelengths& lambda) const = 0;

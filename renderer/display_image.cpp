@@ -46,6 +46,18 @@ std::vector<std::uint8_t> quantize(const std::vector<float>& encoded) {
   return pixels;
 }
 
+const char* format_for_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".png") return "png";
+  if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
+  throw ImageError(
+      fmt::format("cannot write {}: unknown display image extension '{}' (expected .png, .jpg or .jpeg)",
+                  path.string(), extension));
+}
+
+}  // namespace
+
 void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description) {
   const std::string file = path.string();
@@ -63,18 +75,6 @@ void write_rgb8(const std::filesystem::path& path, const char* format, int width
   }
   atomic.commit();
 }
-
-const char* format_for_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".png") return "png";
-  if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
-  throw ImageError(
-      fmt::format("cannot write {}: unknown display image extension '{}' (expected .png, .jpg or .jpeg)",
-                  path.string(), extension));
-}
-
-}  // namespace
 
 std::uint8_t quantize_unorm8(float v) {
   if (!(v > 0.0f)) return 0;

@@ -55,6 +55,10 @@ DisplayTransformReport write_display_image(const std::filesystem::path& path, in
 
 // Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
 // Throws ImageError naming the file.
+// Writes 8-bit RGB pixels (already display-encoded) atomically; format is an OIIO format name ("png").
+void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
+                const std::vector<std::uint8_t>& pixels, const std::string& description);
+
 std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height);
 
 }  // namespace ochre

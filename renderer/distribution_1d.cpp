@@ -14,12 +14,38 @@ Distribution1D::Distribution1D(const std::vector<double>& weights)
     cdf_[i] /= total_;
   }
   cdf_.back() = 1.0;
+  // One bucket per item: the buckets then hold about one CDF step each.
+  const size_t buckets = weights.size();
+  guide_.resize(buckets + 1);
+  for (size_t k = 0; k <= buckets; ++k)
+    guide_[k] = static_cast<uint32_t>(upper_index(static_cast<double>(k) / buckets));
+}
+
+size_t Distribution1D::upper_index(double u) const {
+  return static_cast<size_t>(std::upper_bound(cdf_.begin() + 1, cdf_.end(), u) - cdf_.begin());
 }
 
 size_t Distribution1D::sample(float u, float* u_remapped) const {
-  // First index whose upper CDF bound exceeds u, skipping zero-weight items.
-  const auto it = std::upper_bound(cdf_.begin() + 1, cdf_.end(), static_cast<double>(u));
-  size_t i = std::min(static_cast<size_t>(it - cdf_.begin()) - 1, pmf_.size() - 1);
+  // The item is the one below the first CDF entry above u, skipping zero-weight items. The answer for u lies
+  // between the answers for the bucket bounds either side (one bucket of margin absorbs the rounding of u *
+  // buckets), and the search on that range returns the same first CDF entry above u as a search of the whole
+  // table.
+  if (guide_.empty()) return sample_without_guide(u, u_remapped);  // all weights zero
+  const size_t buckets = guide_.size() - 1;
+  const double scaled = u > 0.0f ? static_cast<double>(u) * static_cast<double>(buckets) : 0.0;
+  const size_t k = std::min(static_cast<size_t>(scaled), buckets - 1);
+  const size_t lo = guide_[k > 0 ? k - 1 : 0];
+  const size_t hi = std::min<size_t>(guide_[std::min(k + 2, buckets)] + 1, cdf_.size());
+  const auto it = std::upper_bound(cdf_.begin() + lo, cdf_.begin() + hi, static_cast<double>(u));
+  return finish_sample(static_cast<size_t>(it - cdf_.begin()), u, u_remapped);
+}
+
+size_t Distribution1D::sample_without_guide(float u, float* u_remapped) const {
+  return finish_sample(upper_index(u), u, u_remapped);
+}
+
+size_t Distribution1D::finish_sample(size_t upper, float u, float* u_remapped) const {
+  size_t i = std::min(upper - 1, pmf_.size() - 1);
   while (pmf_[i] == 0.0f && i > 0) --i;
   if (u_remapped) {
     const double width = cdf_[i + 1] - cdf_[i];

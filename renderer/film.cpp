@@ -71,11 +71,40 @@ void Film::enable_spectral(int bins, float lambda_min, float lambda_max) {
   spectral_bins_ = bins;
   lambda_min_ = lambda_min;
   bin_width_ = (lambda_max - lambda_min) / static_cast<float>(bins);
-  spectral_.assign(pixels_.size() * static_cast<size_t>(bins), 0);
+  allocate_spectral();
 }
 
-void Film::add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda) {
-  __int128* bins = &spectral_[index(x, y) * static_cast<size_t>(spectral_bins_)];
+void Film::allocate_spectral() {
+  spectral_.assign(pixels_.size() * static_cast<size_t>(spectral_bins_ * stokes_components_), 0);
+}
+
+void Film::enable_stokes() {
+  stokes_components_ = 4;
+  stokes_.assign(pixels_.size() * 9, 0);
+  allocate_spectral();
+}
+
+void Film::add_stokes_sample(int x, int y, const std::array<XYZ, 3>& s123) {
+  __int128* s = &stokes_[index(x, y) * 9];
+  for (int c = 0; c < 3; ++c) {
+    s[3 * c + 0] += to_fixed(s123[c].x);
+    s[3 * c + 1] += to_fixed(s123[c].y);
+    s[3 * c + 2] += to_fixed(s123[c].z);
+  }
+}
+
+XYZ Film::mean_stokes(int x, int y, int c) const {
+  const size_t i = index(x, y);
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[i].count));
+  const __int128* s = &stokes_[i * 9 + 3 * static_cast<size_t>(c - 1)];
+  return {static_cast<float>(from_fixed(s[0]) / n), static_cast<float>(from_fixed(s[1]) / n),
+          static_cast<float>(from_fixed(s[2]) / n)};
+}
+
+void Film::add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda,
+                               int component) {
+  __int128* bins =
+      &spectral_[(index(x, y) * stokes_components_ + component) * static_cast<size_t>(spectral_bins_)];
   for (int i = 0; i < kSpectrumSamples; ++i) {
     const float pdf = lambda.pdf()[i];
     if (!(pdf > 0.0f) || !std::isfinite(L[i])) continue;
@@ -87,10 +116,10 @@ void Film::add_spectral_sample(int x, int y, const SampledSpectrum& L, const Sam
   }
 }
 
-float Film::mean_spectral(int x, int y, int bin) const {
+float Film::mean_spectral(int x, int y, int bin, int component) const {
   const double n = std::max<double>(1.0, static_cast<double>(pixels_[index(x, y)].count));
-  return static_cast<float>(from_fixed(spectral_[index(x, y) * static_cast<size_t>(spectral_bins_) + bin]) /
-                            n);
+  const size_t i = (index(x, y) * stokes_components_ + component) * static_cast<size_t>(spectral_bins_) + bin;
+  return static_cast<float>(from_fixed(spectral_[i]) / n);
 }
 
 void Film::merge(const Film& other) {
@@ -101,6 +130,7 @@ void Film::merge(const Film& other) {
   }
   for (size_t i = 0; i < spectral_.size() && i < other.spectral_.size(); ++i)
     spectral_[i] += other.spectral_[i];
+  for (size_t i = 0; i < stokes_.size() && i < other.stokes_.size(); ++i) stokes_[i] += other.stokes_[i];
   for (size_t i = 0; i < aovs_.size() && i < other.aovs_.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       aovs_[i].albedo[c] += other.aovs_[i].albedo[c];

@@ -7,6 +7,7 @@
 // range, merged, gives the same bits as one run (DESIGN.md, film). The rounding error per
 // sample (4.5e-13) is far below anything visible; magnitudes are clamped at 1e15.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -43,9 +44,20 @@ class Film {
   void enable_spectral(int bins, float lambda_min, float lambda_max);
   int spectral_bins() const { return spectral_bins_; }
   float spectral_bin_centre(int bin) const { return lambda_min_ + (bin + 0.5f) * bin_width_; }
-  // Adds one sample's radiance at its wavelengths: the Monte-Carlo estimate of each bin's mean radiance.
-  void add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda);
-  float mean_spectral(int x, int y, int bin) const;
+  // Adds one sample's radiance (Stokes component `component`, 0 = S0) at its wavelengths: the
+  // Monte-Carlo estimate of each bin's mean.
+  void add_spectral_sample(int x, int y, const SampledSpectrum& L, const SampledWavelengths& lambda,
+                           int component = 0);
+  float mean_spectral(int x, int y, int bin, int component = 0) const;
+
+  // Stokes components S1..S3 (S0 is the XYZ above), XYZ-weighted like S0, and per spectral bin when
+  // spectral output is enabled too. Only when asked for.
+  void enable_stokes();
+  bool has_stokes() const { return stokes_components_ == 4; }
+  // Adds one sample's S1, S2, S3 (index 0..2), each XYZ-weighted.
+  void add_stokes_sample(int x, int y, const std::array<XYZ, 3>& s123);
+  // Mean XYZ-weighted Stokes component c in 1..3.
+  XYZ mean_stokes(int x, int y, int c) const;
 
   // Adds the sums of another film over the same pixels (a disjoint sample range).
   void merge(const Film& other);
@@ -73,8 +85,12 @@ class Film {
   int width_, height_;
   std::vector<Pixel> pixels_;
   std::vector<AovPixel> aovs_;
-  std::vector<__int128> spectral_;  // bins per pixel
+  void allocate_spectral();
+
+  std::vector<__int128> spectral_;  // per pixel: components x bins
   int spectral_bins_ = 0;
+  int stokes_components_ = 1;     // 4 with Stokes output
+  std::vector<__int128> stokes_;  // per pixel: S1..S3 x XYZ
   float lambda_min_ = 0.0f, bin_width_ = 0.0f;
 };
 

@@ -27,6 +27,9 @@ class Light {
   // Flux estimate (W-like, luminance-weighted) used to choose among lights.
   virtual float power() const = 0;
   virtual bool is_delta() const { return false; }
+
+  // Transmission axis (world) of a linear polarizer in front of the light (light_polarizer.h), if any.
+  std::optional<Vec3> polarizer_axis;
 };
 
 }  // namespace ochre

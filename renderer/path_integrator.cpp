@@ -40,45 +40,99 @@ void record_first_hit(const PathVertex& v, float distance, const SampledWaveleng
   }
 }
 
+// The lobe response at a vertex in world space, for the throughput policy T. In mode off (and for
+// closures with no polarizing non-delta lobe) only M00 is computed.
+template <class T>
+WorldResponse vertex_response(const PathVertex& v, const Vec3& wo, const Vec3& wi_local,
+                              const SampledWavelengths& lambda, MuellerResponse& storage) {
+  WorldResponse r;
+  r.wo = wo;
+  if (!T::kPolarized || !v.closure.has_polarizing_non_delta_lobes()) {
+    r.f = v.closure.eval(v.wo_local, wi_local, lambda);
+    return r;
+  }
+  storage = v.closure.eval_mueller(v.wo_local, wi_local, lambda);
+  r.m = &storage.m;
+  r.f = m00(storage.m);
+  r.out_x = v.frame.to_world(storage.out_x);
+  r.in_x = v.frame.to_world(storage.in_x);
+  return r;
+}
+
+// The response of a sampled direction (weight = M00 |cos| / pdf already in bs.weight).
+template <class T>
+WorldResponse sampled_response(const PathVertex& v, const Vec3& wo, LobeSample& bs,
+                               const SampledWavelengths& lambda) {
+  WorldResponse r;
+  r.wo = wo;
+  r.f = bs.weight;
+  if (!T::kPolarized) return r;
+  if (bs.delta) {
+    if (!bs.has_mueller) return r;
+  } else {
+    if (!v.closure.has_polarizing_non_delta_lobes()) return r;
+    bs.mueller = v.closure.eval_mueller(v.wo_local, bs.wi, lambda);
+    bs.mueller.m = bs.mueller.m * (abs_cos_theta(bs.wi) / bs.pdf);
+  }
+  r.m = &bs.mueller.m;
+  r.out_x = v.frame.to_world(bs.mueller.out_x);
+  r.in_x = v.frame.to_world(bs.mueller.in_x);
+  return r;
+}
+
+// The camera's Stokes x axis for a ray: the image x axis, made perpendicular to the ray.
+Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
+  const Vec3 right = camera.basis().right;
+  const Vec3 x = right - dir * dot(right, dir);
+  const float len = length(x);
+  return len > 1e-6f ? x / len : Frame::from_normal(dir).s;
+}
+
 }  // namespace
 
-template <class Sampler>
-SampledSpectrum PathIntegrator::direct_light(const PathVertex& v, const SampledWavelengths& lambda,
-                                             const Sampler& sampler, uint32_t depth, PathStats& stats) const {
+template <class Sampler, class T>
+void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
+                                  const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                                  PathStats& stats, SensorStokes& L) const {
   float u_light = 0.0f;
   const size_t index = scene_.light_selection.sample(
       sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
   const float pmf = scene_.light_selection.pmf(index);
-  if (!(pmf > 0.0f)) return SampledSpectrum(0.0f);
+  if (!(pmf > 0.0f)) return;
   const Light& light = *scene_.lights[index];
   const auto ls =
       light.sample(v.sp.p, sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition)), lambda);
-  if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return SampledSpectrum(0.0f);
-  if (dot(ls->wi, v.ng) <= 0.0f) return SampledSpectrum(0.0f);  // reflection lobes only see the front side
+  if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return;
+  if (dot(ls->wi, v.ng) <= 0.0f) return;  // reflection lobes only see the front side
 
   const Vec3 wi_local = v.frame.to_local(ls->wi);
-  const SampledSpectrum f = v.closure.eval(v.wo_local, wi_local, lambda) * abs_cos_theta(wi_local);
-  if (f.is_black()) return SampledSpectrum(0.0f);
+  MuellerResponse storage;
+  const WorldResponse response = vertex_response<T>(v, wo, wi_local, lambda, storage);
+  if (response.f.is_black()) return;
+  const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
+  if (incoming.radiance.is_black()) return;
 
   Ray shadow;
   shadow.origin = offset_ray_origin(v.sp.p, v.ng, ls->wi);
   shadow.dir = ls->wi;
   shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
   ++stats.shadow_rays;
-  if (scene_.accel->occluded(shadow)) return SampledSpectrum(0.0f);
+  if (scene_.accel->occluded(shadow)) return;
 
   const float light_pdf = pmf * ls->pdf;
-  if (ls->delta) return f * ls->radiance / light_pdf;
-  const float bsdf_pdf = v.closure.pdf(v.wo_local, wi_local, lambda);
-  return f * ls->radiance * (power_heuristic(light_pdf, bsdf_pdf) / light_pdf);
+  const float mis =
+      ls->delta ? 1.0f : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+  throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
 }
 
-template <class Sampler>
-SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& cone,
-                                         const SampledWavelengths& lambda, const Sampler& sampler,
-                                         LobeArena& arena, PathStats& stats, FirstHit* first_hit) const {
+template <class Sampler, class T>
+SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
+                                   const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                                   PathStats& stats, FirstHit* first_hit) const {
   const RenderSettings& settings = scene_.settings;
-  SampledSpectrum L(0.0f), beta(1.0f);
+  SensorStokes L{};
+  T beta(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+         T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{});
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
   Vec3 prev_p;
@@ -97,7 +151,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
               scene_.light_pmf(scene_.environment_light) * scene_.environment->pdf(ray.dir);
           w = power_heuristic(prev_pdf, light_pdf);
         }
-        L += beta * scene_.environment->radiance(ray.dir, lambda) * w;
+        beta.receive(IncomingLight{scene_.environment->radiance(ray.dir, lambda) * w, false, {}}, -ray.dir,
+                     L);
       }
       break;
     }
@@ -123,7 +178,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
         const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
         w = power_heuristic(prev_pdf, scene_.light_pmf(light) * area.pdf(prev_p, v.sp.p, v.sp.ng));
       }
-      L += beta * v.closure.emission() * w;
+      const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
+      beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, L);
     }
     if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) break;
 
@@ -133,27 +189,26 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
     if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
     if (v.closure.has_non_delta_lobes() && !scene_.lights.empty())
-      L += beta * direct_light(v, lambda, sampler, depth, stats);
+      direct_light(v, wo, beta, lambda, sampler, depth, stats, L);
 
-    const auto bs =
-        v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
-                         sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
+    auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
+                               sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
     if (!bs || bs->weight.is_black()) break;
     const Vec3 wi = v.frame.to_world(bs->wi);
     if (dot(wi, v.ng) <= 0.0f) break;  // a reflection lobe must leave on the front side
 
-    beta *= bs->weight;
+    beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
     specular = bs->delta;
     prev_pdf = bs->pdf;
     prev_p = v.sp.p;
 
-    // Russian roulette on the path throughput (pbrt's rule).
+    // Russian roulette on the path throughput's unpolarized part M00 (pbrt's rule).
     if (depth + 1 >= static_cast<uint32_t>(settings.rr_depth)) {
-      const float max_beta = beta.max_value();
+      const float max_beta = beta.m00().max_value();
       if (max_beta < 1.0f) {
         const float q = std::max(0.0f, 1.0f - max_beta);
         if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) < q) break;
-        beta /= 1.0f - q;
+        beta.scale(1.0f / (1.0f - q));
       }
     }
     ray = Ray{offset_ray_origin(v.sp.p, v.ng, wi), wi};
@@ -161,11 +216,25 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const RayCone& c
   return L;
 }
 
-template SampledSpectrum PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                                  const IndependentSampler&, LobeArena&, PathStats&,
-                                                  FirstHit*) const;
-template SampledSpectrum PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                                  const SobolSampler&, LobeArena&, PathStats&,
-                                                  FirstHit*) const;
+template <class Sampler>
+SensorStokes PathIntegrator::radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                                      const Sampler& sampler, LobeArena& arena, PathStats& stats,
+                                      FirstHit* first_hit) const {
+  switch (mode_) {
+    case PolarizationMode::kOff:
+      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+    case PolarizationMode::kIntensity:
+      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+    case PolarizationMode::kStokes:
+      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+  }
+  return {};
+}
+
+template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                               const IndependentSampler&, LobeArena&, PathStats&,
+                                               FirstHit*) const;
+template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*) const;
 
 }  // namespace ochre

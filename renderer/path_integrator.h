@@ -1,11 +1,14 @@
 #pragma once
 // Unidirectional spectral path tracer: next-event estimation, multiple importance sampling
 // (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
-// lights handled. Radiance is traced for the 4 hero wavelengths of the path.
+// lights handled. Radiance is traced for the 4 hero wavelengths of the path, carrying the Mueller
+// product of the polarization mode (path_throughput.h): off, intensity or stokes.
 
 #include <cstdint>
 
 #include "materials/lobe_arena.h"
+#include "renderer/path_throughput.h"
+#include "renderer/polarization_mode.h"
 #include "renderer/sampler.h"
 #include "renderer/scene.h"
 #include "renderer/sobol_sampler.h"
@@ -27,23 +30,29 @@ struct PathStats {
 
 class PathIntegrator {
  public:
-  explicit PathIntegrator(const Scene& scene) : scene_(scene) {}
+  PathIntegrator(const Scene& scene, PolarizationMode mode) : scene_(scene), mode_(mode) {}
 
-  // Radiance along `ray` for the path's wavelengths; random numbers come from `sampler`. `cone` is
-  // the camera ray's footprint, used to filter textures.
+  // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
+  // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
+  // `sampler`. `cone` is the camera ray's footprint, used to filter textures.
   // Instantiated for IndependentSampler and SobolSampler.
   template <class Sampler>
-  SampledSpectrum radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
-                           const Sampler& sampler, LobeArena& arena, PathStats& stats,
-                           FirstHit* first_hit = nullptr) const;
+  SensorStokes radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                        const Sampler& sampler, LobeArena& arena, PathStats& stats,
+                        FirstHit* first_hit = nullptr) const;
 
  private:
-  // Next-event estimation at a surface point: one light sample, MIS-weighted.
-  template <class Sampler>
-  SampledSpectrum direct_light(const struct PathVertex& v, const SampledWavelengths& lambda,
-                               const Sampler& sampler, uint32_t depth, PathStats& stats) const;
+  template <class Sampler, class Throughput>
+  SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                     const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit) const;
+  // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L.
+  template <class Sampler, class Throughput>
+  void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
+                    const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                    PathStats& stats, SensorStokes& L) const;
 
   const Scene& scene_;
+  PolarizationMode mode_;
 };
 
 }  // namespace ochre

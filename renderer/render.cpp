@@ -32,6 +32,32 @@ void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWave
                       first.hit ? first.depth : 0.0f);
 }
 
+bool is_finite(const XYZ& c) {
+  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
+
+// Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
+bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda) {
+  XYZ xyz = sampled_to_xyz(S[0], lambda);
+  std::array<XYZ, 3> s123{};
+  bool finite = is_finite(xyz);
+  if (film.has_stokes())
+    for (int c = 0; c < 3; ++c) {
+      s123[c] = sampled_to_xyz(S[c + 1], lambda);
+      finite = finite && is_finite(s123[c]);
+    }
+  if (!finite) {
+    film.add_sample(x, y, {0, 0, 0});
+    if (film.has_stokes()) film.add_stokes_sample(x, y, {});
+    return true;
+  }
+  film.add_sample(x, y, xyz);
+  if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
+  if (film.spectral_bins() > 0)
+    for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);
+  return false;
+}
+
 template <class Sampler>
 void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
                  TileCounters& counters, const ProgressCallback& progress) {
@@ -52,16 +78,10 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
         const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
-        const SampledSpectrum L =
+        const SensorStokes S =
             integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
         if (film.has_aovs()) add_aovs(film, x, y, first, lambda);
-        if (film.spectral_bins() > 0) film.add_spectral_sample(x, y, L, lambda);
-        XYZ xyz = sampled_to_xyz(L, lambda);
-        if (!std::isfinite(xyz.x) || !std::isfinite(xyz.y) || !std::isfinite(xyz.z)) {
-          xyz = {0, 0, 0};  // never written: counted, contributes zero
-          ++discarded;
-        }
-        film.add_sample(x, y, xyz);
+        if (add_sample(film, x, y, S, lambda)) ++discarded;
       }
     }
   }
@@ -74,11 +94,17 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
 
 }  // namespace
 
+PolarizationChoice polarization_for(const Scene& scene) {
+  return choose_polarization_mode(scene.settings.polarization,
+                                  scene.polarizing_materials || scene.polarizing_filters,
+                                  scene.outputs.stokes);
+}
+
 RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
-  const PathIntegrator integrator(scene);
+  const PathIntegrator integrator(scene, polarization_for(scene).mode);
   TileCounters counters;
   const int tiles_x = (s.width + kTileSize - 1) / kTileSize;
   const int tiles_y = (s.height + kTileSize - 1) / kTileSize;

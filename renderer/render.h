@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "renderer/film.h"
+#include "renderer/polarization_mode.h"
 #include "renderer/scene.h"
 
 namespace ochre {
@@ -23,6 +24,9 @@ struct RenderStats {
 
 // Called with the number of pixel-samples finished since the last call (thread-safe use).
 using ProgressCallback = std::function<void(uint64_t)>;
+
+// The polarization mode a render of `scene` uses (settings, scene facts, requested outputs).
+PolarizationChoice polarization_for(const Scene& scene);
 
 // Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film`.
 RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress = {});

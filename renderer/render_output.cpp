@@ -9,6 +9,7 @@
 #include "renderer/exr_writer.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
+#include "renderer/stokes_output.h"
 #include "spectra/color_space.h"
 
 namespace ochre {
@@ -51,21 +52,23 @@ void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage&
 
 // "S0.550,000000nm": the OpenEXR spectral layout of Fichet, Pacanowski & Wilkie (JCGT 2021): Stokes
 // component, a dot, the bin centre with a decimal comma, the unit.
-std::string spectral_channel_name(float centre_nm) {
+std::string spectral_channel_name(int component, float centre_nm) {
   std::string value = fmt::format("{:.6f}", centre_nm);
   std::replace(value.begin(), value.end(), '.', ',');
-  return "S0." + value + "nm";
+  return fmt::format("S{}.{}nm", component, value);
 }
 
 void add_spectral_channels(const Film& film, ExrImage& image) {
   const size_t n = static_cast<size_t>(film.width()) * film.height();
-  for (int b = 0; b < film.spectral_bins(); ++b) {
-    std::vector<float> channel(n);
-    for (int y = 0; y < film.height(); ++y)
-      for (int x = 0; x < film.width(); ++x)
-        channel[static_cast<size_t>(y) * film.width() + x] = film.mean_spectral(x, y, b);
-    image.channels.emplace_back(spectral_channel_name(film.spectral_bin_centre(b)), std::move(channel));
-  }
+  for (int component = 0; component < (film.has_stokes() ? 4 : 1); ++component)
+    for (int b = 0; b < film.spectral_bins(); ++b) {
+      std::vector<float> channel(n);
+      for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
+          channel[static_cast<size_t>(y) * film.width() + x] = film.mean_spectral(x, y, b, component);
+      image.channels.emplace_back(spectral_channel_name(component, film.spectral_bin_centre(b)),
+                                  std::move(channel));
+    }
   image.string_attributes["spectralLayoutVersion"] = "1.0";
   image.string_attributes["emissiveUnits"] = "W.m^-2.sr^-1";
 }
@@ -91,6 +94,7 @@ void check_outputs(const OutputSettings& outputs) {
     if (outputs.exr.empty() && outputs.png.empty())
       throw InputError("no output: give -o OUT.exr and/or --png OUT.png");
     if (!outputs.exr.empty()) check_output_writable(outputs.exr);
+    if (!outputs.polarization_png.empty()) check_output_writable(outputs.polarization_png);
     if (!outputs.png.empty()) {
       check_output_writable(outputs.png);
       // Build the display transform on one pixel now: an unknown config, display or view fails
@@ -120,6 +124,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     }
     if (film.has_aovs()) add_aov_channels(film, outputs.colorspace, image);
     if (film.spectral_bins() > 0) add_spectral_channels(film, image);
+    if (film.has_stokes()) add_stokes_channels(film, image);
     image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
     image.string_attributes["software"] = "ochre 0.1.0";
     image.string_attributes["ochre.scene"] = scene_file;
@@ -132,6 +137,11 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     write_exr(outputs.exr, image);
     written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
                                   image.height));
+  }
+  if (!outputs.polarization_png.empty() && film.has_stokes()) {
+    write_polarization_png(outputs.polarization_png, film);
+    written.push_back(fmt::format("wrote {} (hue: angle, brightness: degree of linear polarization)",
+                                  outputs.polarization_png));
   }
   if (!outputs.png.empty()) {
     const DisplayTransformReport report =

@@ -9,6 +9,7 @@ void Scene::build_lights() {
     if (!material.facts().is_emissive) continue;
     auto light = std::make_unique<AreaLight>(meshes[m], material, textures.get());
     if (light->power() <= 0.0f) continue;
+    if (m < mesh_polarizers.size()) light->polarizer_axis = mesh_polarizers[m];
     mesh_light[m] = static_cast<int>(lights.size());
     lights.push_back(std::move(light));
   }

@@ -3,9 +3,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "materials/compiled_material.h"
+#include "materials/mueller.h"
 #include "renderer/accel.h"
 #include "renderer/area_light.h"
 #include "renderer/camera.h"
@@ -35,8 +37,14 @@ struct Scene {
   const EnvironmentLight* environment = nullptr;
   int environment_light = -1;
 
+  // Linear polarizers: on the camera (Mueller matrix in the camera's Stokes frame: x along the image x
+  // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
+  std::optional<Mueller> camera_analyzer;
+  std::vector<std::optional<Vec3>> mesh_polarizers;
+
   // Facts the integrator uses to model only what the scene needs.
   bool polarizing_materials = false;
+  bool polarizing_filters = false;
   bool needs_uv = false;
 
   // Builds the light list and selection distribution (after meshes and materials exist).

@@ -101,7 +101,7 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
   if (root.contains("output")) {
     const JsonFields f(root["output"], file + ": output");
     f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs", "spectral_bins",
-                   "spectral_range"});
+                   "spectral_range", "stokes", "polarization_png"});
     const std::filesystem::path dir = scene.file.parent_path();
     if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
     if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
@@ -119,6 +119,12 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
       scene.outputs.spectral_min = r[0].get<float>();
       scene.outputs.spectral_max = r[1].get<float>();
     }
+    if (f.has("stokes")) {
+      if (!f.require("stokes").is_boolean()) f.fail("stokes", "expected true or false");
+      scene.outputs.stokes = f.require("stokes").get<bool>();
+    }
+    if (f.has("polarization_png"))
+      scene.outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
     if (f.has("aovs")) {
       if (!f.require("aovs").is_boolean()) f.fail("aovs", "expected true or false");
       scene.outputs.aovs = f.require("aovs").get<bool>();
@@ -144,10 +150,30 @@ void check_settings(const Scene& scene, const std::string& file) {
     throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
 }
 
+// "polarizer": {"axis": [x, y, z]} in front of a light or an emissive shape: the world transmission axis.
+std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {
+  if (!f.has("polarizer")) return std::nullopt;
+  const JsonFields p(f.require("polarizer"), f.child("polarizer"));
+  p.check_known({"axis"});
+  const Vec3 axis = p.required_vec3("axis");
+  if (!(length(axis) > 0.0f)) p.fail("axis", "must be a non-zero vector");
+  return normalize(axis);
+}
+
+// "polarizer": {"angle": degrees} on the camera: a linear analyzer whose transmission axis is turned by
+// `angle` from the image x axis toward the image's up direction (docs/polarization.md).
+std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
+  if (!f.has("polarizer")) return std::nullopt;
+  const JsonFields p(f.require("polarizer"), f.child("polarizer"));
+  p.check_known({"angle"});
+  const double degrees = p.number("angle", 0.0, -360.0, 360.0);
+  return rotated_element(static_cast<float>(degrees * M_PI / 180.0), linear_polarizer());
+}
+
 Camera load_camera(const nlohmann::json& root, const std::string& file, const RenderSettings& s) {
   const nlohmann::json camera = root.contains("camera") ? root["camera"] : nlohmann::json::object();
   const JsonFields f(camera, file + ": camera");
-  f.check_known({"type", "fov", "size", "eye", "target", "up", "transform"});
+  f.check_known({"type", "fov", "size", "eye", "target", "up", "transform", "polarizer"});
   CameraBasis basis;
   if (f.has("transform")) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
@@ -225,7 +251,7 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
   Mesh mesh;
   if (type == "mesh") {
     f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name",
-                   "subdivision", "displacement"});
+                   "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
     if (path.is_relative()) path = scene.file.parent_path() / path;
     try {
@@ -237,12 +263,12 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
       f.fail("file", what);
     }
   } else if (type == "sphere") {
-    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name"});
+    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
     mesh = make_sphere(radius, static_cast<int>(f.integer("subdivisions", 96, 4, 4096)));
     mesh.transform(to_world * Transform::translate(f.vec3("center", {0, 0, 0})));
   } else if (type == "plane") {
-    f.check_known({"type", "size", "material", "transform", "name"});
+    f.check_known({"type", "size", "material", "transform", "name", "polarizer"});
     Vec2 size{2, 2};
     if (f.has("size")) {
       const nlohmann::json& s = f.require("size");
@@ -254,7 +280,7 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     mesh = make_plane(size);
     mesh.transform(to_world);
   } else if (type == "disk") {
-    f.check_known({"type", "radius", "segments", "material", "transform", "name"});
+    f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer"});
     mesh = make_disk(static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true)),
                      static_cast<int>(f.integer("segments", 128, 3, 1 << 20)));
     mesh.transform(to_world);
@@ -271,12 +297,18 @@ void load_shapes(const nlohmann::json& root, const std::string& file, Scene& sce
   if (!root.contains("shapes") || !root["shapes"].is_array())
     throw InputError(fmt::format("{}: shapes: expected an array of shapes", file));
   const nlohmann::json& shapes = root["shapes"];
-  for (size_t i = 0; i < shapes.size(); ++i)
-    scene.meshes.push_back(load_shape(JsonFields(shapes[i], fmt::format("{}: shapes[{}]", file, i)), scene));
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const JsonFields f(shapes[i], fmt::format("{}: shapes[{}]", file, i));
+    scene.meshes.push_back(load_shape(f, scene));
+    scene.mesh_polarizers.push_back(parse_light_polarizer(f));
+    if (scene.mesh_polarizers.back() && !scene.materials[scene.meshes.back().material]->facts().is_emissive)
+      f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+  }
 }
 
 std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
-  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity"});
+  f.check_known(
+      {"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity", "polarizer"});
   const Vec3 position = f.required_vec3("position");
   if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
   const char* aim = f.has("direction") ? "direction" : "target";
@@ -285,9 +317,11 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   if (!(length(direction) > 0.0f)) f.fail(aim, "gives no direction");
   const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
   const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
-  return std::make_unique<SpotLight>(
+  auto light = std::make_unique<SpotLight>(
       position, direction, static_cast<float>(cone), static_cast<float>(falloff),
       parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+  light->polarizer_axis = parse_light_polarizer(f);
+  return light;
 }
 
 void load_lights(const nlohmann::json& root, const std::string& file, Scene& scene, float scene_radius) {
@@ -304,10 +338,12 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
       scene.environment = env.get();
       scene.lights.push_back(std::move(env));
     } else if (type == "point") {
-      f.check_known({"type", "position", "intensity"});
-      scene.lights.push_back(std::make_unique<PointLight>(
+      f.check_known({"type", "position", "intensity", "polarizer"});
+      auto light = std::make_unique<PointLight>(
           f.required_vec3("position"),
-          parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir)));
+          parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+      light->polarizer_axis = parse_light_polarizer(f);
+      scene.lights.push_back(std::move(light));
     } else if (type == "spot") {
       scene.lights.push_back(load_spot_light(f, dir));
     } else {
@@ -354,6 +390,8 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   apply_overrides(overrides, scene->settings);
   check_settings(*scene, file);
   scene->camera = load_camera(root, file, scene->settings);
+  if (root.contains("camera"))
+    scene->camera_analyzer = parse_camera_polarizer(JsonFields(root["camera"], file + ": camera"));
 
   scene->textures = std::make_unique<OiioTextureProvider>();
   try {
@@ -365,6 +403,9 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   const float radius = bounding_radius(scene->meshes);
   load_lights(root, file, *scene, radius);
 
+  scene->polarizing_filters = scene->camera_analyzer.has_value();
+  for (const auto& light : scene->lights) scene->polarizing_filters |= light->polarizer_axis.has_value();
+  for (const auto& p : scene->mesh_polarizers) scene->polarizing_filters |= p.has_value();
   for (const auto& m : scene->materials) {
     scene->polarizing_materials = scene->polarizing_materials || m->facts().polarizes;
     scene->needs_uv = scene->needs_uv || m->facts().needs_uv;

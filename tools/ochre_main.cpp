@@ -57,6 +57,12 @@ int main(int argc, char** argv) {
       ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")
       ->check(CLI::Range(1, 471));
   render->add_flag("--aovs", cmd.aovs, "Add albedo, normal, depth and sample-count layers to the EXR");
+  render->add_flag("--stokes", cmd.stokes,
+                   "Add Stokes layers S0..S3 (XYZ-weighted; per spectral bin with --spectral-bins), DoLP and "
+                   "AoLP to the EXR (polarization mode stokes)");
+  render->add_option("--polarization-png", cmd.polarization_png,
+                     "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
+                     "polarization");
 
   try {
     app.parse(argc, argv);

@@ -19,10 +19,8 @@ namespace {
 
 // "auto" models only what the scene needs (DESIGN.md): off when nothing polarizes.
 std::string polarization_mode(const Scene& scene) {
-  const std::string& requested = scene.settings.polarization;
-  if (requested != "auto") return requested + " (requested)";
-  return scene.polarizing_materials ? "intensity (auto: a material polarizes)"
-                                    : "off (auto: no material polarizes)";
+  const PolarizationChoice choice = polarization_for(scene);
+  return fmt::format("{} ({})", polarization_mode_name(choice.mode), choice.reason);
 }
 
 void print_summary(const Scene& scene) {
@@ -64,6 +62,14 @@ int render_scene(const RenderCommand& command) {
   if (command.exposure) out.exposure = *command.exposure;
   if (command.aovs) out.aovs = true;
   if (command.spectral_bins > 0) out.spectral_bins = command.spectral_bins;
+  if (command.stokes) out.stokes = true;
+  if (!command.polarization_png.empty()) out.polarization_png = command.polarization_png;
+  if (!out.polarization_png.empty()) out.stokes = true;  // DoLP / AoLP need S1, S2
+  if (out.stokes && scene->settings.polarization != "auto" && scene->settings.polarization != "stokes")
+    throw InputError(
+        fmt::format("Stokes output (--stokes, output.stokes or a polarization PNG) needs "
+                    "polarization mode stokes or auto, not '{}'",
+                    scene->settings.polarization));
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);
@@ -76,6 +82,7 @@ int render_scene(const RenderCommand& command) {
   if (out.aovs && !out.exr.empty()) film.enable_aovs();
   if (out.spectral_bins > 0 && !out.exr.empty())
     film.enable_spectral(out.spectral_bins, out.spectral_min, out.spectral_max);
+  if (out.stokes) film.enable_stokes();
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   std::optional<ProgressReporter> progress;

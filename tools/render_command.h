@@ -18,6 +18,8 @@ struct RenderCommand {
   bool quiet = false;
   bool aovs = false;
   int spectral_bins = 0;
+  bool stokes = false;           // Stokes layers in the EXR
+  std::string polarization_png;  // false-colour DoLP / AoLP PNG
 };
 
 int run_render(const RenderCommand& command);
