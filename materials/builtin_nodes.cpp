@@ -22,12 +22,18 @@ NodeDefinition mix_node();
 // Closures.
 NodeDefinition lambert_node();
 NodeDefinition emission_node();
+NodeDefinition conductor_node();
+NodeDefinition dielectric_node();
+NodeDefinition lambert_sphere_node();
+NodeDefinition oren_nayar_node();
+NodeDefinition chandrasekhar_node();
 
 const NodeRegistry& NodeRegistry::builtin() {
   static const NodeRegistry registry = [] {
     NodeRegistry r;
     for (auto make : {constant_node, spectrum_node, rgb_to_spectrum_node, texture_node, vertex_colour_node,
-                      uv_node, add_node, multiply_node, mix_node, lambert_node, emission_node})
+                      uv_node, add_node, multiply_node, mix_node, lambert_node, emission_node, conductor_node,
+                      dielectric_node, lambert_sphere_node, oren_nayar_node, chandrasekhar_node})
       r.add(make());
     return r;
   }();

@@ -26,6 +26,12 @@ bool Closure::has_non_delta_lobes() const {
   return false;
 }
 
+bool Closure::has_transmission() const {
+  for (int i = 0; i < count_; ++i)
+    if (lobes_[i].lobe->flags() & kLobeTransmission) return true;
+  return false;
+}
+
 bool Closure::polarizes() const {
   for (int i = 0; i < count_; ++i)
     if (lobes_[i].lobe->polarizes()) return true;

@@ -33,6 +33,7 @@ class Closure {
   bool has_lobes() const { return count_ > 0; }
   bool has_non_delta_lobes() const;
   bool polarizes() const;
+  bool has_transmission() const;  // some lobe can refract (the surface's two sides differ)
 
   // Sum of the non-delta lobes' weighted values (no cosine).
   SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;

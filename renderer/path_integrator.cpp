@@ -12,7 +12,7 @@ namespace ochre {
 // One scattering vertex of a path: geometry, shading frame and the evaluated closure.
 struct PathVertex {
   SurfacePoint sp;
-  Vec3 ng;  // unit geometric normal on the side of wo
+  Vec3 ng;  // unit geometric normal: on the side of wo, except for refracting closures (the mesh's own)
   Frame frame;
   Vec3 wo_local;
   Closure closure;
@@ -20,12 +20,14 @@ struct PathVertex {
 
 namespace {
 
-// Shading frame around the interpolated normal, flipped to the viewer's side of the surface.
-// Falls back to the geometric normal where the shading normal hides the viewer.
-Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo) {
+// Shading frame around the interpolated normal. For reflection-only closures it is flipped to the
+// viewer's side of the surface (both sides of a mesh reflect alike), falling back to the geometric normal
+// where the shading normal hides the viewer. Refracting closures need to know which side is outside: their
+// frame keeps the mesh's orientation (the geometric normal points outside), so wo may be below it.
+Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo, bool keep_orientation) {
   Vec3 ns = sp.ns;
   if (dot(ns, ng) < 0.0f) ns = -ns;
-  if (dot(ns, wo) <= 0.0f) ns = ng;
+  if (!keep_orientation && dot(ns, wo) <= 0.0f) ns = ng;
   return Frame::from_normal(ns);
 }
 
@@ -103,9 +105,8 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   const auto ls =
       light.sample(v.sp.p, sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition)), lambda);
   if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return;
-  if (dot(ls->wi, v.ng) <= 0.0f) return;  // reflection lobes only see the front side
-
   const Vec3 wi_local = v.frame.to_local(ls->wi);
+  if (dot(ls->wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
   MuellerResponse storage;
   const WorldResponse response = vertex_response<T>(v, wo, wi_local, lambda, storage);
   if (response.f.is_black()) return;
@@ -183,8 +184,9 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     }
     if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) break;
 
-    v.ng = dot(v.sp.ng, wo) < 0.0f ? -v.sp.ng : v.sp.ng;
-    v.frame = shading_frame(v.sp, v.ng, wo);
+    const bool refracts = v.closure.has_transmission();
+    v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
+    v.frame = shading_frame(v.sp, v.ng, wo, refracts);
     v.wo_local = v.frame.to_local(wo);
     if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
@@ -195,7 +197,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
                                sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
     if (!bs || bs->weight.is_black()) break;
     const Vec3 wi = v.frame.to_world(bs->wi);
-    if (dot(wi, v.ng) <= 0.0f) break;  // a reflection lobe must leave on the front side
+    if (dot(wi, v.ng) * bs->wi.z <= 0.0f) break;  // shading and geometric sides disagree: no light leaks
 
     beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
     specular = bs->delta;

@@ -12,6 +12,7 @@
 #include "renderer/displacement.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
+#include "renderer/json_file.h"
 #include "renderer/mesh_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
@@ -41,36 +42,6 @@ class SceneResources final : public ResourceResolver {
   std::filesystem::path dir_;
   OiioTextureProvider& textures_;
 };
-
-// "line L, column C" of a byte offset, for JSON syntax errors.
-std::string line_column(const std::string& text, size_t byte) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return fmt::format("line {}, column {}", line, column);
-}
-
-nlohmann::json read_json(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open scene file", file.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  try {
-    return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(
-        fmt::format("{}: {}: malformed JSON ({})", file.string(), line_column(text, e.byte), e.what()));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: malformed JSON ({})", file.string(), e.what()));
-  }
-}
 
 void load_settings(const nlohmann::json& root, const std::string& file, Scene& scene) {
   RenderSettings& s = scene.settings;
@@ -381,7 +352,7 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   auto scene = std::make_unique<Scene>();
   scene->file = std::filesystem::absolute(path);
   const std::string file = path.string();
-  const nlohmann::json root = read_json(scene->file);
+  const nlohmann::json root = read_json_file(scene->file, "scene file");
   const JsonFields top(root, file + ":");
   top.check_known(
       {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});

@@ -29,8 +29,8 @@ class CmfSpectrum final : public Spectrum {
   float max_ = 0.0f;
 };
 
-// One column of an embedded table, e.g. embedded("au.csv", "n") for optical constants.
-[[maybe_unused]] SpectrumPtr embedded(std::string_view file, std::string_view column) {
+// One column of an embedded table, e.g. embedded("ior_Au_5nm.csv", "n") for optical constants.
+SpectrumPtr embedded(std::string_view file, std::string_view column) {
   return tabulated_spectrum(embedded_table(file), column);
 }
 
@@ -46,6 +46,19 @@ constexpr NamedSpectrum kRegistry[] = {
     {"cie_x", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_x); }},
     {"cie_y", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_y); }},
     {"cie_z", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_z); }},
+    // Optical constants of metals and silicon (refractiveindex.info data; sources in the CSV headers),
+    // 300-900 nm on a 5 nm grid. "-eta" is n and "-k" the extinction k of the index n + i k as
+    // tabulated; materials/fresnel.h uses n - i k internally.
+    {"metal-Au-eta", [] { return embedded("ior_Au_5nm.csv", "n"); }},
+    {"metal-Au-k", [] { return embedded("ior_Au_5nm.csv", "k"); }},
+    {"metal-Ag-eta", [] { return embedded("ior_Ag_5nm.csv", "n"); }},
+    {"metal-Ag-k", [] { return embedded("ior_Ag_5nm.csv", "k"); }},
+    {"metal-Cu-eta", [] { return embedded("ior_Cu_5nm.csv", "n"); }},
+    {"metal-Cu-k", [] { return embedded("ior_Cu_5nm.csv", "k"); }},
+    {"metal-Al-eta", [] { return embedded("ior_Al_5nm.csv", "n"); }},
+    {"metal-Al-k", [] { return embedded("ior_Al_5nm.csv", "k"); }},
+    {"metal-Si-eta", [] { return embedded("ior_Si_5nm.csv", "n"); }},
+    {"metal-Si-k", [] { return embedded("ior_Si_5nm.csv", "k"); }},
 };
 
 }  // namespace

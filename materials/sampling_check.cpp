@@ -1,4 +1,4 @@
-#include "chi2_test.h"
+#include "materials/sampling_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include "pcg32.h"
+#include "materials/pcg32.h"
 
-namespace ochre::test {
+namespace ochre {
 
 namespace {
 
@@ -177,4 +177,4 @@ std::string Chi2Result::summary() const {
   return s.str();
 }
 
-}  // namespace ochre::test
+}  // namespace ochre

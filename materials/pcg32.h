@@ -1,11 +1,12 @@
 #pragma once
 // PCG32 (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient Statistically Good
 // Algorithms for Random Number Generation"): 64-bit LCG state, XSH RR output. Deterministic
-// random numbers for the statistical tests.
+// random numbers for statistical checks of the materials (materials/sampling_check.h) and the tools
+// that run them.
 
 #include <cstdint>
 
-namespace ochre::test {
+namespace ochre {
 
 class Pcg32 {
  public:
@@ -32,4 +33,4 @@ class Pcg32 {
   uint64_t inc_ = 0;
 };
 
-}  // namespace ochre::test
+}  // namespace ochre

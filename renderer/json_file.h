@@ -1,0 +1,12 @@
+#pragma once
+// Reads a JSON file (comments allowed) for the scene loader and the tools. Throws InputError naming the
+// file ("cannot open <what>") or the line and column of a syntax error.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+namespace ochre {
+
+nlohmann::json read_json_file(const std::filesystem::path& file, const char* what);
+
+}  // namespace ochre
