@@ -1,11 +1,17 @@
 // ochre-bench: renderer throughput against raw Embree on the same triangles (docs/tools.md).
 //   ochre-bench [SCENE.json ...] [--spp N] [--threads N] [--seconds S]
+//   ochre-bench --modes [SCENE.json ...] [--repeat N]
 // For each scene: renders it (samples/s, rays/s counting intersect and occlusion queries), then traces
 // random incoherent rays through a plain Embree BVH of the same meshes (renderer/raw_embree_benchmark.h)
-// and prints renderer rays/s / raw rays/s. Exit codes: 0 = done, 2 = bad input or usage.
+// and prints renderer rays/s / raw rays/s. With --modes: renders each scene in polarization modes off,
+// intensity and stokes (interleaved, N times), prints the median time per sample of each as a ratio to
+// off (goals: intensity <= 1.3x, stokes <= 2x) and the difference mode off makes to the mean luminance.
+// Exit codes: 0 = done, 2 = bad input or usage.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -13,6 +19,7 @@
 #include <vector>
 
 #include "renderer/film.h"
+#include "renderer/polarization_mode.h"
 #include "renderer/raw_embree_benchmark.h"
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
@@ -30,6 +37,8 @@ struct BenchCommand {
   int threads = 0;
   double seconds = 2.0;
   uint64_t seed = 1;
+  bool modes = false;
+  int repeat = 3;
 };
 
 // scenes/default and scenes/cornell-box of the source tree: beside the executable (build/bin/../..),
@@ -42,6 +51,12 @@ std::vector<std::string> default_scenes() {
     root = exe.parent_path() / ".." / "..";
   return {(root / "scenes" / "default" / "default.json").lexically_normal().string(),
           (root / "scenes" / "cornell-box" / "cornell-box.json").lexically_normal().string()};
+}
+
+// The scene the mode costs are measured on: the Cornell box with a gold and a glass sphere.
+std::string polarized_scene() {
+  const fs::path cornell = fs::path(default_scenes()[1]).parent_path();
+  return (cornell / "cornell-box-polarized.json").string();
 }
 
 std::string rate(double per_second) {
@@ -79,6 +94,57 @@ double bench_scene(const BenchCommand& cmd, const std::string& file) {
   return ratio;
 }
 
+// Mean luminance (Y) of a film.
+double mean_luminance(const ochre::Film& film) {
+  double sum = 0.0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) sum += film.mean(x, y).y;
+  return sum / (static_cast<double>(film.width()) * film.height());
+}
+
+// Time per sample of the three polarization modes, and mode off's luminance against mode intensity's.
+void bench_modes(const BenchCommand& cmd, const std::string& file) {
+  const std::array<const char*, 3> modes = {"off", "intensity", "stokes"};
+  std::array<std::unique_ptr<ochre::Scene>, 3> scenes;
+  for (size_t m = 0; m < modes.size(); ++m) {
+    ochre::SceneOverrides overrides;
+    overrides.spp = cmd.spp;
+    if (cmd.threads > 0) overrides.threads = cmd.threads;
+    overrides.polarization = modes[m];
+    scenes[m] = ochre::load_scene(file, overrides);
+    scenes[m]->outputs.stokes = m == 2;
+  }
+  const ochre::RenderSettings& s = scenes[0]->settings;
+  fmt::print("{}: polarization modes, {}x{} at {} spp, {} repetitions (interleaved)\n", file, s.width,
+             s.height, s.spp, cmd.repeat);
+  std::array<std::vector<double>, 3> ns_per_sample;
+  std::array<double, 3> luminance{};
+  for (int r = 0; r < cmd.repeat; ++r)
+    for (size_t m = 0; m < modes.size(); ++m) {
+      ochre::Film film(s.width, s.height);
+      if (m == 2) film.enable_stokes();
+      const ochre::RenderStats stats = ochre::render(*scenes[m], film);
+      ns_per_sample[m].push_back(1e9 * stats.seconds / static_cast<double>(stats.samples));
+      luminance[m] = mean_luminance(film);
+    }
+  std::array<double, 3> median{};
+  for (size_t m = 0; m < modes.size(); ++m) {
+    std::vector<double>& v = ns_per_sample[m];
+    std::sort(v.begin(), v.end());
+    median[m] = v[v.size() / 2];
+  }
+  const std::array<double, 3> goal = {1.0, 1.3, 2.0};
+  for (size_t m = 0; m < modes.size(); ++m)
+    fmt::print("  {:<9}  {:8.1f} ns/sample (min {:.1f}, max {:.1f})  {:.2f}x off{}  mean Y {:.6f}\n",
+               modes[m], median[m], ns_per_sample[m].front(), ns_per_sample[m].back(), median[m] / median[0],
+               m == 0 ? ""
+                      : fmt::format(" (goal <= {:.1f}x){}", goal[m],
+                                    median[m] / median[0] <= goal[m] ? "" : "  ABOVE GOAL"),
+               luminance[m]);
+  fmt::print("  mode off vs intensity: mean luminance {:+.2f} % (Monte-Carlo noise included)\n",
+             100.0 * (luminance[0] / luminance[1] - 1.0));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,6 +159,9 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", cmd.seconds, "Minimum duration of the raw Embree run (default 2)")
       ->check(CLI::PositiveNumber);
   app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays");
+  app.add_flag("--modes", cmd.modes, "Time the polarization modes off / intensity / stokes instead");
+  app.add_option("--repeat", cmd.repeat, "Repetitions per mode with --modes (default 3)")
+      ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -100,9 +169,15 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   if (*spp_opt) cmd.spp = spp;
-  if (cmd.scenes.empty()) cmd.scenes = default_scenes();
+  if (cmd.scenes.empty())
+    cmd.scenes = cmd.modes ? std::vector<std::string>{polarized_scene()} : default_scenes();
   try {
-    for (const std::string& scene : cmd.scenes) bench_scene(cmd, scene);
+    for (const std::string& scene : cmd.scenes) {
+      if (cmd.modes)
+        bench_modes(cmd, scene);
+      else
+        bench_scene(cmd, scene);
+    }
     return 0;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ochre-bench: error: {}\n", e.what());

@@ -369,3 +369,62 @@ TEST(PolarizationRender, GrooveWithHorizontalSegmentsMatchesTheExactReflectance)
 
 }  // namespace
 }  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// With unpolarized light, an intensity film and one polarizing bounce, the first row of the Mueller
+// product applied to unpolarized light is M00: modes off and intensity estimate the same image (here
+// with the same random numbers, so to rounding).
+TEST(PolarizationRender, ModesOffAndIntensityAgreeWithOnePolarizingBounce) {
+  const std::string scene = R"({
+    "camera": {"type": "perspective", "fov": 40, "eye": [0, -3, 3], "target": [0, 0, 0], "up": [0, 0, 1]},
+    "film": {"resolution": [16, 16]},
+    "integrator": {"spp": 16, "max_depth": 1},
+    "materials": {"gold": {"type": "conductor", "metal": "Au", "roughness": 0.3}},
+    "lights": [{"type": "point", "position": [0.5, 0.5, 2], "intensity": 10},
+               {"type": "environment", "radiance": 0.3}],
+    "shapes": [{"type": "plane", "size": [4, 4], "material": "gold"}]
+  })";
+  const Rendered off = render(scene, "--polarization off");
+  const Rendered intensity = render(scene);
+  EXPECT_NE(intensity.log.find("polarization: intensity (auto: a material or a filter polarizes)"),
+            std::string::npos)
+      << intensity.log;
+  std::printf("one polarizing bounce: off %.7f, intensity %.7f\n", off.luminance(), intensity.luminance());
+  EXPECT_NEAR(intensity.luminance() / off.luminance(), 1.0, 1e-4);
+}
+
+// Cross-polarized photography: a flash behind a polarizer and a crossed analyzer on the lens remove the
+// glare of a glossy film (rough dielectric) over diffuse paint; a parallel analyzer keeps it.
+std::string glossy_paint_scene(bool with_film, double analyzer_degrees) {
+  const std::string film =
+      with_film ? R"(, "film": {"type": "dielectric", "ior": 1.5, "roughness": 0.1, "opaque": 1},
+      "out": {"type": "add", "a": {"link": "paint"}, "b": {"link": "film"}})"
+                : "";
+  return fmt::format(R"({{
+    "camera": {{"type": "perspective", "fov": 30, "eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0],
+               "polarizer": {{"angle": {}}}}},
+    "film": {{"resolution": [8, 8]}},
+    "integrator": {{"spp": 64, "max_depth": 2}},
+    "materials": {{"m": {{"nodes": {{"paint": {{"type": "lambert", "color": 0.3}} {}}}, "output": "{}"}}}},
+    "lights": [{{"type": "point", "position": [0.1, 0.1, 3], "intensity": 10, "polarizer": {{"axis": [1, 0, 0]}}}}],
+    "shapes": [{{"type": "plane", "size": [4, 4], "material": "m"}}]
+  }})",
+                     analyzer_degrees, film, with_film ? "out" : "paint");
+}
+
+TEST(PolarizationRender, CrossedPolarizersRemoveSpecularGlare) {
+  const double paint_parallel = render(glossy_paint_scene(false, 0)).luminance();
+  const double paint_crossed = render(glossy_paint_scene(false, 90)).luminance();
+  const double glare_parallel = render(glossy_paint_scene(true, 0)).luminance() - paint_parallel;
+  const double glare_crossed = render(glossy_paint_scene(true, 90)).luminance() - paint_crossed;
+  std::printf("glare: parallel analyzer %.5f, crossed %.5f (diffuse paint %.5f / %.5f)\n", glare_parallel,
+              glare_crossed, paint_parallel, paint_crossed);
+  EXPECT_NEAR(paint_crossed / paint_parallel, 1.0, 1e-5);  // the paint depolarizes
+  ASSERT_GT(glare_parallel, 0.1 * paint_parallel);
+  EXPECT_LT(std::fabs(glare_crossed), 0.02 * glare_parallel);
+}
+
+}  // namespace
+}  // namespace ochre::test
