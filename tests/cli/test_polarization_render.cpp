@@ -428,3 +428,25 @@ TEST(PolarizationRender, CrossedPolarizersRemoveSpecularGlare) {
 
 }  // namespace
 }  // namespace ochre::test
+
+namespace ochre::test {
+namespace {
+
+// Spectral Stokes layers (Fichet et al. 2021): S0..S3 per bin; light polarized along the image x axis has
+// S1 = S0 and S2 = S3 = 0 in every bin; the handedness is declared in the header.
+TEST(PolarizationRender, SpectralStokesLayersFollowTheSpectralLayout) {
+  const Rendered r = render(polarized_lamp_scene("[1, 0, 0]", ""), "--stokes --spectral-bins 4");
+  EXPECT_EQ(r.exr.string_attributes.at("polarisationHandedness"), "right");
+  EXPECT_EQ(r.exr.string_attributes.at("spectralLayoutVersion"), "1.0");
+  for (const char* bin : {"418,750000nm", "536,250000nm", "771,250000nm"}) {
+    const double s0 = r.mean(std::string("S0.") + bin), s1 = r.mean(std::string("S1.") + bin);
+    const double s2 = r.mean(std::string("S2.") + bin), s3 = r.mean(std::string("S3.") + bin);
+    ASSERT_GT(s0, 0.0) << bin;
+    EXPECT_NEAR(s1 / s0, 1.0, 1e-5) << bin;
+    EXPECT_NEAR(s2 / s0, 0.0, 1e-6) << bin;
+    EXPECT_NEAR(s3 / s0, 0.0, 1e-6) << bin;
+  }
+}
+
+}  // namespace
+}  // namespace ochre::test
