@@ -20,6 +20,14 @@ Distribution2D::Distribution2D(const std::vector<double>& weights, int width, in
     row_totals[static_cast<size_t>(y)] = conditional_.back().total();
   }
   marginal_ = Distribution1D(row_totals);
+  if (empty()) return;
+  cell_pdf_.resize(weights.size());
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      cell_pdf_[static_cast<size_t>(y) * width + x] =
+          marginal_.pmf(static_cast<size_t>(y)) *
+          conditional_[static_cast<size_t>(y)].pmf(static_cast<size_t>(x)) * static_cast<float>(width_) *
+          static_cast<float>(height_);
 }
 
 Distribution2D::Sample Distribution2D::sample(const Vec2& u) const {
@@ -39,9 +47,7 @@ Distribution2D::Sample Distribution2D::sample(const Vec2& u) const {
 
 float Distribution2D::pdf(int column, int row) const {
   if (empty()) return 0.0f;
-  return marginal_.pmf(static_cast<size_t>(row)) *
-         conditional_[static_cast<size_t>(row)].pmf(static_cast<size_t>(column)) *
-         static_cast<float>(width_) * static_cast<float>(height_);
+  return cell_pdf_[static_cast<size_t>(row) * width_ + column];
 }
 
 float Distribution2D::pdf(const Vec2& uv) const {

@@ -41,6 +41,7 @@ class Distribution2D {
   int height_ = 0;
   std::vector<Distribution1D> conditional_;  // one per row
   Distribution1D marginal_;                  // over rows
+  std::vector<float> cell_pdf_;              // pdf(column, row), row-major: one memory access per query
 };
 
 }  // namespace ochre

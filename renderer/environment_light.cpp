@@ -21,6 +21,13 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, fl
   const double radians = rotation_degrees * M_PI / 180.0;
   cos_rotation_ = static_cast<float>(std::cos(radians));
   sin_rotation_ = static_cast<float>(std::sin(radians));
+  texel_spectra_.resize(map_->texel_count());
+  for (size_t i = 0; i < texel_spectra_.size(); ++i) {
+    const RGB& rgb = map_->texel(i);
+    const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
+    if (!(m > 0.0f)) continue;
+    texel_spectra_[i] = {RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m}), m};
+  }
 }
 
 // map_to_world is the right-handed rotation R_y(angle): (x, z) -> (c x + s z, -s x + c z);
@@ -35,12 +42,11 @@ Vec3 EnvironmentLight::map_to_world(const Vec3& d) const {
 
 // Exactly RGBIlluminantSpectrum(rgb).sample(lambda) (spectra/rgb_spectrum.cpp) without building the
 // object: m = 2 max(rgb), sigmoid polynomial of rgb / m, times m times D65; then the light's scale.
-SampledSpectrum EnvironmentLight::texel_radiance(const RGB& rgb, const SampledWavelengths& lambda) const {
-  const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
-  if (!(m > 0.0f)) return SampledSpectrum(0.0f);
-  const RGBSigmoidPolynomial poly = RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m});
+SampledSpectrum EnvironmentLight::texel_radiance(size_t texel, const SampledWavelengths& lambda) const {
+  const TexelSpectrum& t = texel_spectra_[texel];
+  if (!(t.m > 0.0f)) return SampledSpectrum(0.0f);
   SampledSpectrum s = d65_->sample(lambda);
-  for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= m * poly.eval(lambda[i]);
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= t.m * t.poly.eval(lambda[i]);
   return s * scale_;
 }
 
@@ -57,7 +63,7 @@ std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,
   const EnvironmentMap::Sample m = map_->sample(u);
   if (!(m.pdf > 0.0f)) return std::nullopt;
   s.wi = map_to_world(m.direction);
-  s.radiance = texel_radiance(m.rgb, lambda);
+  s.radiance = texel_radiance(m.index, lambda);
   s.pdf = m.pdf;
   return s;
 }
@@ -71,7 +77,7 @@ float EnvironmentLight::power() const {
 
 SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda) const {
   if (!map_) return radiance_->sample(lambda) * scale_;
-  return texel_radiance(map_->lookup(world_to_map(direction)), lambda);
+  return texel_radiance(map_->texel_index(world_to_map(direction)), lambda);
 }
 
 float EnvironmentLight::pdf(const Vec3& direction) const {

@@ -15,10 +15,12 @@
 
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "renderer/environment_map.h"
 #include "renderer/json_fields.h"
 #include "renderer/light.h"
+#include "spectra/rgb_sigmoid_polynomial.h"
 #include "spectra/spectrum.h"
 
 namespace ochre {
@@ -45,7 +47,15 @@ class EnvironmentLight final : public Light {
  private:
   Vec3 world_to_map(const Vec3& d) const;
   Vec3 map_to_world(const Vec3& d) const;
-  SampledSpectrum texel_radiance(const RGB& rgb, const SampledWavelengths& lambda) const;
+  SampledSpectrum texel_radiance(size_t texel, const SampledWavelengths& lambda) const;
+
+  // Each texel's illuminant spectrum, fitted once at construction (the fit is a trilinear lookup in a
+  // 9 MB table: per lookup it cost more cache misses than the rest of the environment's sampling).
+  struct TexelSpectrum {
+    RGBSigmoidPolynomial poly;
+    float m = 0.0f;  // 2 max(rgb); 0 for a black texel
+  };
+  std::vector<TexelSpectrum> texel_spectra_;
 
   SpectrumPtr radiance_;  // constant environment (null for a map)
   std::shared_ptr<const EnvironmentMap> map_;

@@ -118,18 +118,19 @@ EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
   }
 }
 
-const RGB& EnvironmentMap::lookup(const Vec3& direction) const {
+size_t EnvironmentMap::texel_index(const Vec3& direction) const {
   const Vec2 uv = direction_to_equirect_uv(direction);
   const int column = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
   const int row = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
-  return texel(column, row);
+  return static_cast<size_t>(row) * width_ + column;
 }
 
 EnvironmentMap::Sample EnvironmentMap::sample(const Vec2& u) const {
   const Distribution2D::Sample s = distribution_.sample(u);
   Sample result;
   result.direction = equirect_uv_to_direction(s.uv);
-  result.rgb = texel(s.column, s.row);
+  result.index = static_cast<size_t>(s.row) * width_ + s.column;
+  result.rgb = rgb_[result.index];
   const float sin_theta = std::sin(kPi * s.uv.y);
   // dw = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv.
   result.pdf = sin_theta > 0.0f ? s.pdf / (2.0f * kPi * kPi * sin_theta) : 0.0f;

@@ -24,6 +24,7 @@
 //   pdf(direction) = pdf_uv / (2 pi^2 sin theta)                         (pbrt-v4, section 12.5.2).
 // The floor keeps every direction samplable (pdf > 0), so sample() alone is an unbiased estimator too.
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -44,6 +45,7 @@ class EnvironmentMap {
   struct Sample {
     Vec3 direction;    // unit, map frame
     RGB rgb;           // texel value
+    size_t index = 0;  // texel index (row * width + column)
     float pdf = 0.0f;  // solid-angle density (0: the sample must be discarded)
   };
 
@@ -59,8 +61,11 @@ class EnvironmentMap {
   int width() const { return width_; }
   int height() const { return height_; }
   const RGB& texel(int column, int row) const { return rgb_[static_cast<size_t>(row) * width_ + column]; }
-  // Nearest texel along a direction of the map frame.
-  const RGB& lookup(const Vec3& direction) const;
+  // Nearest texel along a direction of the map frame, and its index (row * width + column).
+  const RGB& lookup(const Vec3& direction) const { return rgb_[texel_index(direction)]; }
+  size_t texel_index(const Vec3& direction) const;
+  size_t texel_count() const { return rgb_.size(); }
+  const RGB& texel(size_t index) const { return rgb_[index]; }
 
   Sample sample(const Vec2& u) const;
   // Solid-angle density of sample() producing `direction` (map frame, need not be normalised).
