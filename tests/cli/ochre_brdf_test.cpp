@@ -1,13 +1,16 @@
 // ochre-brdf end to end (docs/tools.md): eval, albedo and chi2 on the Lambert material, whose BRDF is
 // known exactly (color / pi above the surface, 0 below), and every bad-input path (exit code 2, a
 // message naming the file, line, column or parameter, no output file left behind).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/cli_runner.h"
@@ -225,6 +228,81 @@ TEST(OchreBrdf, PlotWritesAPng) {
   EXPECT_EQ(header, "incidence_deg,theta_o_deg,phi_o_deg,f");
   EXPECT_EQ(rows.size(), 2u * 90u * 73u);
   expect_no_leftovers(dir);
+}
+
+// The Lambertian-sphere material (docs/materials/lambert_sphere.md) through the explorer: its BRDF is
+// reciprocal (swapping wi and wo gives the same f), positive above the surface and 0 below, and its kd
+// is the bond albedo 2 int rho(mu) mu dmu (d'Eon's definition), here from `albedo` at the Gauss-Legendre
+// nodes of mu.
+std::vector<std::pair<double, double>> gauss_legendre_unit(int n) {  // nodes and weights on [0, 1]
+  std::vector<std::pair<double, double>> rule;
+  for (int i = 0; i < n; ++i) {
+    double x = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int iteration = 0; iteration < 100; ++iteration) {  // Newton on P_n(x) by its recurrence
+      double p0 = 1.0, p1 = x;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1.0);
+      const double step = p1 / dp;
+      x -= step;
+      if (std::abs(step) < 1e-15) break;
+    }
+    rule.push_back({0.5 * (x + 1.0), 1.0 / ((1.0 - x * x) * dp * dp)});  // weight 2/((1-x^2)P'^2), halved
+  }
+  return rule;
+}
+
+TEST(OchreBrdf, LambertSphereIsReciprocalAndItsKdIsTheBondAlbedo) {
+  const auto dir = scratch_dir();
+  write_text(dir / "ls.json", R"({"type": "lambert_sphere", "kd": 0.8})");
+  // Pairs and their swaps (backscatter, forward, side, grazing), then two with a direction below.
+  const std::vector<std::string> pairs = {"0.3,0.1,0.9,0.5,-0.2,0.6", "0.9,0,0.1,-0.7,0.1,0.4",
+                                          "0.2,0.8,0.3,0.6,0,0.7", "0.99,0,0.05,0.98,0.1,0.1"};
+  std::string text = kPairsHeader;
+  for (const std::string& p : pairs) text += p + ",550\n";
+  for (const std::string& p : pairs) {
+    const size_t third_comma = p.find(',', p.find(',', p.find(',') + 1) + 1);
+    text += p.substr(third_comma + 1) + "," + p.substr(0, third_comma) + ",550\n";
+  }
+  text += "0,0,-1,0,0,1,550\n0.3,0.1,0.9,0.5,0,-0.2,550\n";
+  write_text(dir / "pairs.csv", text);
+  CommandResult r = run_tool("ochre-brdf", "eval --material ls.json --input pairs.csv --output f.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string header;
+  const auto rows = read_csv(dir / "f.csv", header);
+  ASSERT_EQ(rows.size(), 2 * pairs.size() + 2);
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const double f = std::stod(rows[i][7]), swapped = std::stod(rows[i + pairs.size()][7]);
+    std::printf("lambert_sphere kd 0.8: f(%s) = %.6f, swapped %.6f\n", pairs[i].c_str(), f, swapped);
+    EXPECT_GT(f, 0.0) << "pair " << i;
+    EXPECT_NEAR(swapped, f, 1e-5 * f) << "pair " << i << " is not reciprocal";
+  }
+  EXPECT_EQ(std::stod(rows[2 * pairs.size()][7]), 0.0) << "light below the surface";
+  EXPECT_EQ(std::stod(rows[2 * pairs.size() + 1][7]), 0.0) << "viewer below the surface";
+
+  const auto rule = gauss_legendre_unit(12);
+  std::string angles;
+  for (const auto& node : rule) {  // appended piecewise: GCC 12 warns falsely on "," + std::string
+    if (!angles.empty()) angles += ',';
+    angles += fmt::format("{:.10f}", std::acos(node.first) * 180.0 / kPi);
+  }
+  r = run_tool("ochre-brdf",
+               "albedo --material ls.json --angles " + angles + " --samples 2000 --output a.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto albedo_rows = read_csv(dir / "a.csv", header);
+  ASSERT_EQ(albedo_rows.size(), rule.size());
+  double bond = 0.0;
+  for (size_t i = 0; i < rule.size(); ++i) {
+    const double rho = std::stod(albedo_rows[i][4]);
+    EXPECT_GT(rho, 0.0);
+    EXPECT_LT(rho, 1.0) << "theta " << albedo_rows[i][0];
+    bond += 2.0 * rule[i].second * rule[i].first * rho;
+  }
+  std::printf("lambert_sphere kd 0.8: bond albedo from 12 directional albedos = %.5f\n", bond);
+  EXPECT_NEAR(bond, 0.8, 0.8 * 0.005);
 }
 
 }  // namespace

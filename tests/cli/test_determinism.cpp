@@ -45,8 +45,11 @@ namespace {
 
 // Every shipped example scene loads (all its files are in the repository) and renders.
 TEST(ExampleScenes, RenderAtLowResolution) {
-  for (const char* scene : {"scenes/default/default.json", "scenes/cornell-box/cornell-box.json",
-                            "scenes/furnace/furnace.json"}) {
+  for (const char* scene :
+       {"scenes/default/default.json", "scenes/cornell-box/cornell-box.json", "scenes/furnace/furnace.json",
+        "scenes/cornell-box/cornell-box-polarized.json", "scenes/cross-polarization/parallel.json",
+        "scenes/cross-polarization/crossed.json", "scenes/lambert-sphere/front.json",
+        "scenes/lambert-sphere/back.json"}) {
     const auto dir = scratch_dir();
     const CommandResult r =
         run_ochre("render '" + (source_dir() / scene).string() + "' -o " + (dir / "out.exr").string() +
