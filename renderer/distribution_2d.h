@@ -5,7 +5,14 @@
 // chosen cell the point is uniform, so the density is constant per cell:
 //   pdf(u, v) = P(row) * P(column | row) * width * height.
 // Row 0 is v in [0, 1/height) (the top row of an image), column 0 is u in [0, 1/width).
+//
+// Layout: an environment map's sampling is a random access into megabytes of CDFs, so the conditional
+// CDFs live in one flat array whose entries pair each CDF value with the guide-table entry (Chen & Asau
+// 1974) of the same index: a row search reads the guide entry of u's bucket and the one or two CDF values
+// it points to, which for a row of similar weights sit beside it (typically one cache line), and a pdf
+// query reads one float of the per-cell table.
 
+#include <cstdint>
 #include <vector>
 
 #include "materials/vec3.h"
@@ -39,9 +46,16 @@ class Distribution2D {
  private:
   int width_ = 0;
   int height_ = 0;
-  std::vector<Distribution1D> conditional_;  // one per row
-  Distribution1D marginal_;                  // over rows
-  std::vector<float> cell_pdf_;              // pdf(column, row), row-major: one memory access per query
+  // Column of row `row` for u, and u rescaled inside it (the conditional distribution).
+  int sample_column(int row, float u, float* u_in_column) const;
+
+  Distribution1D marginal_;  // over rows
+  struct RowEntry {
+    float cdf = 0.0f;    // normalised CDF before column i (entry width is exactly 1)
+    uint32_t guide = 0;  // the first index j >= 1 with cdf[j] > i / width
+  };
+  std::vector<RowEntry> rows_;   // per row: width + 1 entries
+  std::vector<float> cell_pdf_;  // pdf(column, row), row-major: one memory access per query
 };
 
 }  // namespace ochre

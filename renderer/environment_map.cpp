@@ -130,7 +130,6 @@ EnvironmentMap::Sample EnvironmentMap::sample(const Vec2& u) const {
   Sample result;
   result.direction = equirect_uv_to_direction(s.uv);
   result.index = static_cast<size_t>(s.row) * width_ + s.column;
-  result.rgb = rgb_[result.index];
   const float sin_theta = std::sin(kPi * s.uv.y);
   // dw = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv.
   result.pdf = sin_theta > 0.0f ? s.pdf / (2.0f * kPi * kPi * sin_theta) : 0.0f;

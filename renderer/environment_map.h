@@ -44,8 +44,7 @@ class EnvironmentMap {
  public:
   struct Sample {
     Vec3 direction;    // unit, map frame
-    RGB rgb;           // texel value
-    size_t index = 0;  // texel index (row * width + column)
+    size_t index = 0;  // texel index (row * width + column): texel(index) is its value
     float pdf = 0.0f;  // solid-angle density (0: the sample must be discarded)
   };
 

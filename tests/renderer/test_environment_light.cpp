@@ -174,7 +174,7 @@ void expect_unbiased(const EnvironmentMap& map, int samples, double tolerance) {
   double sum = 0.0;
   for (int i = 0; i < samples; ++i) {
     const EnvironmentMap::Sample s = map.sample({uniform(rng), uniform(rng)});
-    if (s.pdf > 0.0f) sum += luminance(s.rgb) / s.pdf;
+    if (s.pdf > 0.0f) sum += luminance(map.texel(s.index)) / s.pdf;
   }
   const double estimate = sum / samples, exact = 4.0 * M_PI * map.mean_luminance();
   std::printf("[ unbiased ] integral of Y: estimate %.5g, exact %.5g\n", estimate, exact);
