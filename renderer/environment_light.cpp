@@ -80,6 +80,15 @@ SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledW
   return texel_radiance(map_->texel_index(world_to_map(direction)), lambda);
 }
 
+SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda,
+                                           float* pdf) const {
+  if (!map_) {
+    *pdf = kUniformSpherePdf;
+    return radiance_->sample(lambda) * scale_;
+  }
+  return texel_radiance(map_->texel_index_and_pdf(world_to_map(direction), pdf), lambda);
+}
+
 float EnvironmentLight::pdf(const Vec3& direction) const {
   if (!map_) return kUniformSpherePdf;
   return map_->pdf(world_to_map(direction));

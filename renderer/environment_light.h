@@ -41,6 +41,8 @@ class EnvironmentLight final : public Light {
   SampledSpectrum radiance(const Vec3& direction, const SampledWavelengths& lambda) const;
   // Solid-angle pdf of sample() producing `direction`.
   float pdf(const Vec3& direction) const;
+  // Both at once (one texel lookup).
+  SampledSpectrum radiance(const Vec3& direction, const SampledWavelengths& lambda, float* pdf) const;
 
   const EnvironmentMap* map() const { return map_.get(); }
 

@@ -136,6 +136,16 @@ EnvironmentMap::Sample EnvironmentMap::sample(const Vec2& u) const {
   return result;
 }
 
+size_t EnvironmentMap::texel_index_and_pdf(const Vec3& direction, float* pdf) const {
+  const Vec3 d = normalize(direction);
+  const Vec2 uv = direction_to_equirect_uv(d);
+  const int column = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
+  const int row = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
+  const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
+  *pdf = sin_theta > 0.0f ? distribution_.pdf(uv) / (2.0f * kPi * kPi * sin_theta) : 0.0f;
+  return static_cast<size_t>(row) * width_ + column;
+}
+
 float EnvironmentMap::pdf(const Vec3& direction) const {
   const Vec3 d = normalize(direction);
   const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);

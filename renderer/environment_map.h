@@ -67,6 +67,9 @@ class EnvironmentMap {
   const RGB& texel(size_t index) const { return rgb_[index]; }
 
   Sample sample(const Vec2& u) const;
+  // The texel along a direction of the map frame and the solid-angle density of sample() there (one
+  // (u, v) computation for both, as a ray escaping the scene needs).
+  size_t texel_index_and_pdf(const Vec3& direction, float* pdf) const;
   // Solid-angle density of sample() producing `direction` (map frame, need not be normalised).
   float pdf(const Vec3& direction) const;
 

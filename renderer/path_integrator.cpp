@@ -146,14 +146,12 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     const auto hit = scene_.accel->intersect(ray);
     if (!hit) {
       if (scene_.environment) {
-        float w = 1.0f;
-        if (!specular) {
-          const float light_pdf =
-              scene_.light_pmf(scene_.environment_light) * scene_.environment->pdf(ray.dir);
-          w = power_heuristic(prev_pdf, light_pdf);
-        }
-        beta.receive(IncomingLight{scene_.environment->radiance(ray.dir, lambda) * w, false, {}}, -ray.dir,
-                     L);
+        float env_pdf = 0.0f;
+        const SampledSpectrum Le = scene_.environment->radiance(ray.dir, lambda, &env_pdf);
+        // After the camera or a delta lobe the environment could not have been sampled: no MIS.
+        const float w =
+            specular ? 1.0f : power_heuristic(prev_pdf, scene_.light_pmf(scene_.environment_light) * env_pdf);
+        beta.receive(IncomingLight{Le * w, false, {}}, -ray.dir, L);
       }
       break;
     }

@@ -167,6 +167,23 @@ TEST(EnvironmentLight, PdfIntegratesToOneOverTheSphere) {
   EXPECT_NEAR(integral, 1.0, 5e-3);
 }
 
+// The combined lookup an escaping ray uses gives the radiance and the pdf of the separate queries.
+TEST(EnvironmentLight, CombinedRadianceAndPdfMatchTheSeparateQueries) {
+  const EnvironmentLight light(std::make_shared<const EnvironmentMap>(kWidth, kHeight, spot_texels()), 1.0f,
+                               1.0f, 30.0f);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> uniform(-1.0f, 1.0f);
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.3f);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 d = normalize(Vec3{uniform(rng), uniform(rng), uniform(rng)});
+    float pdf = -1.0f;
+    const SampledSpectrum both = light.radiance(d, lambda, &pdf);
+    const SampledSpectrum alone = light.radiance(d, lambda);
+    EXPECT_FLOAT_EQ(pdf, light.pdf(d));
+    for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_FLOAT_EQ(both[k], alone[k]);
+  }
+}
+
 // Importance sampling must be unbiased: E[Y(L) / pdf] = integral of Y(L) over the sphere = 4 pi mean Y.
 void expect_unbiased(const EnvironmentMap& map, int samples, double tolerance) {
   std::mt19937 rng(99);
