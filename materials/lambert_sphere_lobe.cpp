@@ -1,5 +1,6 @@
 #include "materials/lambert_sphere_lobe.h"
 
+#include "materials/lambert_sphere_constants_table.h"
 #include "materials/sampling.h"
 
 namespace ochre {
@@ -11,7 +12,7 @@ LambertSphereLobe::LambertSphereLobe(LambertSphereVariant variant, const Sampled
     if (variant == LambertSphereVariant::kExact)
       exact_[k] = lambert_sphere_exact_constants(c);
     else
-      fitted_[k] = lambert_sphere_constants(c);
+      fitted_[k] = lambert_sphere_constants_interpolated(c);
     albedo_[k] = lambert_sphere_kd_from_c_eq47(c);
   }
 }
