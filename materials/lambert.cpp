@@ -1,6 +1,6 @@
 #include "materials/lambert.h"
 
-#include "materials/sampling.h"
+#include "materials/cosine_lobe_sampling.h"
 
 namespace ochre {
 
@@ -10,18 +10,13 @@ SampledSpectrum LambertLobe::eval(const Vec3& wo, const Vec3& wi, const SampledW
 }
 
 float LambertLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
-  if (wo.z <= 0.0f) return 0.0f;
-  return cosine_hemisphere_pdf(wi.z);
+  return cosine_lobe_pdf(wo, wi);
 }
 
 std::optional<LobeSample> LambertLobe::sample(const Vec3& wo, float, const Vec2& u,
                                               const SampledWavelengths&) const {
-  if (wo.z <= 0.0f) return std::nullopt;
-  LobeSample s;
-  s.wi = sample_cosine_hemisphere(u);
-  s.pdf = cosine_hemisphere_pdf(s.wi.z);
-  if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = SampledSpectrum(1.0f);  // (1/pi) cos / (cos/pi)
+  std::optional<LobeSample> s = sample_cosine_lobe(wo, u);
+  if (s) s->weight = SampledSpectrum(1.0f);  // (1/pi) cos / (cos/pi)
   return s;
 }
 

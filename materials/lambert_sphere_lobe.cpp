@@ -1,7 +1,7 @@
 #include "materials/lambert_sphere_lobe.h"
 
+#include "materials/cosine_lobe_sampling.h"
 #include "materials/lambert_sphere_constants_table.h"
-#include "materials/sampling.h"
 
 namespace ochre {
 
@@ -39,18 +39,13 @@ SampledSpectrum LambertSphereLobe::eval(const Vec3& wo, const Vec3& wi, const Sa
 }
 
 float LambertSphereLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
-  if (wo.z <= 0.0f) return 0.0f;
-  return cosine_hemisphere_pdf(wi.z);
+  return cosine_lobe_pdf(wo, wi);
 }
 
 std::optional<LobeSample> LambertSphereLobe::sample(const Vec3& wo, float, const Vec2& u,
                                                     const SampledWavelengths& lambda) const {
-  if (wo.z <= 0.0f) return std::nullopt;
-  LobeSample s;
-  s.wi = sample_cosine_hemisphere(u);
-  s.pdf = cosine_hemisphere_pdf(s.wi.z);
-  if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = eval(wo, s.wi, lambda) * (s.wi.z / s.pdf);
+  std::optional<LobeSample> s = sample_cosine_lobe(wo, u);
+  if (s) s->weight = eval(wo, s->wi, lambda) * (s->wi.z / s->pdf);
   return s;
 }
 

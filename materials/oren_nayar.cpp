@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "materials/sampling.h"
+#include "materials/cosine_lobe_sampling.h"
 
 namespace ochre {
 
@@ -27,18 +27,13 @@ SampledSpectrum OrenNayarLobe::eval(const Vec3& wo, const Vec3& wi, const Sample
 }
 
 float OrenNayarLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
-  if (wo.z <= 0.0f) return 0.0f;
-  return cosine_hemisphere_pdf(wi.z);
+  return cosine_lobe_pdf(wo, wi);
 }
 
 std::optional<LobeSample> OrenNayarLobe::sample(const Vec3& wo, float, const Vec2& u,
                                                 const SampledWavelengths&) const {
-  if (wo.z <= 0.0f) return std::nullopt;
-  LobeSample s;
-  s.wi = sample_cosine_hemisphere(u);
-  s.pdf = cosine_hemisphere_pdf(s.wi.z);
-  if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = SampledSpectrum(value(wo, s.wi) * (s.wi.z / s.pdf));
+  std::optional<LobeSample> s = sample_cosine_lobe(wo, u);
+  if (s) s->weight = SampledSpectrum(value(wo, s->wi) * (s->wi.z / s->pdf));
   return s;
 }
 
