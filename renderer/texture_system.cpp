@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "renderer/atomic_file.h"
+#include "renderer/mip_pyramid.h"
 #include "spectra/color_space.h"
 
 namespace ochre {
@@ -227,6 +228,7 @@ struct OiioTextureProvider::Impl {
     OIIO::TextureSystem::TextureHandle* handle = nullptr;
     int channels = 0;
     fs::path file;  // what the TextureSystem reads (cache file or the source itself)
+    std::unique_ptr<const MipPyramid> resident;  // its MIP levels in memory, when they fit the budget
   };
 
   fs::path cache_dir;
@@ -235,6 +237,7 @@ struct OiioTextureProvider::Impl {
   std::vector<Texture> textures;
   std::unordered_map<std::string, int> ids;  // "<absolute path>|<encoding>" -> id
   std::mutex add_mutex;
+  std::size_t resident_budget = 0, resident_bytes = 0;
   int conversions = 0, cache_hits = 0, used_directly = 0;
   mutable std::atomic<std::uint64_t> failed_lookups{0};
 
@@ -256,7 +259,9 @@ struct OiioTextureProvider::Impl {
   }
 };
 
-OiioTextureProvider::OiioTextureProvider(fs::path cache_dir) : impl_(std::make_unique<Impl>()) {
+OiioTextureProvider::OiioTextureProvider(fs::path cache_dir, std::size_t resident_budget_bytes)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->resident_budget = resident_budget_bytes;
   impl_->cache_dir = cache_dir.empty() ? default_texture_cache_dir() : std::move(cache_dir);
   if (!make_writable_directory(impl_->cache_dir)) {
     const fs::path requested = impl_->cache_dir;
@@ -300,6 +305,11 @@ int OiioTextureProvider::add_texture(const fs::path& file, const std::string& co
                                          source.path.string(), texture.file.string(), system.geterror()));
   }
   texture.channels = spec.nchannels;
+  const std::size_t bytes = MipPyramid::file_bytes(texture.file);
+  if (bytes > 0 && impl_->resident_bytes + bytes <= impl_->resident_budget) {
+    texture.resident = std::make_unique<const MipPyramid>(MipPyramid::load(texture.file));
+    impl_->resident_bytes += texture.resident->memory_bytes();
+  }
 
   const int id = static_cast<int>(impl_->textures.size());
   impl_->textures.push_back(std::move(texture));
@@ -325,6 +335,14 @@ void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint
   const int fetched = replicate_grey ? 1 : std::clamp(texture.channels - first_channel, 0, nchannels);
   if (fetched == 0) return;
 
+  // Isotropic filter footprint: ds/dx = dt/dy = footprint. t runs down the image, v up: t = 1 - v.
+  const float width = std::fabs(footprint);
+  if (texture.resident) {
+    texture.resident->lookup(uv.x, 1.0f - uv.y, width, first_channel, fetched, out);
+    if (replicate_grey) std::fill(out + 1, out + nchannels, out[0]);
+    return;
+  }
+
   OIIO::TextureOpt options;
   options.firstchannel = first_channel;
   options.swrap = OIIO::TextureOpt::WrapPeriodic;
@@ -332,9 +350,6 @@ void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint
   // Bilinear (not OIIO's default smart-bicubic, a non-interpolating B-spline when magnifying), so that a
   // point lookup at a texel centre returns that texel exactly.
   options.interpmode = OIIO::TextureOpt::InterpBilinear;
-
-  // Isotropic filter footprint: ds/dx = dt/dy = footprint. t runs down the image, v up: t = 1 - v.
-  const float width = std::fabs(footprint);
   OIIO::TextureSystem& system = *impl_->system;
   OIIO::TextureSystem::Perthread* thread_info = system.get_perthread_info();
   if (!system.texture(texture.handle, thread_info, options, uv.x, 1.0f - uv.y, width, 0.0f, 0.0f, width,
@@ -355,10 +370,15 @@ const fs::path& OiioTextureProvider::cache_dir() const {
   return impl_->cache_dir;
 }
 
+int OiioTextureProvider::resident_count() const {
+  return static_cast<int>(std::count_if(impl_->textures.begin(), impl_->textures.end(),
+                                        [](const Impl::Texture& t) { return t.resident != nullptr; }));
+}
+
 std::size_t OiioTextureProvider::memory_bytes() const {
   long long bytes = 0;
   impl_->system->imagecache()->getattribute("stat:cache_memory_used", OIIO::TypeDesc::INT64, &bytes);
-  return static_cast<std::size_t>(std::max(0LL, bytes));
+  return static_cast<std::size_t>(std::max(0LL, bytes)) + impl_->resident_bytes;
 }
 
 std::string OiioTextureProvider::stats() const {
@@ -366,11 +386,13 @@ std::string OiioTextureProvider::stats() const {
   impl_->system->imagecache()->getattribute("stat:bytes_read", OIIO::TypeDesc::INT64, &bytes_read);
   constexpr double kMiB = 1024.0 * 1024.0;
   return fmt::format(
-      "textures: {} ({} converted, {} from cache, {} used as is); tile cache {:.1f} MiB, read {:.1f} MiB; "
-      "failed lookups {}; cache {}{}",
-      impl_->textures.size(), impl_->conversions, impl_->cache_hits, impl_->used_directly,
-      static_cast<double>(memory_bytes()) / kMiB, static_cast<double>(bytes_read) / kMiB,
-      impl_->failed_lookups.load(std::memory_order_relaxed), impl_->cache_dir.string(), impl_->cache_note);
+      "textures: {} ({} converted, {} from cache, {} used as is; {} resident, {:.1f} MiB); tile cache "
+      "{:.1f} MiB, read {:.1f} MiB; failed lookups {}; cache {}{}",
+      impl_->textures.size(), impl_->conversions, impl_->cache_hits, impl_->used_directly, resident_count(),
+      static_cast<double>(impl_->resident_bytes) / kMiB,
+      static_cast<double>(memory_bytes() - impl_->resident_bytes) / kMiB,
+      static_cast<double>(bytes_read) / kMiB, impl_->failed_lookups.load(std::memory_order_relaxed),
+      impl_->cache_dir.string(), impl_->cache_note);
 }
 
 }  // namespace ochre

@@ -10,6 +10,12 @@
 // Texture coordinates: mesh uv follow the OpenGL/glTF convention (v = 0 at the BOTTOM row of the
 // image); OIIO's t runs down the image (t = 0 at the top row), so lookups use s = u, t = 1 - v.
 //
+// Memory: a texture whose MIP levels fit in the resident budget (as float; 512 MiB for all textures
+// together by default) is read into memory once (renderer/mip_pyramid.h) and looked up there, several
+// times faster than through the TextureSystem; larger ones (photogrammetry textures of 8k and more) stay
+// paged through OIIO's tile cache. The results agree to float rounding at level 0 and to the MIP
+// filtering's blend between levels otherwise.
+//
 // Threads: lookup() may be called concurrently from any number of threads (it uses per-thread OIIO
 // state and allocates nothing per call). add_texture() must not run concurrently with lookup(): add all
 // textures while loading the scene, then render.
@@ -33,7 +39,11 @@ class OiioTextureProvider final : public TextureProvider {
  public:
   // cache_dir empty = default_texture_cache_dir(). When that directory cannot be created or written,
   // <system temp dir>/ochre-textures is used instead (cache_dir() tells which, stats() says why).
-  explicit OiioTextureProvider(std::filesystem::path cache_dir = {});
+  // resident_budget_bytes: how many bytes of MIP levels (float) may be held in memory (0 = none: every
+  // lookup goes through the TextureSystem).
+  static constexpr std::size_t kDefaultResidentBudget = std::size_t{512} << 20;
+  explicit OiioTextureProvider(std::filesystem::path cache_dir = {},
+                               std::size_t resident_budget_bytes = kDefaultResidentBudget);
   ~OiioTextureProvider() override;
   OiioTextureProvider(const OiioTextureProvider&) = delete;
   OiioTextureProvider& operator=(const OiioTextureProvider&) = delete;
@@ -56,9 +66,12 @@ class OiioTextureProvider final : public TextureProvider {
 
   int texture_count() const;
   const std::filesystem::path& cache_dir() const;
-  // Memory held by OIIO's tile cache (ImageCache stat:cache_memory_used), in bytes.
+  // How many textures are resident in memory (the others are looked up through OIIO's tile cache).
+  int resident_count() const;
+  // Memory held by resident textures plus OIIO's tile cache (ImageCache stat:cache_memory_used), in bytes.
   std::size_t memory_bytes() const;
-  // One-line summary: textures, conversions, cache memory, bytes read, failed lookups, cache directory.
+  // One-line summary: textures, conversions, resident textures and their memory, cache memory, bytes read,
+  // failed lookups, cache directory.
   std::string stats() const;
 
  private:

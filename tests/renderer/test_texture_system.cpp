@@ -344,6 +344,67 @@ TEST(TextureSystem, ConcurrentLookupsMatchSequentialOnes) {
   EXPECT_NE(textures.stats().find("failed lookups 0"), std::string::npos) << textures.stats();
 }
 
+// Noise texture of a non-power-of-two size: its MIP levels have odd sizes.
+fs::path write_noise_exr(const fs::path& path, int width, int height) {
+  std::vector<float> rgb;
+  for (int i = 0; i < width * height * 3; ++i) rgb.push_back(static_cast<float>((i * 7919) % 101) / 100.0f);
+  return write_exr_rgb(path, width, height, rgb);
+}
+
+// Largest absolute difference between resident lookups and TextureSystem lookups at `footprint`.
+float max_resident_difference(const fs::path& file, float footprint, int lookups) {
+  const fs::path dir = file.parent_path();
+  OiioTextureProvider resident(dir / "cache");
+  OiioTextureProvider paged(dir / "cache", 0);
+  int channels = 0;
+  const int a = resident.add_texture(file, "auto", channels);
+  const int b = paged.add_texture(file, "auto", channels);
+  EXPECT_EQ(resident.resident_count(), 1);
+  EXPECT_EQ(paged.resident_count(), 0);
+  float worst = 0.0f;
+  for (int i = 0; i < lookups; ++i) {
+    const float u = static_cast<float>((i * 7) % 997) / 997.0f * 3.0f - 1.0f;  // beyond [0, 1): wrap
+    const float v = static_cast<float>((i * 13) % 991) / 991.0f * 3.0f - 1.0f;
+    const auto x = rgb_at(resident, a, u, v, footprint), y = rgb_at(paged, b, u, v, footprint);
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(x[c] - y[c]));
+  }
+  return worst;
+}
+
+TEST(TextureSystem, ResidentLookupsEqualTheTextureSystemAtLevelZero) {
+  const fs::path dir = test::scratch_dir();
+  const fs::path file = write_noise_exr(dir / "noise.exr", 13, 7);
+  EXPECT_LT(max_resident_difference(file, 0.0f, 2000), 2e-6f);
+}
+
+TEST(TextureSystem, ResidentMipFilteringStaysCloseToTheTextureSystem) {
+  // Both blend the same MIP levels (read from the same file); they may choose the level blend
+  // differently. Values lie in [0, 1]; neighbouring texels differ by up to 1.
+  const fs::path dir = test::scratch_dir();
+  const fs::path file = write_noise_exr(dir / "noise.exr", 64, 64);
+  for (float footprint : {0.02f, 0.05f, 0.2f, 1.0f}) {
+    const float worst = max_resident_difference(file, footprint, 2000);
+    std::printf("footprint %.2f: max |resident - TextureSystem| = %.4f\n", footprint, worst);
+    EXPECT_LT(worst, 0.08f) << "footprint " << footprint;
+  }
+}
+
+TEST(TextureSystem, ResidentBudgetDecidesWhichTexturesStayInMemory) {
+  const fs::path dir = test::scratch_dir();
+  const fs::path file = write_noise_exr(dir / "noise.exr", 16, 16);
+  // 16x16 RGB float + levels 8, 4, 2, 1: (256 + 64 + 16 + 4 + 1) x 12 bytes.
+  const std::size_t bytes = (256 + 64 + 16 + 4 + 1) * 12;
+  for (std::size_t budget : {bytes - 1, bytes}) {
+    OiioTextureProvider textures(dir / "cache", budget);
+    int channels = 0;
+    const int id = textures.add_texture(file, "auto", channels);
+    EXPECT_EQ(textures.resident_count(), budget >= bytes ? 1 : 0) << "budget " << budget;
+    for (float value : rgb_at(textures, id, 0.5f / 16.0f, 1.0f - 0.5f / 16.0f, 0.0f))
+      EXPECT_TRUE(std::isfinite(value));
+    EXPECT_EQ(rgb_at(textures, id, 0.5f / 16.0f, 1.0f - 0.5f / 16.0f, 0.0f)[0], 0.0f);  // texel 0: (0 % 101)
+  }
+}
+
 TEST(TextureSystem, LoadsSharedPhotoTexture) {
   OCHRE_REQUIRE_SHARED();
   const fs::path photo = test::shared_dir() / "assets/textures/mont-bego/roche_archer_2.jpg";
