@@ -28,9 +28,28 @@ float rotated(float u, int i) {
 
 }  // namespace
 
+namespace {
+
+// tanh(w (538 - lambda)) of the wavelength sampled by u: linear in u.
+float visible_tanh(float u) {
+  return static_cast<float>(kVisibleCdfOffset) - static_cast<float>(kVisibleCdfScale) * u;
+}
+
+float visible_wavelength_of_tanh(float x) {
+  const float lambda = static_cast<float>(kVisibleCenter) -
+                       static_cast<float>(0.5 / kVisibleWidth) * std::log((1.0f + x) / (1.0f - x));
+  return std::clamp(lambda, kLambdaMin, kLambdaMax);
+}
+
+// The density at that wavelength: norm / cosh^2(w (lambda - 538)) = norm (1 - x^2).
+float visible_pdf_of_tanh(float x) {
+  return static_cast<float>(kVisibleNorm) * (1.0f - x * x);
+}
+
+}  // namespace
+
 float sample_visible_wavelength(float u) {
-  const double lambda = kVisibleCenter - 138.888889 * std::atanh(kVisibleCdfOffset - kVisibleCdfScale * u);
-  return static_cast<float>(std::clamp(lambda, double(kLambdaMin), double(kLambdaMax)));
+  return visible_wavelength_of_tanh(visible_tanh(u));
 }
 
 float visible_wavelength_pdf(float lambda) {
@@ -42,8 +61,9 @@ float visible_wavelength_pdf(float lambda) {
 SampledWavelengths SampledWavelengths::sample_visible(float u) {
   SampledWavelengths w;
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    w.lambda_[i] = sample_visible_wavelength(rotated(u, i));
-    w.pdf_[i] = visible_wavelength_pdf(w.lambda_[i]);
+    const float x = visible_tanh(rotated(u, i));
+    w.lambda_[i] = visible_wavelength_of_tanh(x);
+    w.pdf_[i] = visible_pdf_of_tanh(x);
   }
   return w;
 }
