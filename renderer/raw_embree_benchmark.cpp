@@ -119,7 +119,7 @@ uint64_t trace_batch(RTCScene scene, const Bounds& b, uint64_t seed, uint64_t ba
 }  // namespace
 
 RawEmbreeResult benchmark_raw_embree(const std::vector<Mesh>& meshes, int threads, double seconds,
-                                     uint64_t seed) {
+                                     uint64_t seed, EmbreeSceneOptions options) {
   size_t triangles = 0;
   for (const Mesh& mesh : meshes) triangles += mesh.triangle_count();
   if (triangles == 0) throw std::runtime_error("raw Embree benchmark: the scene has no triangle");
@@ -133,6 +133,8 @@ RawEmbreeResult benchmark_raw_embree(const std::vector<Mesh>& meshes, int thread
   embree.device = rtcNewDevice(config.c_str());
   if (!embree.device) throw std::runtime_error("raw Embree benchmark: rtcNewDevice failed");
   embree.scene = rtcNewScene(embree.device);
+  if (options.robust) rtcSetSceneFlags(embree.scene, RTC_SCENE_FLAG_ROBUST);
+  if (options.high_quality) rtcSetSceneBuildQuality(embree.scene, RTC_BUILD_QUALITY_HIGH);
   attach_meshes(embree.device, embree.scene, meshes);
   const auto build_start = std::chrono::steady_clock::now();
   arena.execute([&] { rtcCommitScene(embree.scene); });

@@ -11,6 +11,14 @@
 
 namespace ochre {
 
+// The BVH options of a raw run. The renderer's Accel uses robust mode (watertight at shared edges) and
+// high build quality; Embree's defaults are neither. ochre-bench measures both, so the ratio it reports
+// is taken against the same BVH the renderer traces, and the cost of robust mode stays visible.
+struct EmbreeSceneOptions {
+  bool robust = true;
+  bool high_quality = true;
+};
+
 struct RawEmbreeResult {
   uint64_t rays = 0;           // rtcIntersect1 queries traced
   uint64_t hits = 0;           // of which hit a triangle
@@ -25,6 +33,6 @@ struct RawEmbreeResult {
 // whose directions are uniform on the sphere. Deterministic ray set for a given seed and batch count.
 // Throws std::runtime_error on an Embree error or when there is no triangle.
 RawEmbreeResult benchmark_raw_embree(const std::vector<Mesh>& meshes, int threads, double seconds,
-                                     uint64_t seed);
+                                     uint64_t seed, EmbreeSceneOptions options = {});
 
 }  // namespace ochre
