@@ -2,6 +2,10 @@
 
 #include <embree3/rtcore.h>
 #include <fmt/format.h>
+#include <tbb/enumerable_thread_specific.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <x86intrin.h>
+#endif
 
 #include <atomic>
 #include <bit>
@@ -34,6 +38,19 @@ struct EmbreeErrors {
   }
 };
 
+// A cheap monotonic tick counter: the time-stamp counter on x86 (constant rate on every CPU since ~2008;
+// a clock_gettime through a virtual machine's clock can cost more than the query it would time), else
+// steady_clock nanoseconds. Converted to seconds against steady_clock over the whole timed interval.
+int64_t ticks() {
+#if defined(__x86_64__) || defined(__i386__)
+  return static_cast<int64_t>(__rdtsc());
+#else
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+#endif
+}
+
 // Sums Embree's allocations and frees (the BVH, copied buffers, build scratch already freed).
 bool count_memory(void* user, ssize_t bytes, bool /*post*/) {
   static_cast<std::atomic<int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
@@ -50,6 +67,15 @@ struct Accel::Impl {
   double build_seconds = 0;
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  // Traversal timing (set_traversal_timing): per-thread tick sums and the interval's start.
+  std::atomic<bool> timing{false};
+  mutable tbb::enumerable_thread_specific<int64_t> traversal_ticks{0};
+  int64_t timing_start_ticks = 0;
+  std::chrono::steady_clock::time_point timing_start;
+
+  // Runs query() and, when timing is on, adds its duration to this thread's tick sum.
+  template <typename Query>
+  void traced(Query&& query) const;
 
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
@@ -80,6 +106,17 @@ struct Accel::Impl {
   }
 };
 
+template <typename Query>
+void Accel::Impl::traced(Query&& query) const {
+  if (!timing.load(std::memory_order_relaxed)) {
+    query();
+    return;
+  }
+  const int64_t start = ticks();
+  query();
+  traversal_ticks.local() += ticks() - start;
+}
+
 Accel::Accel(const std::vector<Mesh>& meshes) : impl_(std::make_unique<Impl>()) {
   for (size_t i = 0; i < meshes.size(); ++i) {
     meshes[i].validate(fmt::format("mesh {} '{}'", i, meshes[i].name));
@@ -109,6 +146,24 @@ Accel::Accel(const std::vector<Mesh>& meshes) : impl_(std::make_unique<Impl>()) 
 
 Accel::~Accel() = default;
 
+void Accel::set_traversal_timing(bool on) {
+  if (on) {
+    for (int64_t& n : impl_->traversal_ticks) n = 0;
+    impl_->timing_start_ticks = ticks();
+    impl_->timing_start = std::chrono::steady_clock::now();
+  }
+  impl_->timing.store(on, std::memory_order_relaxed);
+}
+
+double Accel::traversal_seconds() const {
+  int64_t total = 0;
+  for (const int64_t n : impl_->traversal_ticks) total += n;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - impl_->timing_start).count();
+  const double elapsed_ticks = static_cast<double>(ticks() - impl_->timing_start_ticks);
+  return elapsed_ticks > 0.0 ? static_cast<double>(total) * seconds / elapsed_ticks : 0.0;
+}
+
 std::optional<Hit> Accel::intersect(const Ray& ray) const {
   if (!(ray.tmax > ray.tmin)) return std::nullopt;
   RTCIntersectContext context;
@@ -125,7 +180,7 @@ std::optional<Hit> Accel::intersect(const Ray& ray) const {
   query.ray.mask = ~0u;
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context, &query);
+  impl_->traced([&] { rtcIntersect1(impl_->scene, &context, &query); });
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   // Embree's Ng for triangles is cross(v1 - v0, v2 - v0) (checked by the Accel tests).
   return Hit{query.ray.tfar, query.hit.geomID, query.hit.primID,
@@ -146,7 +201,7 @@ bool Accel::occluded(const Ray& ray) const {
   query.tnear = ray.tmin;
   query.tfar = ray.tmax;
   query.mask = ~0u;
-  rtcOccluded1(impl_->scene, &context, &query);
+  impl_->traced([&] { rtcOccluded1(impl_->scene, &context, &query); });
   return query.tfar == -INFINITY;  // Embree marks an occluded ray with tfar = -inf
 }
 

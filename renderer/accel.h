@@ -59,6 +59,13 @@ class Accel {
   // How many meshes needed their positions copied because they had no spare capacity.
   size_t copied_vertex_buffers() const;
 
+  // Traversal timing, for ochre-bench: while on, every query adds its wall-clock duration to a per-thread
+  // counter (two time-stamp-counter reads per query, ~10 ns each here). Switching it
+  // on resets the counters. Off by default; then a query pays one predictable branch.
+  void set_traversal_timing(bool on);
+  // Seconds spent inside Embree queries, summed over all threads, since timing was switched on.
+  double traversal_seconds() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -71,6 +71,12 @@ float TabulatedSpectrum::eval(float lambda_nm) const {
   return values_[i] + t * (values_[i + 1] - values_[i]);
 }
 
+SampledSpectrum TabulatedSpectrum::sample(const SampledWavelengths& lambda) const {
+  SampledSpectrum s;
+  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = TabulatedSpectrum::eval(lambda[i]);
+  return s;
+}
+
 SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column) {
   if (column == 0)
     throw std::runtime_error(table.source() + ": column 0 holds the wavelengths, not spectrum values");

@@ -121,6 +121,33 @@ TEST(Accel, OccludedAgreesWithIntersect) {
   EXPECT_LT(hits, 18000);
 }
 
+TEST(Accel, TraversalTimingCountsOnlyWhileOnAndResets) {
+  std::vector<Mesh> meshes = mesh_list(make_sphere(1, 64));
+  Accel accel(meshes);
+  Random random;
+  const auto trace = [&](int n) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < n; ++i) {
+      const Ray ray{random.in_ball(3), random.direction()};
+      (void)accel.intersect(ray);
+      (void)accel.occluded(ray);
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  trace(1000);
+  EXPECT_EQ(accel.traversal_seconds(), 0.0);  // off by default: nothing counted
+  accel.set_traversal_timing(true);
+  const double wall = trace(20000);
+  const double inside = accel.traversal_seconds();
+  EXPECT_GT(inside, 0.0);
+  EXPECT_LT(inside, wall * 1.05);  // the queries are part of the loop's time
+  accel.set_traversal_timing(false);
+  trace(1000);
+  EXPECT_NEAR(accel.traversal_seconds(), inside, 0.05 * inside + 1e-4);  // off: no more counting
+  accel.set_traversal_timing(true);
+  EXPECT_LT(accel.traversal_seconds(), 0.5 * inside + 1e-6);  // switching on resets the counters
+}
+
 // Rays aimed exactly at the diagonal that the plane's two triangles share must hit one of them.
 TEST(Accel, RaysAtASharedEdgeNeverSlipThrough) {
   const Transform tilt = Transform::translate({3, -7, 11}) * Transform::rotate(29, {0.3f, 1, 0.2f});
