@@ -21,13 +21,16 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, fl
   const double radians = rotation_degrees * M_PI / 180.0;
   cos_rotation_ = static_cast<float>(std::cos(radians));
   sin_rotation_ = static_cast<float>(std::sin(radians));
-  texel_spectra_.resize(map_->texel_count());
-  for (size_t i = 0; i < texel_spectra_.size(); ++i) {
-    const RGB& rgb = map_->texel(i);
-    const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
-    if (!(m > 0.0f)) continue;
-    texel_spectra_[i] = {RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m}), m};
-  }
+  texel_spectra_.resize(map_->texel_key_count() / Distribution2D::kCellsPerBlock);
+  for (int row = 0; row < map_->height(); ++row)
+    for (int column = 0; column < map_->width(); ++column) {
+      const RGB& rgb = map_->texel(column, row);
+      const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
+      if (!(m > 0.0f)) continue;
+      const size_t key = map_->texel_key(column, row);
+      texel_spectra_[key / Distribution2D::kCellsPerBlock].texel[key % Distribution2D::kCellsPerBlock] = {
+          RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m}), m};
+    }
 }
 
 // map_to_world is the right-handed rotation R_y(angle): (x, z) -> (c x + s z, -s x + c z);
@@ -42,8 +45,8 @@ Vec3 EnvironmentLight::map_to_world(const Vec3& d) const {
 
 // Exactly RGBIlluminantSpectrum(rgb).sample(lambda) (spectra/rgb_spectrum.cpp) without building the
 // object: m = 2 max(rgb), sigmoid polynomial of rgb / m, times m times D65; then the light's scale.
-SampledSpectrum EnvironmentLight::texel_radiance(size_t texel, const SampledWavelengths& lambda) const {
-  const TexelSpectrum& t = texel_spectra_[texel];
+SampledSpectrum EnvironmentLight::texel_radiance(size_t key, const SampledWavelengths& lambda) const {
+  const TexelSpectrum& t = texel_spectrum(key);
   if (!(t.m > 0.0f)) return SampledSpectrum(0.0f);
   SampledSpectrum s = d65_->sample(lambda);
   for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= t.m * t.poly.eval(lambda[i]);
@@ -60,10 +63,15 @@ std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,
     s.pdf = kUniformSpherePdf;
     return s;
   }
-  const EnvironmentMap::Sample m = map_->sample(u);
+  // The texel's spectrum is read after the inversion inside the block, which waits for the block's line:
+  // prefetching the block's 16 spectra (4 lines) as soon as the block is known overlaps the two misses.
+  const Distribution2D::BlockChoice block = map_->distribution().choose_block(u);
+  const char* spectra = reinterpret_cast<const char*>(&texel_spectra_[block.block]);
+  for (size_t offset = 0; offset < sizeof(BlockSpectra); offset += 64) __builtin_prefetch(spectra + offset);
+  const EnvironmentMap::Sample m = map_->sample_in_block(block);
   if (!(m.pdf > 0.0f)) return std::nullopt;
   s.wi = map_to_world(m.direction);
-  s.radiance = texel_radiance(m.index, lambda);
+  s.radiance = texel_radiance(m.key, lambda);
   s.pdf = m.pdf;
   return s;
 }
@@ -77,7 +85,7 @@ float EnvironmentLight::power() const {
 
 SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda) const {
   if (!map_) return radiance_->sample(lambda) * scale_;
-  return texel_radiance(map_->texel_index(world_to_map(direction)), lambda);
+  return texel_radiance(map_->texel_key(world_to_map(direction)), lambda);
 }
 
 SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda,
@@ -86,7 +94,7 @@ SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledW
     *pdf = kUniformSpherePdf;
     return radiance_->sample(lambda) * scale_;
   }
-  return texel_radiance(map_->texel_index_and_pdf(world_to_map(direction), pdf), lambda);
+  return texel_radiance(map_->texel_key_and_pdf(world_to_map(direction), pdf), lambda);
 }
 
 float EnvironmentLight::pdf(const Vec3& direction) const {

@@ -49,15 +49,23 @@ class EnvironmentLight final : public Light {
  private:
   Vec3 world_to_map(const Vec3& d) const;
   Vec3 map_to_world(const Vec3& d) const;
-  SampledSpectrum texel_radiance(size_t texel, const SampledWavelengths& lambda) const;
+  SampledSpectrum texel_radiance(size_t key, const SampledWavelengths& lambda) const;
 
   // Each texel's illuminant spectrum, fitted once at construction (the fit is a trilinear lookup in a
   // 9 MB table: per lookup it cost more cache misses than the rest of the environment's sampling).
+  // Stored by the map's texel key (block-major, environment_map.h): a block's 16 spectra fill 4 whole
+  // cache lines, so a lookup reads one line, shared with the texel's neighbours in its 4 x 4 block.
   struct TexelSpectrum {
     RGBSigmoidPolynomial poly;
-    float m = 0.0f;  // 2 max(rgb); 0 for a black texel
+    float m = 0.0f;  // 2 max(rgb); 0 for a black texel (and the padding keys)
   };
-  std::vector<TexelSpectrum> texel_spectra_;
+  struct alignas(64) BlockSpectra {
+    TexelSpectrum texel[Distribution2D::kCellsPerBlock];
+  };
+  const TexelSpectrum& texel_spectrum(size_t key) const {
+    return texel_spectra_[key / Distribution2D::kCellsPerBlock].texel[key % Distribution2D::kCellsPerBlock];
+  }
+  std::vector<BlockSpectra> texel_spectra_;  // one entry per block of the map's distribution
 
   SpectrumPtr radiance_;  // constant environment (null for a map)
   std::shared_ptr<const EnvironmentMap> map_;

@@ -35,6 +35,11 @@ double texel_solid_angle(int row, int width, int height) {
   return 2.0 * M_PI / width * (std::cos(theta0) - std::cos(theta1));
 }
 
+// dw = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv: the solid-angle density of a (u, v) density.
+float solid_angle_pdf(float pdf_uv, float sin_theta) {
+  return sin_theta > 0.0f ? pdf_uv / (2.0f * kPi * kPi * sin_theta) : 0.0f;
+}
+
 }  // namespace
 
 Vec2 direction_to_equirect_uv(const Vec3& direction) {
@@ -120,37 +125,37 @@ EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
 
 size_t EnvironmentMap::texel_index(const Vec3& direction) const {
   const Vec2 uv = direction_to_equirect_uv(direction);
-  const int column = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
-  const int row = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
-  return static_cast<size_t>(row) * width_ + column;
+  return static_cast<size_t>(distribution_.row_of(uv.y)) * width_ + distribution_.column_of(uv.x);
 }
 
-EnvironmentMap::Sample EnvironmentMap::sample(const Vec2& u) const {
-  const Distribution2D::Sample s = distribution_.sample(u);
+size_t EnvironmentMap::texel_key(const Vec3& direction) const {
+  const Vec2 uv = direction_to_equirect_uv(direction);
+  return distribution_.cell_key(distribution_.column_of(uv.x), distribution_.row_of(uv.y));
+}
+
+EnvironmentMap::Sample EnvironmentMap::sample_in_block(const Distribution2D::BlockChoice& choice) const {
+  const Distribution2D::Sample s = distribution_.sample_in_block(choice);
   Sample result;
   result.direction = equirect_uv_to_direction(s.uv);
   result.index = static_cast<size_t>(s.row) * width_ + s.column;
-  const float sin_theta = std::sin(kPi * s.uv.y);
-  // dw = sin(theta) dtheta dphi = 2 pi^2 sin(theta) du dv.
-  result.pdf = sin_theta > 0.0f ? s.pdf / (2.0f * kPi * kPi * sin_theta) : 0.0f;
+  result.key = s.key;
+  result.pdf = solid_angle_pdf(s.pdf, std::sin(kPi * s.uv.y));
   return result;
 }
 
-size_t EnvironmentMap::texel_index_and_pdf(const Vec3& direction, float* pdf) const {
+size_t EnvironmentMap::texel_key_and_pdf(const Vec3& direction, float* pdf) const {
   const Vec3 d = normalize(direction);
   const Vec2 uv = direction_to_equirect_uv(d);
-  const int column = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
-  const int row = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
-  const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
-  *pdf = sin_theta > 0.0f ? distribution_.pdf(uv) / (2.0f * kPi * kPi * sin_theta) : 0.0f;
-  return static_cast<size_t>(row) * width_ + column;
+  const size_t key = distribution_.cell_key(distribution_.column_of(uv.x), distribution_.row_of(uv.y));
+  *pdf = solid_angle_pdf(distribution_.pdf_of_key(key), std::sqrt(d.x * d.x + d.z * d.z));
+  return key;
 }
 
 float EnvironmentMap::pdf(const Vec3& direction) const {
   const Vec3 d = normalize(direction);
   const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
   if (!(sin_theta > 0.0f)) return 0.0f;
-  return distribution_.pdf(direction_to_equirect_uv(d)) / (2.0f * kPi * kPi * sin_theta);
+  return solid_angle_pdf(distribution_.pdf(direction_to_equirect_uv(d)), sin_theta);
 }
 
 }  // namespace ochre

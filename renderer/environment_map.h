@@ -23,6 +23,11 @@
 //   weight(texel) = (luminance + floor) * sin(theta at the row's centre),  floor = 1e-3 x mean luminance,
 //   pdf(direction) = pdf_uv / (2 pi^2 sin theta)                         (pbrt-v4, section 12.5.2).
 // The floor keeps every direction samplable (pdf > 0), so sample() alone is an unbiased estimator too.
+//
+// Texel keys: the distribution stores its densities in blocks of 4 x 4 texels (distribution_2d.h); a texel's
+// key is its position in that block-major order. Per-texel data a sample or an escaping ray reads next to the
+// density (EnvironmentLight's spectra) is stored by key, so that neighbouring texels share cache lines in
+// both directions. Keys lie in [0, texel_key_count()), which includes padding texels past the image's edges.
 
 #include <cstddef>
 #include <filesystem>
@@ -45,6 +50,7 @@ class EnvironmentMap {
   struct Sample {
     Vec3 direction;    // unit, map frame
     size_t index = 0;  // texel index (row * width + column): texel(index) is its value
+    size_t key = 0;    // the same texel's key
     float pdf = 0.0f;  // solid-angle density (0: the sample must be discarded)
   };
 
@@ -66,10 +72,18 @@ class EnvironmentMap {
   size_t texel_count() const { return rgb_.size(); }
   const RGB& texel(size_t index) const { return rgb_[index]; }
 
-  Sample sample(const Vec2& u) const;
-  // The texel along a direction of the map frame and the solid-angle density of sample() there (one
-  // (u, v) computation for both, as a ray escaping the scene needs).
-  size_t texel_index_and_pdf(const Vec3& direction, float* pdf) const;
+  // Texel keys (see above).
+  size_t texel_key(int column, int row) const { return distribution_.cell_key(column, row); }
+  size_t texel_key(const Vec3& direction) const;
+  size_t texel_key_count() const { return distribution_.key_count(); }
+
+  Sample sample(const Vec2& u) const { return sample_in_block(distribution_.choose_block(u)); }
+  // The second stage of sample(u) (Distribution2D::choose_block() is the first), for a caller that
+  // prefetches its per-texel data for the chosen block in between.
+  Sample sample_in_block(const Distribution2D::BlockChoice& choice) const;
+  // The key of the texel along a direction of the map frame and the solid-angle density of sample() there
+  // (one (u, v) computation for both, as a ray escaping the scene needs).
+  size_t texel_key_and_pdf(const Vec3& direction, float* pdf) const;
   // Solid-angle density of sample() producing `direction` (map frame, need not be normalised).
   float pdf(const Vec3& direction) const;
 
