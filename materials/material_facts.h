@@ -11,9 +11,12 @@ struct MaterialFacts {
   bool has_delta_lobes = false;      // some reachable lobe declares kLobeDelta
   bool needs_uv = false;             // a texture or uv node is reachable
   bool needs_vertex_colour = false;  // a vertex_colour node is reachable
-  bool spectrally_varying = false;   // some spectrum used is not constant over wavelength
-  int nodes_declared = 0;            // nodes written in the scene
-  int nodes_compiled = 0;  // declared nodes left as instructions after folding and dead-node removal
+  // No reachable node reads the shading point (uv, vertex colour, textures, position, normal): the result
+  // depends on the wavelengths alone, so e.g. an area light may reuse its emission for the same wavelengths.
+  bool uniform_over_surface = false;
+  bool spectrally_varying = false;  // some spectrum used is not constant over wavelength
+  int nodes_declared = 0;           // nodes written in the scene
+  int nodes_compiled = 0;           // declared nodes left as instructions after folding and dead-node removal
 };
 
 }  // namespace ochre

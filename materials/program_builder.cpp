@@ -168,6 +168,8 @@ class Builder {
     facts_.has_delta_lobes = (lobe_flags & kLobeDelta) != 0;
     facts_.needs_uv = (usage & kUsesUV) != 0;
     facts_.needs_vertex_colour = (usage & kUsesVertexColour) != 0;
+    facts_.uniform_over_surface =
+        (usage & (kUsesUV | kUsesVertexColour | kUsesTextures | kUsesGeometry)) == 0;
     facts_.nodes_declared = g_.declared;
   }
 

@@ -1,6 +1,9 @@
 #include "renderer/area_light.h"
 
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 
 #include "materials/closure.h"
@@ -25,10 +28,15 @@ float luminance_estimate(const std::function<SampledSpectrum(const SampledWavele
   return y / kSets;
 }
 
+uint64_t next_serial() {
+  static std::atomic<uint64_t> counter{0};
+  return counter.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+
 }  // namespace
 
 AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures)
-    : mesh_(mesh), material_(material), textures_(textures) {
+    : mesh_(mesh), material_(material), textures_(textures), serial_(next_serial()) {
   std::vector<double> areas(mesh.triangle_count());
   for (size_t i = 0; i < areas.size(); ++i) areas[i] = mesh.triangle_area(i);
   triangles_ = Distribution1D(areas);
@@ -51,11 +59,35 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
 SampledSpectrum AreaLight::emitted(const SurfacePoint& sp, const Vec3& to_viewer,
                                    const SampledWavelengths& lambda) const {
   if (dot(sp.ng, to_viewer) <= 0.0f) return SampledSpectrum(0.0f);
+  return material_.facts().uniform_over_surface ? uniform_emission(sp, lambda)
+                                                : evaluate_emission(sp, lambda);
+}
+
+SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const {
   thread_local LobeArena arena(4096);
   arena.reset();
   Closure closure;
   material_.evaluate(shading_context(sp, lambda, textures_), arena, closure);
   return closure.emission();
+}
+
+// A few entries per thread, keyed by the light's serial number (never reused, unlike an address) and the
+// wavelengths; replaced round-robin. Scenes with more uniform lights than entries still get the right
+// values, only fewer hits.
+SampledSpectrum AreaLight::uniform_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const {
+  struct Entry {
+    uint64_t light = 0;  // serial numbers start at 1
+    SampledSpectrum lambda, value;
+  };
+  constexpr size_t kEntries = 4;
+  thread_local std::array<Entry, kEntries> cache;
+  thread_local size_t next = 0;
+  for (const Entry& e : cache)
+    if (e.light == serial_ && e.lambda == lambda.lambda()) return e.value;
+  Entry& e = cache[next];
+  next = (next + 1) % kEntries;
+  e = {serial_, lambda.lambda(), evaluate_emission(sp, lambda)};
+  return e.value;
 }
 
 std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,

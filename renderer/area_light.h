@@ -3,6 +3,8 @@
 // one-sided (front face = counter-clockwise winding) and comes from the material graph, so
 // textured and spectral emission work the same as in camera rays.
 
+#include <cstdint>
+
 #include "materials/compiled_material.h"
 #include "materials/texture_provider.h"
 #include "renderer/accel.h"
@@ -21,7 +23,9 @@ class AreaLight final : public Light {
 
   // Solid-angle pdf of sampling point p (normal ng) from ref, given the point is on this light.
   float pdf(const Vec3& ref, const Vec3& p, const Vec3& ng) const;
-  // Emitted radiance at a point toward `to_viewer` (0 on the back side).
+  // Emitted radiance at a point toward `to_viewer` (0 on the back side). A material uniform over the
+  // surface (MaterialFacts::uniform_over_surface) is evaluated once per thread and set of wavelengths:
+  // a path keeps its wavelengths, and every light sample and light hit along it reuses the value.
   SampledSpectrum emitted(const SurfacePoint& sp, const Vec3& to_viewer,
                           const SampledWavelengths& lambda) const;
 
@@ -29,6 +33,10 @@ class AreaLight final : public Light {
   const Mesh& mesh_;
   const CompiledMaterial& material_;
   const TextureProvider* textures_;
+  uint64_t serial_;  // unique per AreaLight of the process: the key of the per-thread emission cache
+  SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
+  SampledSpectrum uniform_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
+
   Distribution1D triangles_;
   float total_area_ = 0.0f;
   float power_ = 0.0f;

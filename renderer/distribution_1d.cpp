@@ -31,6 +31,10 @@ size_t Distribution1D::sample(float u, float* u_remapped) const {
   // buckets), and the search on that range returns the same first CDF entry above u as a search of the whole
   // table.
   if (guide_.empty()) return sample_without_guide(u, u_remapped);  // all weights zero
+  if (pmf_.size() == 1) {  // one light, one emitting triangle: the search below would return the same
+    if (u_remapped) *u_remapped = std::clamp(u, 0.0f, 0.99999994f);
+    return 0;
+  }
   const size_t buckets = guide_.size() - 1;
   const double scaled = u > 0.0f ? static_cast<double>(u) * static_cast<double>(buckets) : 0.0;
   const size_t k = std::min(static_cast<size_t>(scaled), buckets - 1);

@@ -44,6 +44,7 @@ TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<f
     : lambda_(std::move(lambda_nm)), values_(std::move(values)) {
   validate(lambda_, values_);
   uniform_step_ = uniform_step(lambda_);
+  inverse_step_ = uniform_step_ > 0.0f ? 1.0f / uniform_step_ : 0.0f;
   is_constant_ = std::all_of(values_.begin(), values_.end(), [&](float v) { return v == values_.front(); });
   // Piecewise linear: the maximum over [360, 830] is at a knot inside the range or at an end.
   max_value_ = std::max(eval(kLambdaMin), eval(kLambdaMax));
@@ -54,21 +55,21 @@ TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<f
 float TabulatedSpectrum::eval(float lambda_nm) const {
   if (!(lambda_nm > lambda_.front())) return values_.front();  // also maps NaN to a finite value
   if (lambda_nm >= lambda_.back()) return values_.back();
-  std::size_t i;
-  if (uniform_step_ > 0.0f) {
-    i = std::min(static_cast<std::size_t>((lambda_nm - lambda_.front()) / uniform_step_), lambda_.size() - 2);
-    // Rounding of the division can land one knot off; step back or forward to the right interval.
-    if (lambda_nm < lambda_[i])
-      --i;
-    else if (lambda_nm >= lambda_[i + 1] && i + 2 < lambda_.size())
-      ++i;
-  } else {
-    i = static_cast<std::size_t>(std::upper_bound(lambda_.begin(), lambda_.end(), lambda_nm) -
-                                 lambda_.begin()) -
-        1;
-  }
+  if (uniform_step_ > 0.0f) return eval_uniform(lambda_nm);
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(lambda_.begin(), lambda_.end(), lambda_nm) -
+                                                 lambda_.begin()) -
+                        1;
   const float t = (lambda_nm - lambda_[i]) / (lambda_[i + 1] - lambda_[i]);
   return values_[i] + t * (values_[i + 1] - values_[i]);
+}
+
+float TabulatedSpectrum::eval_uniform(float lambda_nm) const {
+  const float position = (lambda_nm - lambda_.front()) * inverse_step_;
+  const int last = static_cast<int>(values_.size()) - 2;
+  const int i = std::min(static_cast<int>(position), last);
+  const float t = std::min(position - static_cast<float>(i), 1.0f);
+  const float* v = values_.data() + i;
+  return v[0] + t * (v[1] - v[0]);
 }
 
 SampledSpectrum TabulatedSpectrum::sample(const SampledWavelengths& lambda) const {

@@ -45,6 +45,11 @@ class TabulatedSpectrum final : public Spectrum {
   bool is_constant_ = false;
   // Equally spaced tables (the common case) are indexed directly instead of searched.
   float uniform_step_ = 0.0f;
+  float inverse_step_ = 0.0f;
+  // Value of an equally spaced table: position in steps from the first knot, no division, no search
+  // (the interpolation weight is the fractional position, equal to the one from the stored knots up to
+  // rounding). The caller has handled wavelengths outside the table.
+  float eval_uniform(float lambda_nm) const;
 };
 
 SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column);

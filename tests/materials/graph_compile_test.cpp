@@ -99,6 +99,7 @@ TEST(Facts, Lambert) {
   EXPECT_FALSE(f.needs_uv);
   EXPECT_FALSE(f.needs_vertex_colour);
   EXPECT_FALSE(f.spectrally_varying);
+  EXPECT_TRUE(f.uniform_over_surface);
   EXPECT_EQ(f.nodes_declared, 1);
   EXPECT_EQ(f.nodes_compiled, 1);
 }
@@ -149,16 +150,19 @@ TEST(Facts, TexturesAndVertexColours) {
                               ->facts();
   EXPECT_TRUE(t.needs_uv);
   EXPECT_FALSE(t.needs_vertex_colour);
+  EXPECT_FALSE(t.uniform_over_surface);
   const MaterialFacts v = compile(R"({"nodes": {"v": {"type": "vertex_colour"},
                                                 "d": {"type": "lambert", "color": {"link": "v"}}}, "output": "d"})")
                               ->facts();
   EXPECT_FALSE(v.needs_uv);
   EXPECT_TRUE(v.needs_vertex_colour);
+  EXPECT_FALSE(v.uniform_over_surface);
   const MaterialFacts u = compile(R"({"nodes": {"u": {"type": "uv"},
                                                 "x": {"type": "multiply", "a": {"link": "u"}, "b": 0},
                                                 "d": {"type": "lambert", "color": 0.5}}, "output": "d"})")
                               ->facts();
   EXPECT_FALSE(u.needs_uv) << "the uv node is dead";
+  EXPECT_TRUE(u.uniform_over_surface) << "the uv node is dead";
 }
 
 // A closure added through the registry changes the facts through its lobe flags alone.

@@ -82,6 +82,16 @@ TEST(Distribution1D, RemappedUStaysInsideTheItem) {
   EXPECT_FLOAT_EQ(r, 0.5f);
 }
 
+TEST(Distribution1D, OneItemPassesUThroughUnchanged) {
+  // The one-item shortcut must give the bits of the general search: item 0 and u itself.
+  const Distribution1D d({2.5});
+  for (float u : probe_values(1)) {
+    float r = -1.0f;
+    ASSERT_EQ(d.sample(u, &r), 0u);
+    ASSERT_EQ(r, u);
+  }
+}
+
 TEST(Distribution1D, AllZeroWeightsStillReturnAValidIndex) {
   const Distribution1D d({0.0, 0.0, 0.0});
   EXPECT_TRUE(d.empty());

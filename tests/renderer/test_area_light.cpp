@@ -1,0 +1,75 @@
+// AreaLight: one-sided emission, and the per-thread reuse of a uniform material's emission for the
+// wavelengths it was evaluated at (it must always equal a fresh evaluation of the material).
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "materials/closure.h"
+#include "materials/lobe_arena.h"
+#include "materials/material_compiler.h"
+#include "renderer/area_light.h"
+#include "renderer/procedural_shapes.h"
+#include "renderer/surface_shading.h"
+
+namespace ochre {
+namespace {
+
+class NoFiles : public ResourceResolver {
+ public:
+  std::filesystem::path resolve(const std::string& path) const override { return path; }
+  int texture(const std::filesystem::path&, const std::string&, int&) override {
+    throw std::runtime_error("no textures in this test");
+  }
+};
+
+std::shared_ptr<const CompiledMaterial> material(const char* json) {
+  NoFiles files;
+  return compile_material(nlohmann::json::parse(json), "light", "test.json", files);
+}
+
+SampledSpectrum fresh_emission(const CompiledMaterial& m, const SurfacePoint& sp,
+                               const SampledWavelengths& l) {
+  LobeArena arena(4096);
+  Closure closure;
+  m.evaluate(shading_context(sp, l, nullptr), arena, closure);
+  return closure.emission();
+}
+
+TEST(AreaLight, UniformEmissionIsReusedOnlyForTheSameLightAndWavelengths) {
+  const Mesh plane = make_plane({1, 1});
+  const auto warm = material(R"({"type": "emission", "color": [0.9, 0.5, 0.2], "strength": 3})");
+  const auto cool = material(R"({"type": "emission", "color": [0.1, 0.4, 0.9], "strength": 2})");
+  ASSERT_TRUE(warm->facts().uniform_over_surface);
+  const AreaLight a(plane, *warm, nullptr), b(plane, *cool, nullptr);
+  const SurfacePoint sp = surface_point(plane, 0, 0.2f, 0.3f);
+  // More (light, wavelengths) pairs than cache entries, visited in an order that revisits each.
+  const float us[] = {0.1f, 0.7f, 0.1f, 0.35f, 0.9f, 0.7f, 0.55f, 0.1f, 0.9f};
+  for (float u : us) {
+    const SampledWavelengths l = SampledWavelengths::sample_visible(u);
+    EXPECT_EQ(a.emitted(sp, sp.ng, l), fresh_emission(*warm, sp, l)) << "u " << u;
+    EXPECT_EQ(b.emitted(sp, sp.ng, l), fresh_emission(*cool, sp, l)) << "u " << u;
+  }
+  // A light made later at the same address is not served the old light's values.
+  const SampledWavelengths l = SampledWavelengths::sample_visible(0.1f);
+  {
+    const AreaLight first(plane, *warm, nullptr);
+    (void)first.emitted(sp, sp.ng, l);
+  }
+  const AreaLight second(plane, *cool, nullptr);
+  EXPECT_EQ(second.emitted(sp, sp.ng, l), fresh_emission(*cool, sp, l));
+}
+
+TEST(AreaLight, EmissionIsOneSided) {
+  const Mesh plane = make_plane({1, 1});
+  const auto m = material(R"({"type": "emission", "strength": 3})");
+  const AreaLight light(plane, *m, nullptr);
+  const SurfacePoint sp = surface_point(plane, 1, 0.3f, 0.3f);
+  const SampledWavelengths l = SampledWavelengths::sample_visible(0.4f);
+  EXPECT_GT(light.emitted(sp, sp.ng, l)[0], 0.0f);
+  EXPECT_EQ(light.emitted(sp, -sp.ng, l), SampledSpectrum(0.0f));
+}
+
+}  // namespace
+}  // namespace ochre
