@@ -5,12 +5,12 @@
 namespace ochre {
 namespace {
 
+// Bits within each byte reversed by three swaps, then the byte order by one bswap instruction.
 constexpr uint32_t reverse_bits(uint32_t x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  return __builtin_bswap32(x);
 }
 
 // Sobol dimension 1 multiplies the index bits by the upper triangular Pascal matrix mod 2,
