@@ -146,9 +146,11 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     const auto hit = scene_.accel->intersect(ray);
     if (!hit) {
       if (scene_.environment) {
+        // After the camera or a delta lobe the environment could not have been sampled: no MIS, and no
+        // pdf lookup (one cache miss fewer for rays that see the sky directly).
         float env_pdf = 0.0f;
-        const SampledSpectrum Le = scene_.environment->radiance(ray.dir, lambda, &env_pdf);
-        // After the camera or a delta lobe the environment could not have been sampled: no MIS.
+        const SampledSpectrum Le = specular ? scene_.environment->radiance(ray.dir, lambda)
+                                            : scene_.environment->radiance(ray.dir, lambda, &env_pdf);
         const float w =
             specular ? 1.0f : power_heuristic(prev_pdf, scene_.light_pmf(scene_.environment_light) * env_pdf);
         beta.receive(IncomingLight{Le * w, false, {}}, -ray.dir, L);
