@@ -100,6 +100,8 @@ float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambd
 }
 
 float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  // One lobe: its selection probability is 1 (or nothing can be sampled), so no albedo estimates.
+  if (count_ == 1) return lobes_[0].lobe->is_delta() ? 0.0f : lobes_[0].lobe->pdf(wo, wi, lambda);
   std::array<float, kMaxLobes> p{};
   const float total = selection_weights(wo, lambda, p);
   if (total <= 0.0f) return 0.0f;
@@ -111,6 +113,7 @@ float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lam
 
 std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const Vec2& u,
                                           const SampledWavelengths& lambda) const {
+  if (count_ == 1) return sample_only_lobe(wo, u_choice, u, lambda);
   std::array<float, kMaxLobes> p{};
   const float total = selection_weights(wo, lambda, p);
   if (total <= 0.0f) return std::nullopt;
@@ -143,6 +146,22 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
   s->pdf = pdf;
   s->weight = eval(wo, s->wi, lambda) * (abs_cos_theta(s->wi) / pdf);
   s->has_mueller = false;  // the mixture's Mueller response comes from eval_mueller() when needed
+  return s;
+}
+
+// The common case of one lobe: no choice to make, and the mixture is the lobe itself, so its own sample
+// (direction, pdf, f |cos| / pdf) is the closure's, times the lobe weight. Same estimator as the general
+// path, without a second evaluation of the lobe's pdf and value in the sampled direction.
+std::optional<LobeSample> Closure::sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
+                                                    const SampledWavelengths& lambda) const {
+  const WeightedLobe& only = lobes_[0];
+  std::optional<LobeSample> s = only.lobe->sample(wo, u_choice, u, lambda);
+  if (!s || !(s->pdf > 0.0f)) return std::nullopt;
+  s->weight = s->weight * only.weight;
+  if (!s->delta)
+    s->has_mueller = false;  // as in the mixture: eval_mueller() gives the response when it is needed
+  else if (s->has_mueller)
+    s->mueller.m = s->mueller.m * only.weight;
   return s;
 }
 

@@ -51,6 +51,8 @@ class Closure {
                                    const SampledWavelengths& lambda) const;
 
  private:
+  std::optional<LobeSample> sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
+                                             const SampledWavelengths& lambda) const;
   // Lobe selection probabilities; returns their sum (0 when nothing can be sampled).
   float selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
                           std::array<float, kMaxLobes>& p) const;

@@ -4,18 +4,31 @@
 
 namespace ochre {
 
+namespace {
+
+// cos and sin of |x| <= pi/4 by their Taylor series to x^10 and x^9: the first omitted terms are below
+// 1.2e-10 and 1.8e-9, far under float rounding, at a fraction of the cost of a general sincosf.
+Vec2 cos_sin_quarter_pi(float x) {
+  const float x2 = x * x;
+  const float c =
+      1.0f + x2 * (-1.0f / 2 + x2 * (1.0f / 24 + x2 * (-1.0f / 720 + x2 * (1.0f / 40320 - x2 / 3628800))));
+  const float s =
+      x * (1.0f + x2 * (-1.0f / 6 + x2 * (1.0f / 120 + x2 * (-1.0f / 5040 + x2 * (1.0f / 362880)))));
+  return {c, s};
+}
+
+}  // namespace
+
 Vec2 sample_uniform_disk_concentric(const Vec2& u) {
   const float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
   if (ox == 0.0f && oy == 0.0f) return {0.0f, 0.0f};
-  float r, theta;
-  if (std::fabs(ox) > std::fabs(oy)) {
-    r = ox;
-    theta = (kPi / 4.0f) * (oy / ox);
-  } else {
-    r = oy;
-    theta = kPi / 2.0f - (kPi / 4.0f) * (ox / oy);
+  if (std::fabs(ox) > std::fabs(oy)) {  // theta = pi/4 (oy / ox) in [-pi/4, pi/4]
+    const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (oy / ox));
+    return {ox * cs.x, ox * cs.y};
   }
-  return {r * std::cos(theta), r * std::sin(theta)};
+  // theta = pi/2 - phi with phi = pi/4 (ox / oy): cos theta = sin phi, sin theta = cos phi.
+  const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (ox / oy));
+  return {oy * cs.y, oy * cs.x};
 }
 
 Vec3 sample_cosine_hemisphere(const Vec2& u) {

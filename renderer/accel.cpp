@@ -250,16 +250,27 @@ bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, 
 
 }  // namespace
 
+TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
+  const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
+  const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
+  TrianglePoint t;
+  t.p = p[0] * (1.0f - b1 - b2) + p[1] * b1 + p[2] * b2;
+  const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+  t.double_area = length(n);
+  t.ng = t.double_area > 0.0f && std::isfinite(t.double_area) ? n / t.double_area : Vec3(0, 0, 0);
+  return t;
+}
+
 SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
   const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
   const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
   const float b0 = 1.0f - b1 - b2;
 
   SurfacePoint sp;
-  sp.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
-  const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
-  const float double_area = length(n);
-  sp.ng = double_area > 0.0f && std::isfinite(double_area) ? n / double_area : Vec3(0, 0, 0);
+  const TrianglePoint t = triangle_point(mesh, triangle, b1, b2);
+  sp.p = t.p;
+  sp.ng = t.ng;
+  const float double_area = t.double_area;
   sp.ns = sp.ng;
   if (!mesh.normals.empty()) {
     const Vec3 ns = interpolate(mesh.normals, corner, b0, b1, b2);

@@ -84,6 +84,15 @@ struct SurfacePoint {
   float area_scale_uv = 0;  // world area per unit uv area of the triangle (0 without usable UVs)
 };
 
+// Position and unit geometric normal (0 for a degenerate triangle) at barycentrics (b1, b2) of a triangle:
+// the part of a SurfacePoint that light sampling needs.
+struct TrianglePoint {
+  Vec3 p;
+  Vec3 ng;
+  float double_area = 0;  // |cross(p1 - p0, p2 - p0)|
+};
+TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2);
+
 // Shading point of a hit returned by Accel::intersect on the same meshes. The ray is only used
 // as a fallback for p when the triangle is degenerate.
 // The point at barycentrics (b1, b2) of a triangle; ng is 0 for a degenerate triangle.

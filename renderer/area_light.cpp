@@ -59,8 +59,7 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
 SampledSpectrum AreaLight::emitted(const SurfacePoint& sp, const Vec3& to_viewer,
                                    const SampledWavelengths& lambda) const {
   if (dot(sp.ng, to_viewer) <= 0.0f) return SampledSpectrum(0.0f);
-  return material_.facts().uniform_over_surface ? uniform_emission(sp, lambda)
-                                                : evaluate_emission(sp, lambda);
+  return material_.facts().uniform_over_surface ? uniform_emission(lambda) : evaluate_emission(sp, lambda);
 }
 
 SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const {
@@ -74,7 +73,7 @@ SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const Sampl
 // A few entries per thread, keyed by the light's serial number (never reused, unlike an address) and the
 // wavelengths; replaced round-robin. Scenes with more uniform lights than entries still get the right
 // values, only fewer hits.
-SampledSpectrum AreaLight::uniform_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const {
+SampledSpectrum AreaLight::uniform_emission(const SampledWavelengths& lambda) const {
   struct Entry {
     uint64_t light = 0;  // serial numbers start at 1
     SampledSpectrum lambda, value;
@@ -86,7 +85,7 @@ SampledSpectrum AreaLight::uniform_emission(const SurfacePoint& sp, const Sample
     if (e.light == serial_ && e.lambda == lambda.lambda()) return e.value;
   Entry& e = cache[next];
   next = (next + 1) % kEntries;
-  e = {serial_, lambda.lambda(), evaluate_emission(sp, lambda)};
+  e = {serial_, lambda.lambda(), evaluate_emission(SurfacePoint{}, lambda)};  // reads no point
   return e.value;
 }
 
@@ -96,7 +95,8 @@ std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,
   float u_tri = 0.0f;
   const size_t tri = triangles_.sample(u.x, &u_tri);
   const Vec2 b = sample_uniform_triangle({u_tri, u.y});
-  const SurfacePoint t = surface_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y);
+  // Position and normal are all a uniform emitter needs; a textured one gets the whole shading point.
+  const TrianglePoint t = triangle_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y);
   if (dot(t.ng, t.ng) == 0.0f) return std::nullopt;
 
   const Vec3 d = t.p - ref;
@@ -108,7 +108,9 @@ std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,
   const float cos_light = -dot(t.ng, s.wi);
   if (cos_light <= 0.0f) return std::nullopt;  // back side: one-sided emitter
   s.pdf = dist2 / (cos_light * total_area_);   // area pdf 1/A converted to solid angle
-  s.radiance = emitted(t, -s.wi, lambda);
+  s.radiance = material_.facts().uniform_over_surface
+                   ? uniform_emission(lambda)
+                   : evaluate_emission(surface_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y), lambda);
   s.light_normal = t.ng;
   return s;
 }

@@ -35,7 +35,7 @@ class AreaLight final : public Light {
   const TextureProvider* textures_;
   uint64_t serial_;  // unique per AreaLight of the process: the key of the per-thread emission cache
   SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
-  SampledSpectrum uniform_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
+  SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
 
   Distribution1D triangles_;
   float total_area_ = 0.0f;

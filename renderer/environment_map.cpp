@@ -139,7 +139,9 @@ EnvironmentMap::Sample EnvironmentMap::sample_in_block(const Distribution2D::Blo
   result.direction = equirect_uv_to_direction(s.uv);
   result.index = static_cast<size_t>(s.row) * width_ + s.column;
   result.key = s.key;
-  result.pdf = solid_angle_pdf(s.pdf, std::sin(kPi * s.uv.y));
+  // sin theta from the direction, as texel_key_and_pdf() computes it for a ray escaping that way.
+  const Vec3& d = result.direction;
+  result.pdf = solid_angle_pdf(s.pdf, std::sqrt(d.x * d.x + d.z * d.z));
   return result;
 }
 

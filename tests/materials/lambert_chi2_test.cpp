@@ -46,6 +46,31 @@ Vec3 direction(float theta, float phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
+// The concentric disk map computes its sines and cosines by short series: every point must be the
+// Shirley-Chiu point within float rounding, on the unit disk, over a grid that includes the diagonals
+// (where the two branches meet) and the edges of the square.
+TEST(Sampling, ConcentricDiskMatchesTheTrigonometricMapping) {
+  constexpr int kSteps = 257;
+  float worst = 0.0f;
+  for (int i = 0; i < kSteps; ++i)
+    for (int j = 0; j < kSteps; ++j) {
+      const Vec2 u{i / float(kSteps - 1) * 0.99999994f, j / float(kSteps - 1) * 0.99999994f};
+      const double ox = 2.0 * u.x - 1.0, oy = 2.0 * u.y - 1.0;
+      double rx = 0.0, ry = 0.0;
+      if (ox != 0.0 || oy != 0.0) {
+        const bool first = std::fabs(ox) > std::fabs(oy);
+        const double r = first ? ox : oy;
+        const double theta = first ? M_PI / 4 * (oy / ox) : M_PI / 2 - M_PI / 4 * (ox / oy);
+        rx = r * std::cos(theta);
+        ry = r * std::sin(theta);
+      }
+      const Vec2 d = sample_uniform_disk_concentric(u);
+      worst = std::max(worst, static_cast<float>(std::hypot(d.x - rx, d.y - ry)));
+      ASSERT_LE(d.x * d.x + d.y * d.y, 1.0f + 1e-6f);
+    }
+  EXPECT_LT(worst, 4e-7f);
+}
+
 TEST(Chi2, IncompleteGammaMatchesKnownValues) {
   // Q(1, x) = e^-x; chi-square with 2 dof: p = e^(-x/2); Q(0.5, x) = erfc(sqrt(x)).
   EXPECT_NEAR(regularized_gamma_q(1.0, 2.5), std::exp(-2.5), 1e-12);

@@ -256,6 +256,30 @@ TEST(Accel, SurfacePointInterpolatesColoursAndNormals) {
   EXPECT_NEAR(length(sp.dpdu), 1.0f, 1e-6f);
 }
 
+// Light sampling reads only the position and geometric normal of a point: triangle_point() must give
+// exactly those of surface_point(), and a zero normal for a degenerate triangle.
+TEST(Accel, TrianglePointIsThePositionAndNormalOfTheSurfacePoint) {
+  Mesh tri;
+  tri.positions = {{0.1f, -2, 3}, {1.7f, 0.3f, 2.5f}, {-0.4f, 1.2f, 3.9f}, {2, 2, 2}};
+  tri.indices = {0, 1, 2, 3, 3, 3};
+  tri.normals = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {0, 0, 1}};
+  for (float b1 : {0.0f, 0.2f, 0.7f})
+    for (float b2 : {0.0f, 0.1f, 0.3f}) {
+      const SurfacePoint sp = surface_point(tri, 0, b1, b2);
+      const TrianglePoint t = triangle_point(tri, 0, b1, b2);
+      EXPECT_EQ(t.p.x, sp.p.x);
+      EXPECT_EQ(t.p.y, sp.p.y);
+      EXPECT_EQ(t.p.z, sp.p.z);
+      EXPECT_EQ(t.ng.x, sp.ng.x);
+      EXPECT_EQ(t.ng.y, sp.ng.y);
+      EXPECT_EQ(t.ng.z, sp.ng.z);
+      EXPECT_NEAR(length(t.ng), 1.0f, 1e-6f);
+    }
+  const TrianglePoint degenerate = triangle_point(tri, 1, 0.3f, 0.3f);
+  EXPECT_EQ(dot(degenerate.ng, degenerate.ng), 0.0f);
+  EXPECT_EQ(degenerate.double_area, 0.0f);
+}
+
 TEST(Accel, InvalidMeshesAreRejected) {
   Mesh bad;
   bad.name = "broken";
