@@ -20,6 +20,24 @@ TEST(Film, MeanAndVariance) {
   EXPECT_EQ(film.sample_count(0, 0), 2u);
 }
 
+// Samples become fixed point (units of 2^-40) rounded to nearest, ties to even, on both conversion paths:
+// ordinary values and values too large for a 64-bit integer (1e15 is the clamp).
+TEST(Film, FixedPointRoundsToNearestEven) {
+  const float unit = 0x1p-40f;
+  struct Case {
+    float value;
+    double expected;
+  };
+  for (const Case c : {Case{2.5f * unit, 2 * 0x1p-40}, Case{3.5f * unit, 4 * 0x1p-40},
+                       Case{-2.5f * unit, -2 * 0x1p-40}, Case{0.75f * unit, 1 * 0x1p-40}, Case{4e6f, 4e6},
+                       Case{1e7f, 1e7}, Case{-3e9f, -3e9}, Case{1e20f, 1e15}}) {
+    Film film(1, 1);
+    film.add_sample(0, 0, {c.value, 0, 0});
+    EXPECT_EQ(static_cast<double>(film.mean(0, 0).x), static_cast<double>(static_cast<float>(c.expected)))
+        << c.value;
+  }
+}
+
 TEST(Film, SumIsIndependentOfOrderAndSplit) {
   std::mt19937 rng(7);
   std::lognormal_distribution<float> value(0.0f, 3.0f);  // wide dynamic range, like fireflies
