@@ -1,13 +1,13 @@
 // ochre-bench: renderer throughput against raw Embree on the same triangles (docs/tools.md).
-//   ochre-bench [SCENE.json ...] [--spp N] [--threads N] [--seconds S]
+//   ochre-bench [SCENE.json ...] [--spp N] [--threads N] [--seconds S] [--repeat N]
 //   ochre-bench --modes [SCENE.json ...] [--repeat N]
 // For each scene: renders it (samples/s, rays/s counting intersect and occlusion queries), then traces
 // random incoherent rays through an Embree BVH of the same meshes, built with the renderer's options (robust,
 // high quality) and with Embree's defaults (renderer/raw_embree_benchmark.h)
-// and prints renderer rays/s / raw rays/s. With --modes: renders each scene in polarization modes off,
-// intensity and stokes (interleaved, N times), prints the median time per sample of each as a ratio to
-// off (goals: intensity <= 1.3x, stokes <= 2x) and the difference mode off makes to the mean luminance.
-// Exit codes: 0 = done, 2 = bad input or usage.
+// and prints renderer rays/s / raw rays/s: the median and range over N interleaved rounds. With --modes:
+// renders each scene in polarization modes off, intensity and stokes (interleaved, N times), prints the
+// median time per sample of each as a ratio to off (goals: intensity <= 1.3x, stokes <= 2x) and the
+// difference mode off makes to the mean luminance. Exit codes: 0 = done, 2 = bad input or usage.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -92,7 +92,17 @@ void report_traversal_share(ochre::Scene& scene, const ochre::RawEmbreeResult& r
       1e9 * raw.threads / raw.rays_per_second(), 100.0 * ceiling);
 }
 
-// Returns the renderer / raw ratio of one scene.
+// Median and range of a set of measurements.
+struct Spread {
+  double median = 0, min = 0, max = 0;
+};
+Spread spread(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return {v[v.size() / 2], v.front(), v.back()};
+}
+
+// Returns the median renderer / raw ratio of one scene over --repeat rounds. Each round renders the scene
+// and then traces the raw rays, so a change in the machine's load hits both halves of its ratio.
 double bench_scene(const BenchCommand& cmd, const std::string& file) {
   ochre::SceneOverrides overrides;
   overrides.spp = cmd.spp;
@@ -100,33 +110,46 @@ double bench_scene(const BenchCommand& cmd, const std::string& file) {
   const auto scene = ochre::load_scene(file, overrides);
   size_t triangles = 0;
   for (const ochre::Mesh& mesh : scene->meshes) triangles += mesh.triangle_count();
-  fmt::print("{}: {} meshes, {} triangles, {}x{} at {} spp\n", file, scene->meshes.size(), triangles,
-             scene->settings.width, scene->settings.height, scene->settings.spp);
+  fmt::print("{}: {} meshes, {} triangles, {}x{} at {} spp, {} round(s)\n", file, scene->meshes.size(),
+             triangles, scene->settings.width, scene->settings.height, scene->settings.spp, cmd.repeat);
   std::fflush(stdout);
 
-  ochre::Film film(scene->settings.width, scene->settings.height);
-  const ochre::RenderStats stats = ochre::render(*scene, film);
-  fmt::print("  renderer:  {:.3f} s on {} threads, {} samples/s, {} rays/s ({} intersect + {} occlusion)\n",
-             stats.seconds, stats.threads, rate(stats.samples_per_second()), rate(stats.rays_per_second()),
-             stats.rays, stats.shadow_rays);
-  std::fflush(stdout);
-
-  // Yardstick: the same triangles in a BVH built with the renderer's options (robust, high quality);
-  // Embree's default options are traced too, to show what robust mode costs.
-  const ochre::RawEmbreeResult raw =
-      ochre::benchmark_raw_embree(scene->meshes, stats.threads, cmd.seconds, cmd.seed, {true, true});
-  print_raw("raw Embree (renderer's BVH options: robust, high quality)", raw);
+  std::vector<double> ratios, renderer_rates, raw_rates;
+  ochre::RawEmbreeResult raw;
+  for (int round = 0; round < cmd.repeat; ++round) {
+    ochre::Film film(scene->settings.width, scene->settings.height);
+    const ochre::RenderStats stats = ochre::render(*scene, film);
+    fmt::print("  renderer:  {:.3f} s on {} threads, {} samples/s, {} rays/s ({} intersect + {} occlusion)\n",
+               stats.seconds, stats.threads, rate(stats.samples_per_second()), rate(stats.rays_per_second()),
+               stats.rays, stats.shadow_rays);
+    std::fflush(stdout);
+    // Yardstick: the same triangles in a BVH built with the renderer's options (robust, high quality).
+    raw = ochre::benchmark_raw_embree(scene->meshes, stats.threads, cmd.seconds, cmd.seed, {true, true});
+    print_raw("raw Embree (renderer's BVH options: robust, high quality)", raw);
+    renderer_rates.push_back(stats.rays_per_second());
+    raw_rates.push_back(raw.rays_per_second());
+    ratios.push_back(raw.rays_per_second() > 0 ? stats.rays_per_second() / raw.rays_per_second() : 0.0);
+    std::fflush(stdout);
+  }
+  // Embree's default options, once, to show what robust mode costs.
   const ochre::RawEmbreeResult plain =
-      ochre::benchmark_raw_embree(scene->meshes, stats.threads, cmd.seconds, cmd.seed, {false, false});
+      ochre::benchmark_raw_embree(scene->meshes, raw.threads, cmd.seconds, cmd.seed, {false, false});
   print_raw("raw Embree (Embree's default options)", plain);
-  const double ratio = raw.rays_per_second() > 0 ? stats.rays_per_second() / raw.rays_per_second() : 0.0;
+  const Spread ratio = spread(ratios), renderer_rate = spread(renderer_rates), raw_rate = spread(raw_rates);
   const double plain_ratio =
-      plain.rays_per_second() > 0 ? stats.rays_per_second() / plain.rays_per_second() : 0.0;
+      plain.rays_per_second() > 0 ? renderer_rate.median / plain.rays_per_second() : 0.0;
+  if (cmd.repeat > 1)
+    fmt::print("  median of {} rounds: renderer {} rays/s ({} .. {}), raw {} rays/s ({} .. {})\n", cmd.repeat,
+               rate(renderer_rate.median), rate(renderer_rate.min), rate(renderer_rate.max),
+               rate(raw_rate.median), rate(raw_rate.min), rate(raw_rate.max));
   fmt::print(
-      "  ratio renderer/raw rays/s: {:.1f} % (goal >= {:.0f} %){}; against Embree's defaults {:.1f} %\n",
-      100.0 * ratio, 100.0 * kGoalRatio, ratio >= kGoalRatio ? "" : "  BELOW GOAL", 100.0 * plain_ratio);
+      "  ratio renderer/raw rays/s: {:.1f} % (range {:.1f} .. {:.1f} %; goal >= {:.0f} %){}; against "
+      "Embree's "
+      "defaults {:.1f} %\n",
+      100.0 * ratio.median, 100.0 * ratio.min, 100.0 * ratio.max, 100.0 * kGoalRatio,
+      ratio.median >= kGoalRatio ? "" : "  BELOW GOAL", 100.0 * plain_ratio);
   report_traversal_share(*scene, raw);
-  return ratio;
+  return ratio.median;
 }
 
 // Mean luminance (Y) of a film.
@@ -162,19 +185,15 @@ void bench_modes(const BenchCommand& cmd, const std::string& file) {
       ns_per_sample[m].push_back(1e9 * stats.seconds / static_cast<double>(stats.samples));
       luminance[m] = mean_luminance(film);
     }
-  std::array<double, 3> median{};
-  for (size_t m = 0; m < modes.size(); ++m) {
-    std::vector<double>& v = ns_per_sample[m];
-    std::sort(v.begin(), v.end());
-    median[m] = v[v.size() / 2];
-  }
+  std::array<Spread, 3> time{};
+  for (size_t m = 0; m < modes.size(); ++m) time[m] = spread(ns_per_sample[m]);
   const std::array<double, 3> goal = {1.0, 1.3, 2.0};
   for (size_t m = 0; m < modes.size(); ++m)
     fmt::print("  {:<9}  {:8.1f} ns/sample (min {:.1f}, max {:.1f})  {:.2f}x off{}  mean Y {:.6f}\n",
-               modes[m], median[m], ns_per_sample[m].front(), ns_per_sample[m].back(), median[m] / median[0],
+               modes[m], time[m].median, time[m].min, time[m].max, time[m].median / time[0].median,
                m == 0 ? ""
                       : fmt::format(" (goal <= {:.1f}x){}", goal[m],
-                                    median[m] / median[0] <= goal[m] ? "" : "  ABOVE GOAL"),
+                                    time[m].median / time[0].median <= goal[m] ? "" : "  ABOVE GOAL"),
                luminance[m]);
   fmt::print("  mode off vs intensity: mean luminance {:+.2f} % (Monte-Carlo noise included)\n",
              100.0 * (luminance[0] / luminance[1] - 1.0));
@@ -195,7 +214,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays");
   app.add_flag("--modes", cmd.modes, "Time the polarization modes off / intensity / stokes instead");
-  app.add_option("--repeat", cmd.repeat, "Repetitions per mode with --modes (default 3)")
+  app.add_option("--repeat", cmd.repeat,
+                 "Rounds per scene (render + raw Embree), or per mode with --modes; medians are reported "
+                 "(default 3)")
       ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
