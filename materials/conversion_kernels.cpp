@@ -2,6 +2,7 @@
 
 #include "materials/rgb_upsampling.h"
 #include "spectra/spectrum.h"
+#include "spectra/wavelength_memo.h"
 
 namespace ochre {
 
@@ -31,8 +32,16 @@ NodeFn conversion_kernel(SocketType from, SocketType to, SpectralRole role) {
   return nullptr;
 }
 
+SampledSpectrumPayload::SampledSpectrumPayload(const Spectrum* s)
+    : spectrum(s), serial(new_wavelength_memo_key()) {}
+
+// Every bounce of a path evaluates its materials at the same wavelengths, and a tabulated spectrum costs an
+// interpolation per wavelength and a virtual call: the values are memoized per thread
+// (spectra/wavelength_memo.h).
 void sample_spectrum_kernel(const NodeArgs& a) {
-  a.set_spectrum(0, static_cast<const Spectrum*>(a.payload)->sample(a.lambda()));
+  const auto& payload = *static_cast<const SampledSpectrumPayload*>(a.payload);
+  a.set_spectrum(
+      0, memo_sampled(payload.serial, a.lambda(), [&] { return payload.spectrum->sample(a.lambda()); }));
 }
 
 }  // namespace ochre

@@ -123,7 +123,9 @@ class Builder {
     const uint16_t at = allocate(SocketType::kSpectrum);
     varying_[at] = true;
     p_.spectra.push_back(s);
-    emit(false, sample_spectrum_kernel, s.get(), {}, {at}, 1u,
+    auto payload = std::make_shared<const SampledSpectrumPayload>(s.get());
+    p_.payloads.push_back(payload);
+    emit(false, sample_spectrum_kernel, payload.get(), {}, {at}, 1u,
          "sample spectrum " + NodeValue::of_spectrum(s).describe());
     sampled_[s.get()] = at;
     return at;

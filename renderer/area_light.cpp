@@ -1,7 +1,5 @@
 #include "renderer/area_light.h"
 
-#include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -11,6 +9,7 @@
 #include "materials/sampling.h"
 #include "renderer/surface_shading.h"
 #include "spectra/cie.h"
+#include "spectra/wavelength_memo.h"
 
 namespace ochre {
 
@@ -28,15 +27,10 @@ float luminance_estimate(const std::function<SampledSpectrum(const SampledWavele
   return y / kSets;
 }
 
-uint64_t next_serial() {
-  static std::atomic<uint64_t> counter{0};
-  return counter.fetch_add(1, std::memory_order_relaxed) + 1;
-}
-
 }  // namespace
 
 AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures)
-    : mesh_(mesh), material_(material), textures_(textures), serial_(next_serial()) {
+    : mesh_(mesh), material_(material), textures_(textures), memo_key_(new_wavelength_memo_key()) {
   std::vector<double> areas(mesh.triangle_count());
   for (size_t i = 0; i < areas.size(); ++i) areas[i] = mesh.triangle_area(i);
   triangles_ = Distribution1D(areas);
@@ -70,23 +64,10 @@ SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const Sampl
   return closure.emission();
 }
 
-// A few entries per thread, keyed by the light's serial number (never reused, unlike an address) and the
-// wavelengths; replaced round-robin. Scenes with more uniform lights than entries still get the right
-// values, only fewer hits.
+// Memoized per thread for the path's wavelengths (spectra/wavelength_memo.h), keyed by the light's memo key.
 SampledSpectrum AreaLight::uniform_emission(const SampledWavelengths& lambda) const {
-  struct Entry {
-    uint64_t light = 0;  // serial numbers start at 1
-    SampledSpectrum lambda, value;
-  };
-  constexpr size_t kEntries = 4;
-  thread_local std::array<Entry, kEntries> cache;
-  thread_local size_t next = 0;
-  for (const Entry& e : cache)
-    if (e.light == serial_ && e.lambda == lambda.lambda()) return e.value;
-  Entry& e = cache[next];
-  next = (next + 1) % kEntries;
-  e = {serial_, lambda.lambda(), evaluate_emission(SurfacePoint{}, lambda)};  // reads no point
-  return e.value;
+  return memo_sampled(memo_key_, lambda,
+                      [&] { return evaluate_emission(SurfacePoint{}, lambda); });  // reads no point
 }
 
 std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,

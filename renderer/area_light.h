@@ -33,7 +33,7 @@ class AreaLight final : public Light {
   const Mesh& mesh_;
   const CompiledMaterial& material_;
   const TextureProvider* textures_;
-  uint64_t serial_;  // unique per AreaLight of the process: the key of the per-thread emission cache
+  uint64_t memo_key_;  // of the per-thread memo of a uniform emission (spectra/wavelength_memo.h)
   SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
 

@@ -43,14 +43,15 @@ Vec3 EnvironmentLight::map_to_world(const Vec3& d) const {
   return {cos_rotation_ * d.x + sin_rotation_ * d.z, d.y, -sin_rotation_ * d.x + cos_rotation_ * d.z};
 }
 
-// Exactly RGBIlluminantSpectrum(rgb).sample(lambda) (spectra/rgb_spectrum.cpp) without building the
-// object: m = 2 max(rgb), sigmoid polynomial of rgb / m, times m times D65; then the light's scale.
+// RGBIlluminantSpectrum(rgb).sample(lambda) (spectra/rgb_spectrum.cpp) without building the object:
+// m = 2 max(rgb), sigmoid polynomial of rgb / m, times m times D65; times the light's scale. D65 x scale is
+// the same for every texel a path sees, so it is memoized per thread for the path's wavelengths.
 SampledSpectrum EnvironmentLight::texel_radiance(size_t key, const SampledWavelengths& lambda) const {
   const TexelSpectrum& t = texel_spectrum(key);
   if (!(t.m > 0.0f)) return SampledSpectrum(0.0f);
-  SampledSpectrum s = d65_->sample(lambda);
+  SampledSpectrum s = memo_sampled(white_memo_key_, lambda, [&] { return d65_->sample(lambda) * scale_; });
   for (int i = 0; i < kSpectrumSamples; ++i) s[i] *= t.m * t.poly.eval(lambda[i]);
-  return s * scale_;
+  return s;
 }
 
 std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,

@@ -22,6 +22,7 @@
 #include "renderer/light.h"
 #include "spectra/rgb_sigmoid_polynomial.h"
 #include "spectra/spectrum.h"
+#include "spectra/wavelength_memo.h"
 
 namespace ochre {
 
@@ -69,7 +70,8 @@ class EnvironmentLight final : public Light {
 
   SpectrumPtr radiance_;  // constant environment (null for a map)
   std::shared_ptr<const EnvironmentMap> map_;
-  SpectrumPtr d65_;  // the illuminant of map texels
+  SpectrumPtr d65_;                                      // the illuminant of map texels
+  uint64_t white_memo_key_ = new_wavelength_memo_key();  // D65 x scale at a path's wavelengths, per thread
   float scene_radius_;
   float scale_;
   float cos_rotation_ = 1.0f, sin_rotation_ = 0.0f;
