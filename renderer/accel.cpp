@@ -250,9 +250,11 @@ bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, 
 
 }  // namespace
 
-TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
-  const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
-  const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
+namespace {
+
+// Position, normal and doubled area from the triangle's corners (shared by the two functions below, which
+// load the corners once).
+TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   TrianglePoint t;
   t.p = p[0] * (1.0f - b1 - b2) + p[1] * b1 + p[2] * b2;
   const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
@@ -261,13 +263,21 @@ TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, floa
   return t;
 }
 
+}  // namespace
+
+TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
+  const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
+  const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
+  return point_on(p, b1, b2);
+}
+
 SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
   const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
   const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
   const float b0 = 1.0f - b1 - b2;
 
   SurfacePoint sp;
-  const TrianglePoint t = triangle_point(mesh, triangle, b1, b2);
+  const TrianglePoint t = point_on(p, b1, b2);
   sp.p = t.p;
   sp.ng = t.ng;
   const float double_area = t.double_area;
