@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "materials/frame.h"
+#include "materials/core/frame.h"
 
 namespace ochre {
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/mesh.h"
 
 namespace ochre {

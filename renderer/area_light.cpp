@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <functional>
 
-#include "materials/closure.h"
-#include "materials/lobe_arena.h"
-#include "materials/sampling.h"
+#include "materials/core/sampling.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lobe_arena.h"
 #include "renderer/surface_shading.h"
 #include "spectra/cie.h"
 #include "spectra/wavelength_memo.h"

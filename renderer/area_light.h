@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "materials/compiled_material.h"
-#include "materials/texture_provider.h"
+#include "materials/graph/compiled_material.h"
+#include "materials/nodes/texture_provider.h"
 #include "renderer/accel.h"
 #include "renderer/distribution_1d.h"
 #include "renderer/light.h"

@@ -2,7 +2,7 @@
 // Cameras: perspective (pinhole) and orthographic. A camera maps a film position in
 // normalised coordinates (x right, y down, both in [0,1)) to a world-space ray.
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/accel.h"
 
 namespace ochre {

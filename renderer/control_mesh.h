@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/transform.h"
 
 namespace ochre {

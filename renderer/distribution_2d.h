@@ -30,7 +30,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/distribution_1d.h"
 
 namespace ochre {

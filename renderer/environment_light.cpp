@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "materials/sampling.h"
+#include "materials/core/sampling.h"
 #include "renderer/spectrum_json.h"
 #include "spectra/cie.h"
 #include "spectra/rgb_to_spectrum_table.h"

@@ -34,7 +34,7 @@
 #include <optional>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/distribution_2d.h"
 #include "spectra/color_types.h"
 

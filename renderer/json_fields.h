@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 
 namespace ochre {
 

@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "spectra/sampled_wavelengths.h"
 
 namespace ochre {

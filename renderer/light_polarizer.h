@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "spectra/sampled_spectrum.h"
 
 namespace ochre {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/transform.h"
 
 namespace ochre {

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "materials/closure.h"
-#include "materials/frame.h"
-#include "materials/sampling.h"
+#include "materials/core/frame.h"
+#include "materials/core/sampling.h"
+#include "materials/lobes/closure.h"
 #include "renderer/surface_shading.h"
 
 namespace ochre {

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "materials/lobe_arena.h"
+#include "materials/lobes/lobe_arena.h"
 #include "renderer/path_throughput.h"
 #include "renderer/polarization_mode.h"
 #include "renderer/sampler.h"

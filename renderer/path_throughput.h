@@ -14,9 +14,9 @@
 
 #include <array>
 
-#include "materials/frame.h"
-#include "materials/lobe.h"
-#include "materials/mueller.h"
+#include "materials/core/frame.h"
+#include "materials/core/mueller.h"
+#include "materials/lobes/lobe.h"
 #include "renderer/light_polarizer.h"
 
 namespace ochre {

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 
 namespace ochre {
 

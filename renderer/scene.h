@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "materials/compiled_material.h"
-#include "materials/mueller.h"
+#include "materials/core/mueller.h"
+#include "materials/graph/compiled_material.h"
 #include "renderer/accel.h"
 #include "renderer/area_light.h"
 #include "renderer/camera.h"

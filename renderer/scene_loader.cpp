@@ -5,9 +5,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "materials/graph_error.h"
-#include "materials/material_compiler.h"
-#include "materials/resource_resolver.h"
+#include "materials/graph/graph_error.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/graph/resource_resolver.h"
 #include "renderer/control_mesh.h"
 #include "renderer/displacement.h"
 #include "renderer/input_error.h"

@@ -24,7 +24,7 @@
 
 #include <cstdint>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 #include "renderer/sampler.h"
 
 namespace ochre {

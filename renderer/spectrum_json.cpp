@@ -5,8 +5,8 @@
 #include <cmath>
 #include <memory>
 
-#include "materials/resource_resolver.h"
-#include "materials/spectrum_source.h"
+#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/spectrum_source.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "spectra/constant_spectrum.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The ShadingContext a material graph sees at a surface point.
 
-#include "materials/shading_context.h"
+#include "materials/nodes/shading_context.h"
 #include "renderer/accel.h"
 
 namespace ochre {

@@ -27,7 +27,7 @@
 #include <memory>
 #include <string>
 
-#include "materials/texture_provider.h"
+#include "materials/nodes/texture_provider.h"
 
 namespace ochre {
 

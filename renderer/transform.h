@@ -6,7 +6,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 
 namespace ochre {
 

@@ -48,7 +48,7 @@ constexpr NamedSpectrum kRegistry[] = {
     {"cie_z", []() -> SpectrumPtr { return std::make_shared<CmfSpectrum>(&cie_z); }},
     // Optical constants of metals and silicon (refractiveindex.info data; sources in the CSV headers),
     // 300-900 nm on a 5 nm grid. "-eta" is n and "-k" the extinction k of the index n + i k as
-    // tabulated; materials/fresnel.h uses n - i k internally.
+    // tabulated; materials/lobes/fresnel.h uses n - i k internally.
     {"metal-Au-eta", [] { return embedded("ior_Au_5nm.csv", "n"); }},
     {"metal-Au-k", [] { return embedded("ior_Au_5nm.csv", "k"); }},
     {"metal-Ag-eta", [] { return embedded("ior_Ag_5nm.csv", "n"); }},

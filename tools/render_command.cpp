@@ -6,7 +6,7 @@
 #include <iostream>
 #include <optional>
 
-#include "materials/graph_error.h"
+#include "materials/graph/graph_error.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/progress.h"

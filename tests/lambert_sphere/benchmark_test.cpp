@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "materials/lambert.h"
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_exact.h"
-#include "materials/lambert_sphere_lobe.h"
+#include "materials/lobes/lambert.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 
 namespace ochre::test {
 namespace {

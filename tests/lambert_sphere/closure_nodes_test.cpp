@@ -4,15 +4,15 @@
 
 #include <stdexcept>
 
-#include "materials/chandrasekhar_halfspace.h"
-#include "materials/closure.h"
-#include "materials/compiled_material.h"
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_exact.h"
-#include "materials/lambert_sphere_lobe.h"
-#include "materials/lobe_arena.h"
-#include "materials/material_compiler.h"
-#include "materials/oren_nayar.h"
+#include "materials/graph/compiled_material.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/lobes/chandrasekhar_halfspace.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
+#include "materials/lobes/lobe_arena.h"
+#include "materials/lobes/oren_nayar.h"
 
 namespace ochre::test {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_constants_table.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_constants_table.h"
 
 namespace ochre {
 namespace {

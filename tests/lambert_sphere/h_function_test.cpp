@@ -1,14 +1,14 @@
 // Numerically exact H functions (d'Eon Eqs 20-26) and the fitted H0 (Eq 37) and H1 (Eqs 28-30).
 
-#include "materials/h_function.h"
+#include "materials/numerics/h_function.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "materials/gauss_legendre.h"
-#include "materials/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/numerics/gauss_legendre.h"
 
 namespace ochre::test {
 namespace {

@@ -6,14 +6,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "materials/chandrasekhar_halfspace.h"
-#include "materials/h_function.h"
-#include "materials/lambert.h"
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_constants_table.h"
-#include "materials/lambert_sphere_lobe.h"
-#include "materials/oren_nayar.h"
-#include "materials/sampling_check.h"
+#include "materials/lobes/chandrasekhar_halfspace.h"
+#include "materials/lobes/lambert.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_constants_table.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
+#include "materials/lobes/oren_nayar.h"
+#include "materials/lobes/sampling_check.h"
+#include "materials/numerics/h_function.h"
 
 namespace ochre::test {
 namespace {

@@ -1,5 +1,5 @@
 // The Lambert-sphere BRDF (d'Eon Eqs 17-48): single scattering, the errata of Eqs 27 and 34, the full
-// model and the exact mode against a converged half-space solution (materials/halfspace_doubling.h),
+// model and the exact mode against a converged half-space solution (materials/numerics/halfspace_doubling.h),
 // reciprocity, energy, the kd mapping, and the hard cases.
 
 #include <gtest/gtest.h>
@@ -10,10 +10,10 @@
 #include <random>
 #include <vector>
 
-#include "materials/h_function.h"
-#include "materials/halfspace_doubling.h"
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "materials/numerics/h_function.h"
+#include "materials/numerics/halfspace_doubling.h"
 
 namespace ochre::test {
 namespace {

@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "tools/halfspace/halfspace_mc.h"
 
 namespace ochre::test {

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "materials/lambert_sphere_phase.h"
-#include "materials/sampling_check.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
+#include "materials/lobes/sampling_check.h"
 
 namespace ochre::test {
 namespace {

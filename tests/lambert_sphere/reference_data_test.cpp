@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "materials/lambert_sphere.h"
-#include "materials/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 
 namespace ochre::test {
 namespace {

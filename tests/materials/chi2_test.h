@@ -1,9 +1,9 @@
 #pragma once
 // Forwarding header: the chi-square test of a Lobe's sample() against its pdf() now lives in
-// materials/sampling_check.h so that tools (ochre-brdf chi2) and tests share one implementation.
+// materials/lobes/sampling_check.h so that tools (ochre-brdf chi2) and tests share one implementation.
 // Kept so tests written against ochre::test::chi2_test compile unchanged.
 
-#include "materials/sampling_check.h"
+#include "materials/lobes/sampling_check.h"
 
 namespace ochre::test {
 

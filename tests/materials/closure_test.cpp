@@ -2,15 +2,15 @@
 // and that must be the same estimator as the general mixture path: the same direction and pdf, and a
 // weight equal to eval |cos| / pdf, for a diffuse lobe, a rough (glossy, polarizing) lobe and a delta lobe.
 
-#include "materials/closure.h"
+#include "materials/lobes/closure.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "material_test_support.h"
-#include "materials/conductor.h"
-#include "materials/lambert.h"
+#include "materials/lobes/conductor.h"
+#include "materials/lobes/lambert.h"
 
 namespace ochre::test {
 namespace {

@@ -2,7 +2,7 @@
 // Mueller matrix. Physical checks of the Mueller frames, chi-square of the rough lobe's sampling, the
 // white furnace (single-scattering energy loss printed), hard numerical cases, and the closure node.
 
-#include "materials/conductor.h"
+#include "materials/lobes/conductor.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 #include "chi2_test.h"
 #include "material_test_support.h"
-#include "materials/fresnel.h"
-#include "materials/graph_error.h"
-#include "materials/pcg32.h"
+#include "materials/core/pcg32.h"
+#include "materials/graph/graph_error.h"
+#include "materials/lobes/fresnel.h"
 #include "polarization_test_support.h"
 #include "spectra/named_spectra.h"
 

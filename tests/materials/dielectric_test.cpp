@@ -2,7 +2,7 @@
 // opaque (black glass) variant, and GGX reflection only. Physical checks of the Mueller frames
 // (Brewster), R + T = 1, chi-square of the rough lobe, hard cases, and the closure node.
 
-#include "materials/dielectric.h"
+#include "materials/lobes/dielectric.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 #include "chi2_test.h"
 #include "material_test_support.h"
-#include "materials/fresnel.h"
-#include "materials/graph_error.h"
-#include "materials/pcg32.h"
+#include "materials/core/pcg32.h"
+#include "materials/graph/graph_error.h"
+#include "materials/lobes/fresnel.h"
 #include "polarization_test_support.h"
 
 namespace ochre::test {

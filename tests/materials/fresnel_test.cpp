@@ -1,7 +1,7 @@
 // Fresnel amplitudes, reflectances and Mueller matrices against ../shared/notes/polarization.md
 // (values from Mitsuba 3's test suite, reproduced independently) and analytic limits.
 
-#include "materials/fresnel.h"
+#include "materials/lobes/fresnel.h"
 
 #include <gtest/gtest.h>
 

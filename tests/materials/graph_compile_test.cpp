@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "material_test_support.h"
-#include "materials/lambert.h"
-#include "materials/node_registry.h"
+#include "materials/lobes/lambert.h"
+#include "materials/nodes/node_registry.h"
 
 namespace ochre::test {
 namespace {

@@ -1,7 +1,7 @@
 // Every way the material compiler rejects a graph: a GraphError naming file, material, node and
 // parameter, with a message that says what is wrong.
 
-#include "materials/graph_error.h"
+#include "materials/graph/graph_error.h"
 
 #include <gtest/gtest.h>
 

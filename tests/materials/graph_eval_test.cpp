@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "material_test_support.h"
-#include "materials/lambert.h"
-#include "materials/rgb_upsampling.h"
+#include "materials/lobes/lambert.h"
+#include "materials/nodes/rgb_upsampling.h"
 #include "spectra/cie.h"
 #include "spectra/named_spectra.h"
 #include "spectra/rgb_spectrum.h"

@@ -7,8 +7,8 @@
 
 #include "chi2_test.h"
 #include "material_test_support.h"
-#include "materials/lambert.h"
-#include "materials/sampling.h"
+#include "materials/core/sampling.h"
+#include "materials/lobes/lambert.h"
 
 namespace ochre::test {
 namespace {

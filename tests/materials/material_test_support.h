@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "materials/compiled_material.h"
-#include "materials/material_compiler.h"
-#include "materials/resource_resolver.h"
-#include "materials/texture_provider.h"
+#include "materials/graph/compiled_material.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/texture_provider.h"
 
 namespace ochre::test {
 

@@ -8,8 +8,8 @@
 
 #include "chi2_test.h"
 #include "material_test_support.h"
-#include "materials/microfacet_ggx.h"
-#include "materials/pcg32.h"
+#include "materials/core/pcg32.h"
+#include "materials/lobes/microfacet_ggx.h"
 #include "polarization_test_support.h"
 
 namespace ochre::test {

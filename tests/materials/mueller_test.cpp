@@ -1,7 +1,7 @@
 // Mueller algebra and elements: the check values of ../shared/notes/polarization.md ("Mueller
 // algebra", polarizer, retarders) and the frame-change rotator stokes_basis_rotation().
 
-#include "materials/mueller.h"
+#include "materials/core/mueller.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "materials/node_registry.h"
+#include "materials/nodes/node_registry.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {

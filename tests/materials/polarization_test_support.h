@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "materials/lobe.h"
+#include "materials/lobes/lobe.h"
 
 namespace ochre::test {
 

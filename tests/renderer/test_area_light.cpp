@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "materials/closure.h"
-#include "materials/lobe_arena.h"
-#include "materials/material_compiler.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lobe_arena.h"
 #include "renderer/area_light.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/surface_shading.h"

@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "materials/pcg32.h"
-#include "materials/sampling_check.h"
+#include "materials/core/pcg32.h"
+#include "materials/lobes/sampling_check.h"
 #include "renderer/distribution_2d.h"
 
 namespace ochre {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "materials/sampling_check.h"
+#include "materials/lobes/sampling_check.h"
 #include "renderer/environment_light.h"
 #include "renderer/exr_writer.h"
 #include "renderer/input_error.h"

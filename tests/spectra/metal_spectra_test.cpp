@@ -15,7 +15,7 @@ namespace {
 constexpr const char* kMetals[] = {"Au", "Ag", "Cu", "Al", "Si"};
 
 // Normal-incidence reflectance of the index n + i k (Born & Wolf 14.2.16), computed here
-// independently of materials/fresnel.h.
+// independently of materials/lobes/fresnel.h.
 double normal_reflectance(double n, double k) {
   return ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k);
 }

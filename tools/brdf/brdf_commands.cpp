@@ -9,7 +9,7 @@
 #include <iostream>
 #include <numbers>
 
-#include "materials/sampling_check.h"
+#include "materials/lobes/sampling_check.h"
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
 #include "spectra/sampled_wavelengths.h"

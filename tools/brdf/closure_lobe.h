@@ -1,10 +1,10 @@
 #pragma once
 // ClosureLobe: a whole Closure seen through the Lobe interface (its eval, mixture pdf and one-sample
 // sampler), so that checks written for one lobe, such as the chi-square test of
-// materials/sampling_check.h, run on any material.
+// materials/lobes/sampling_check.h, run on any material.
 
-#include "materials/closure.h"
-#include "materials/lobe.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lobe.h"
 
 namespace ochre {
 

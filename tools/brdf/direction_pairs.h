@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "materials/vec3.h"
+#include "materials/core/vec3.h"
 
 namespace ochre {
 

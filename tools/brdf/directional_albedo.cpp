@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "materials/pcg32.h"
+#include "materials/core/pcg32.h"
 #include "tools/halfspace/gauss_legendre.h"
 
 namespace ochre {

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "materials/closure.h"
+#include "materials/lobes/closure.h"
 
 namespace ochre {
 

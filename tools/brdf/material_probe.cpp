@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "materials/material_compiler.h"
-#include "materials/resource_resolver.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/graph/resource_resolver.h"
 #include "renderer/input_error.h"
 #include "renderer/json_file.h"
 #include "renderer/texture_system.h"

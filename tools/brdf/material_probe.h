@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
-#include "materials/closure.h"
-#include "materials/compiled_material.h"
-#include "materials/lobe_arena.h"
+#include "materials/graph/compiled_material.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lobe_arena.h"
 #include "spectra/sampled_wavelengths.h"
 
 namespace ochre {

@@ -1,0 +1,168 @@
+#include "materials/lobes/closure.h"
+
+#include <stdexcept>
+
+namespace ochre {
+
+void Closure::add_lobe(const Lobe* lobe, const SampledSpectrum& weight) {
+  if (weight.is_black()) return;
+  if (count_ == kMaxLobes) throw std::length_error("closure has more than 8 lobes");
+  lobes_[count_++] = {lobe, weight};
+}
+
+void Closure::scale(const SampledSpectrum& s) {
+  for (int i = 0; i < count_; ++i) lobes_[i].weight *= s;
+  emission_ *= s;
+}
+
+void Closure::append(const Closure& other) {
+  for (int i = 0; i < other.count_; ++i) add_lobe(other.lobes_[i].lobe, other.lobes_[i].weight);
+  emission_ += other.emission_;
+}
+
+bool Closure::has_non_delta_lobes() const {
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta()) return true;
+  return false;
+}
+
+bool Closure::has_transmission() const {
+  for (int i = 0; i < count_; ++i)
+    if (lobes_[i].lobe->flags() & kLobeTransmission) return true;
+  return false;
+}
+
+bool Closure::polarizes() const {
+  for (int i = 0; i < count_; ++i)
+    if (lobes_[i].lobe->polarizes()) return true;
+  return false;
+}
+
+SampledSpectrum Closure::eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  SampledSpectrum f;
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    if (!l.lobe->is_delta()) f += l.weight * l.lobe->eval(wo, wi, lambda);
+  }
+  return f;
+}
+
+bool Closure::has_polarizing_non_delta_lobes() const {
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta() && lobes_[i].lobe->polarizes()) return true;
+  return false;
+}
+
+MuellerResponse Closure::eval_mueller(const Vec3& wo, const Vec3& wi,
+                                      const SampledWavelengths& lambda) const {
+  if (!has_polarizing_non_delta_lobes()) return depolarizing_response(eval(wo, wi, lambda), wo, wi);
+  MuellerResponse sum;
+  bool have_frames = false;
+  SampledSpectrum depolarized(0.0f);  // depolarizers only add to M00, in any frame
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    if (l.lobe->is_delta()) continue;
+    if (!l.lobe->polarizes()) {
+      depolarized += l.weight * l.lobe->eval(wo, wi, lambda);
+      continue;
+    }
+    MuellerResponse r = l.lobe->eval_mueller(wo, wi, lambda);
+    if (!have_frames) {
+      sum.in_x = r.in_x;
+      sum.out_x = r.out_x;
+      sum.m = r.m * l.weight;
+      have_frames = true;
+      continue;
+    }
+    // Bring this lobe's frames to the common ones: M' = R(out_r -> out) M R(in -> in_r).
+    const Mueller out_rotation = stokes_basis_rotation(wo, r.out_x, sum.out_x);
+    const Mueller in_rotation = stokes_basis_rotation(-wi, sum.in_x, r.in_x);
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      const Mueller term = out_rotation * r.m[k] * in_rotation;
+      for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) sum.m[k](row, col) += term(row, col) * l.weight[k];
+    }
+  }
+  for (int k = 0; k < kSpectrumSamples; ++k) sum.m[k](0, 0) += depolarized[k];
+  return sum;
+}
+
+float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
+                                 std::array<float, kMaxLobes>& p) const {
+  float total = 0.0f;
+  for (int i = 0; i < count_; ++i) {
+    const WeightedLobe& l = lobes_[i];
+    // Weighted albedo averaged over the wavelengths (Cycles' sample_weight, with the lobe's albedo).
+    p[i] = std::max(0.0f, (l.weight * l.lobe->albedo_hint(wo, lambda)).average());
+    total += p[i];
+  }
+  return total;
+}
+
+float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  // One lobe: its selection probability is 1 (or nothing can be sampled), so no albedo estimates.
+  if (count_ == 1) return lobes_[0].lobe->is_delta() ? 0.0f : lobes_[0].lobe->pdf(wo, wi, lambda);
+  std::array<float, kMaxLobes> p{};
+  const float total = selection_weights(wo, lambda, p);
+  if (total <= 0.0f) return 0.0f;
+  float pdf = 0.0f;
+  for (int i = 0; i < count_; ++i)
+    if (!lobes_[i].lobe->is_delta() && p[i] > 0.0f) pdf += p[i] / total * lobes_[i].lobe->pdf(wo, wi, lambda);
+  return pdf;
+}
+
+std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const Vec2& u,
+                                          const SampledWavelengths& lambda) const {
+  if (count_ == 1) return sample_only_lobe(wo, u_choice, u, lambda);
+  std::array<float, kMaxLobes> p{};
+  const float total = selection_weights(wo, lambda, p);
+  if (total <= 0.0f) return std::nullopt;
+
+  // Pick lobe k with probability p_k / total; rescale u_choice to [0,1) for the lobe's own use.
+  int k = 0;
+  float cdf = 0.0f;
+  const float target = u_choice * total;
+  for (; k < count_ - 1; ++k) {
+    if (target < cdf + p[k]) break;
+    cdf += p[k];
+  }
+  while (p[k] <= 0.0f && k > 0) --k;  // guard against rounding past the last non-zero entry
+  const float pick = p[k] / total;
+  const float u_rest = std::min((target - cdf) / p[k], 0.99999994f);
+
+  const WeightedLobe& chosen = lobes_[k];
+  std::optional<LobeSample> s = chosen.lobe->sample(wo, std::max(u_rest, 0.0f), u, lambda);
+  if (!s) return std::nullopt;
+
+  if (s->delta) {
+    s->weight = s->weight * chosen.weight / pick;
+    s->pdf *= pick;
+    if (s->has_mueller) s->mueller.m = s->mueller.m * (chosen.weight / pick);
+    return s;
+  }
+  // One BSDF for MIS: value and pdf of the whole non-delta mixture in the sampled direction.
+  const float pdf = this->pdf(wo, s->wi, lambda);
+  if (!(pdf > 0.0f)) return std::nullopt;
+  s->pdf = pdf;
+  s->weight = eval(wo, s->wi, lambda) * (abs_cos_theta(s->wi) / pdf);
+  s->has_mueller = false;  // the mixture's Mueller response comes from eval_mueller() when needed
+  return s;
+}
+
+// The common case of one lobe: no choice to make, and the mixture is the lobe itself, so its own sample
+// (direction, pdf, f |cos| / pdf) is the closure's, times the lobe weight. Same estimator as the general
+// path, without a second evaluation of the lobe's pdf and value in the sampled direction.
+std::optional<LobeSample> Closure::sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
+                                                    const SampledWavelengths& lambda) const {
+  const WeightedLobe& only = lobes_[0];
+  std::optional<LobeSample> s = only.lobe->sample(wo, u_choice, u, lambda);
+  if (!s || !(s->pdf > 0.0f)) return std::nullopt;
+  s->weight = s->weight * only.weight;
+  if (!s->delta)
+    s->has_mueller = false;  // as in the mixture: eval_mueller() gives the response when it is needed
+  else if (s->has_mueller)
+    s->mueller.m = s->mueller.m * only.weight;
+  return s;
+}
+
+}  // namespace ochre

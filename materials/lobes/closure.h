@@ -1,0 +1,65 @@
+#pragma once
+// Closure: what a material graph evaluates to at a shading point, with OSL semantics: a
+// weighted sum of primitive lobes (weight = a spectrum per lobe) plus emitted radiance.
+// The renderer samples and evaluates the sum as one BSDF.
+
+#include <array>
+#include <optional>
+
+#include "materials/lobes/lobe.h"
+
+namespace ochre {
+
+struct WeightedLobe {
+  const Lobe* lobe = nullptr;
+  SampledSpectrum weight;
+};
+
+class Closure {
+ public:
+  static constexpr int kMaxLobes = 8;
+
+  // Adds a lobe with its weight; lobes with zero weight are dropped, equal lobes are not merged.
+  void add_lobe(const Lobe* lobe, const SampledSpectrum& weight);
+  void add_emission(const SampledSpectrum& radiance) { emission_ += radiance; }
+  // Multiplies every lobe weight and the emission (closure scale).
+  void scale(const SampledSpectrum& s);
+  // this = this + other (closure add).
+  void append(const Closure& other);
+
+  int lobe_count() const { return count_; }
+  const WeightedLobe& lobe(int i) const { return lobes_[i]; }
+  const SampledSpectrum& emission() const { return emission_; }
+  bool has_lobes() const { return count_ > 0; }
+  bool has_non_delta_lobes() const;
+  bool polarizes() const;
+  bool has_transmission() const;  // some lobe can refract (the surface's two sides differ)
+
+  // Sum of the non-delta lobes' weighted values (no cosine).
+  SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
+  // Mueller response of the non-delta lobes (no cosine): their matrices brought to common frames (those
+  // of the first polarizing lobe) and summed; an ideal depolarizer when no non-delta lobe polarizes.
+  // Its M00 equals eval().
+  MuellerResponse eval_mueller(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
+  bool has_polarizing_non_delta_lobes() const;
+  // Pdf of sample() producing wi through its non-delta lobes (the one-sample mixture pdf).
+  float pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const;
+  // Picks a lobe with probability proportional to its weighted albedo, samples it; for a
+  // non-delta pick, the returned weight and pdf are those of the whole non-delta mixture
+  // (so MIS sees one BSDF). u_choice is reused after the pick (rescaled).
+  std::optional<LobeSample> sample(const Vec3& wo, float u_choice, const Vec2& u,
+                                   const SampledWavelengths& lambda) const;
+
+ private:
+  std::optional<LobeSample> sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
+                                             const SampledWavelengths& lambda) const;
+  // Lobe selection probabilities; returns their sum (0 when nothing can be sampled).
+  float selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
+                          std::array<float, kMaxLobes>& p) const;
+
+  std::array<WeightedLobe, kMaxLobes> lobes_{};
+  int count_ = 0;
+  SampledSpectrum emission_;
+};
+
+}  // namespace ochre

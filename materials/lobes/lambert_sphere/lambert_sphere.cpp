@@ -1,0 +1,97 @@
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+
+#include <cmath>
+
+#include "materials/numerics/gauss_legendre.h"
+
+namespace ochre {
+
+namespace {
+
+constexpr double kPiD = 3.14159265358979323846;
+
+// Quadrature sizes for the albedo integrals (converged to ~1e-6 for the LS models, see the tests).
+constexpr int kMuNodes = 24;
+constexpr int kPhiNodes = 16;
+
+struct AlbedoRules {
+  GaussLegendreRule mu = gauss_legendre_rule(kMuNodes, 0.0, 1.0);  // in x, mu = x^2
+  GaussLegendreRule phi = gauss_legendre_rule(kPhiNodes, 0.0, kPiD);
+};
+
+const AlbedoRules& albedo_rules() {
+  static const AlbedoRules rules;
+  return rules;
+}
+
+}  // namespace
+
+double directional_albedo_quadrature(const IsotropicBrdf& f, double mu_i) {
+  if (!(mu_i > 0.0)) return 0.0;
+  const AlbedoRules& r = albedo_rules();
+  const double sin_i = std::sqrt(std::max(0.0, 1.0 - mu_i * mu_i));
+  double sum = 0.0;
+  for (size_t a = 0; a < r.mu.nodes.size(); ++a) {
+    const double x = r.mu.nodes[a], mu_o = x * x, sin_o = std::sqrt(std::max(0.0, 1.0 - mu_o * mu_o));
+    double azimuth = 0.0;
+    for (size_t b = 0; b < r.phi.nodes.size(); ++b)
+      azimuth += r.phi.weights[b] * f(mu_i, mu_o, mu_i * mu_o + sin_i * sin_o * std::cos(r.phi.nodes[b]));
+    sum += r.mu.weights[a] * 2.0 * x * mu_o * 2.0 * azimuth;  // d mu = 2x dx; phi over [0, 2 pi]
+  }
+  return sum;
+}
+
+double bond_albedo_quadrature(const IsotropicBrdf& f) {
+  const AlbedoRules& r = albedo_rules();
+  double sum = 0.0;
+  for (size_t a = 0; a < r.mu.nodes.size(); ++a) {
+    const double x = r.mu.nodes[a], mu_i = x * x;
+    sum += r.mu.weights[a] * 2.0 * x * 2.0 * mu_i * directional_albedo_quadrature(f, mu_i);
+  }
+  return sum;
+}
+
+double lambert_sphere_directional_albedo(double c, double mu_i) {
+  const LambertSphereConstants<double> k = lambert_sphere_constants(c);
+  return directional_albedo_quadrature(
+      [&](double a, double b, double w) { return lambert_sphere_full(k, a, b, w); }, mu_i);
+}
+
+double lambert_sphere_bond_albedo(double c) {
+  const LambertSphereConstants<double> k = lambert_sphere_constants(c);
+  return bond_albedo_quadrature(
+      [&](double a, double b, double w) { return lambert_sphere_full(k, a, b, w); });
+}
+
+BondAlbedoInverse::BondAlbedoInverse(const std::function<double(double c)>& bond_albedo) {
+  for (int j = 0; j < kNodes; ++j) {
+    const double s = double(j) / (kNodes - 1);
+    kd_[j] = bond_albedo(1.0 - s * s);
+  }
+}
+
+float BondAlbedoInverse::c(float kd_in) const {
+  const double kd = std::clamp(double(kd_in), 0.0, 1.0);
+  if (kd >= kd_[0]) return 1.0f;
+  if (kd <= kd_[kNodes - 1]) return 0.0f;
+  // Binary search for kd_[lo] > kd >= kd_[hi], then linear interpolation in s.
+  int lo = 0, hi = kNodes - 1;
+  while (hi - lo > 1) {
+    const int mid = (lo + hi) / 2;
+    (kd_[mid] > kd ? lo : hi) = mid;
+  }
+  const double t = (kd_[lo] - kd) / (kd_[lo] - kd_[hi]);
+  const double s = (lo + t) / (kNodes - 1);
+  return float(std::clamp(1.0 - s * s, 0.0, 1.0));
+}
+
+float BondAlbedoInverse::weight_scale(float kd) const {
+  return kd > kd_[0] ? float(std::min(1.0, double(kd)) / kd_[0]) : 1.0f;
+}
+
+const BondAlbedoInverse& lambert_sphere_kd_inverse() {
+  static const BondAlbedoInverse inverse(lambert_sphere_bond_albedo);
+  return inverse;
+}
+
+}  // namespace ochre

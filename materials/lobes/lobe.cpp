@@ -1,0 +1,17 @@
+#include "materials/lobes/lobe.h"
+
+#include "materials/core/frame.h"
+
+namespace ochre {
+
+MuellerResponse depolarizing_response(const SampledSpectrum& f, const Vec3& wo, const Vec3& wi) {
+  MuellerResponse r;
+  r.m = depolarizer(f);
+  // Any perpendicular will do: a depolarizer's output does not depend on the input's S1..S3 and
+  // carries none of its own. The incident light propagates along -wi.
+  r.in_x = Frame::from_normal(-wi).s;
+  r.out_x = Frame::from_normal(wo).s;
+  return r;
+}
+
+}  // namespace ochre

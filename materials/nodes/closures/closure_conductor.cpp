@@ -1,0 +1,96 @@
+// conductor(eta, k, roughness; metal): Fresnel reflection off a metal with the complex index n - i k
+// per wavelength (materials/lobes/conductor.h), polarizing. roughness 0 is a perfect mirror (delta lobe);
+// above 0 it is the GGX alpha of a rough conductor. `metal` names built-in optical constants
+// ("Au", "Ag", "Cu", "Al", "Si": the named spectra metal-X-eta / metal-X-k) and then replaces the
+// eta and k inputs.
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "materials/lobes/conductor.h"
+#include "materials/nodes/node_definition.h"
+#include "spectra/named_spectra.h"
+
+namespace ochre {
+
+namespace {
+
+struct NamedMetal {
+  SpectrumPtr eta, k;
+};
+
+Prepared prepare_conductor(const PrepareArgs& args) {
+  Prepared p;
+  if (!args.params.contains("metal")) return p;
+  const std::string metal = args.params.at("metal").get<std::string>();
+  p.payload = std::make_shared<NamedMetal>(
+      NamedMetal{named_spectrum("metal-" + metal + "-eta"), named_spectrum("metal-" + metal + "-k")});
+  return p;
+}
+
+void emit_conductor(const NodeArgs& a) {
+  const SampledSpectrum w = a.weight();
+  if (w.is_black()) return;
+  SampledSpectrum eta = a.in_spectrum(0), k = a.in_spectrum(1);
+  if (a.payload) {
+    const NamedMetal& metal = a.data<NamedMetal>();
+    eta = metal.eta->sample(a.lambda());
+    k = metal.k->sample(a.lambda());
+  }
+  const float alpha = std::clamp(a.in_float(2), 0.0f, 1.0f);
+  if (alpha > 0.0f)
+    a.closure.add_lobe(a.arena.make<RoughConductorLobe>(eta, k, alpha), w);
+  else
+    a.closure.add_lobe(a.arena.make<SmoothConductorLobe>(eta, k), w);
+}
+
+ClosureTraits conductor_traits(std::span<const InputView> in) {
+  const uint32_t base = kLobeReflection | kLobePolarizing;
+  if (!in[2].is_constant()) return {base | kLobeDelta | kLobeGlossy, false};
+  return {base | (in[2].value->f > 0.0f ? kLobeGlossy : kLobeDelta), false};
+}
+
+SocketDef spectrum_input(const char* name, const char* metal_column, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = SocketType::kSpectrum;
+  s.default_value = NodeValue::of_spectrum(named_spectrum(metal_column));
+  s.role = SpectralRole::kNone;
+  s.min = 0.0f;
+  s.doc = doc;
+  return s;
+}
+
+}  // namespace
+
+NodeDefinition conductor_node() {
+  NodeDefinition d;
+  d.name = "conductor";
+  d.doc = "Fresnel reflection off a metal (complex index n - i k), smooth or GGX-rough; polarizing.";
+  SocketDef roughness;
+  roughness.name = "roughness";
+  roughness.type = SocketType::kFloat;
+  roughness.default_value = NodeValue::of_float(0.0f);
+  roughness.min = 0.0f;
+  roughness.max = 1.0f;
+  roughness.clamped = true;
+  roughness.doc =
+      "GGX alpha (not squared); 0 = perfect mirror (delta lobe); a linked value is clamped to [0, 1]";
+  d.inputs = {spectrum_input("eta", "metal-Cu-eta", "real part n of the index (default: copper)"),
+              spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (default: copper)"),
+              roughness};
+  ParamDef metal;
+  metal.name = "metal";
+  metal.kind = ParamKind::kString;
+  metal.choices = {"Au", "Ag", "Cu", "Al", "Si"};
+  metal.doc = "built-in optical constants; when given, eta and k are ignored";
+  d.params = {metal};
+  d.outputs = {{"closure", SocketType::kClosure, false, "the conductor lobe"}};
+  d.prepare = prepare_conductor;
+  d.eval = emit_conductor;
+  d.closure_traits = conductor_traits;
+  return d;
+}
+
+}  // namespace ochre

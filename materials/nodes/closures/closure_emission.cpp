@@ -1,0 +1,50 @@
+// emission(color, strength): emitted radiance strength x color (no lobes). With the default
+// colour (1,1,1) (illuminant upsampling: D65 with luminance 1) the strength is the luminance.
+
+#include <algorithm>
+
+#include "materials/nodes/node_definition.h"
+
+namespace ochre {
+
+namespace {
+
+void emit_emission(const NodeArgs& a) {
+  const float strength = std::max(a.in_float(1), 0.0f);
+  a.closure.add_emission(a.weight() * a.in_spectrum(0) * strength);
+}
+
+ClosureTraits emission_traits(std::span<const InputView> in) {
+  for (const InputView& v : in)
+    if (v.is_constant() && is_zero(*v.value)) return {};
+  return {0, true};
+}
+
+}  // namespace
+
+NodeDefinition emission_node() {
+  NodeDefinition d;
+  d.name = "emission";
+  d.doc = "Emitted radiance strength x color, added to the closure's emission (no lobes).";
+  SocketDef color;
+  color.name = "color";
+  color.type = SocketType::kSpectrum;
+  color.default_value = NodeValue::of_colour({1.0f, 1.0f, 1.0f});
+  color.role = SpectralRole::kIlluminant;
+  color.min = 0.0f;
+  color.doc = "emitted spectral radiance per unit strength; a colour is upsampled as an illuminant";
+  SocketDef strength;
+  strength.name = "strength";
+  strength.type = SocketType::kFloat;
+  strength.default_value = NodeValue::of_float(1.0f);
+  strength.min = 0.0f;
+  strength.clamped = true;
+  strength.doc = "radiance scale; a negative linked value counts as 0";
+  d.inputs = {color, strength};
+  d.outputs = {{"closure", SocketType::kClosure, false, "the emission"}};
+  d.eval = emit_emission;
+  d.closure_traits = emission_traits;
+  return d;
+}
+
+}  // namespace ochre

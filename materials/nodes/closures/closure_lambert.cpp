@@ -1,0 +1,42 @@
+// lambert(color): the ideal diffuse reflector f = 1/pi with albedo `color`, which becomes the
+// lobe's closure weight (as OSL's diffuse(N) scaled by a colour).
+
+#include "materials/lobes/lambert.h"
+#include "materials/nodes/node_definition.h"
+
+namespace ochre {
+
+namespace {
+
+void emit_lambert(const NodeArgs& a) {
+  const SampledSpectrum w = a.weight() * a.in_spectrum(0);
+  if (w.is_black()) return;
+  a.closure.add_lobe(a.arena.make<LambertLobe>(), w);
+}
+
+ClosureTraits lambert_traits(std::span<const InputView> in) {
+  if (in[0].is_constant() && is_zero(*in[0].value)) return {};
+  return {LambertLobe().flags(), false};
+}
+
+}  // namespace
+
+NodeDefinition lambert_node() {
+  NodeDefinition d;
+  d.name = "lambert";
+  d.doc = "Ideal diffuse reflection f = color / pi (a depolarizer).";
+  SocketDef color;
+  color.name = "color";
+  color.type = SocketType::kSpectrum;
+  color.default_value = NodeValue::of_float(0.8f);
+  color.role = SpectralRole::kReflectance;
+  color.min = 0.0f;
+  color.doc = "albedo; values above 1 are allowed (not energy conserving), negative constants are errors";
+  d.inputs = {color};
+  d.outputs = {{"closure", SocketType::kClosure, false, "the diffuse lobe"}};
+  d.eval = emit_lambert;
+  d.closure_traits = lambert_traits;
+  return d;
+}
+
+}  // namespace ochre

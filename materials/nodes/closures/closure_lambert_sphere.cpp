@@ -1,0 +1,121 @@
+// lambert_sphere(kd | particle_albedo, variant, mapping): the Lambertian-sphere BRDF of d'Eon
+// (materials/lobes/lambert_sphere/lambert_sphere_lobe.h), a half space of sparse white-Lambertian spheres.
+// Its colour is set either by the bond (spherical) albedo kd, mapped to the particle albedo c, or by c
+// directly.
+
+#include <memory>
+#include <string>
+
+#include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
+#include "materials/nodes/node_definition.h"
+
+namespace ochre {
+
+namespace {
+
+struct LambertSphereSettings {
+  LambertSphereVariant variant = LambertSphereVariant::kFull;
+  bool eq46_mapping = false;  // kd -> c by d'Eon Eq 46 instead of the model's own bond albedo
+};
+
+std::string param_or(const PrepareArgs& args, const char* name, const char* fallback) {
+  return args.params.contains(name) ? args.params.at(name).get<std::string>() : fallback;
+}
+
+Prepared prepare_lambert_sphere(const PrepareArgs& args) {
+  auto s = std::make_shared<LambertSphereSettings>();
+  const std::string variant = param_or(args, "variant", "full");
+  if (variant == "fast")
+    s->variant = LambertSphereVariant::kFast;
+  else if (variant == "exact")
+    s->variant = LambertSphereVariant::kExact;
+  else if (variant != "full")
+    throw NodeError("variant", "unknown variant '" + variant + "' (full, fast or exact)");
+  const std::string mapping = param_or(args, "mapping", "exact");
+  if (mapping != "exact" && mapping != "eq46")
+    throw NodeError("mapping", "unknown mapping '" + mapping + "' (exact or eq46)");
+  s->eq46_mapping = mapping == "eq46";
+  Prepared p;
+  p.payload = s;
+  return p;
+}
+
+void emit_lambert_sphere(const NodeArgs& a) {
+  SampledSpectrum w = a.weight();
+  if (w.is_black()) return;
+  const LambertSphereSettings& s = a.data<LambertSphereSettings>();
+  const SampledSpectrum kd = a.in_spectrum(0), particle_albedo = a.in_spectrum(1);
+  const bool exact = s.variant == LambertSphereVariant::kExact;
+  SampledSpectrum c;
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    if (particle_albedo[k] >= 0.0f) {
+      c[k] = particle_albedo[k];
+    } else if (s.eq46_mapping) {
+      c[k] = lambert_sphere_c_from_kd_eq46(kd[k]);
+    } else {
+      // Above the largest bond albedo the model reaches (the fitted model loses up to 1.4 % at c = 1),
+      // the weight makes up the difference so that the rendered bond albedo is kd.
+      const BondAlbedoInverse& inverse =
+          exact ? lambert_sphere_exact_kd_inverse() : lambert_sphere_kd_inverse();
+      c[k] = inverse.c(kd[k]);
+      w[k] *= inverse.weight_scale(kd[k]);
+    }
+  }
+  a.closure.add_lobe(a.arena.make<LambertSphereLobe>(s.variant, c), w);
+}
+
+ClosureTraits lambert_sphere_traits(std::span<const InputView>) {
+  return {kLobeReflection | kLobeDiffuse, false};
+}
+
+ParamDef choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
+                      const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kString;
+  p.default_value = fallback;
+  p.choices = std::move(choices);
+  p.doc = doc;
+  return p;
+}
+
+}  // namespace
+
+NodeDefinition lambert_sphere_node() {
+  NodeDefinition d;
+  d.name = "lambert_sphere";
+  d.doc =
+      "Lambertian-sphere BRDF (d'Eon): a half space of sparse white-Lambertian spheres; strong "
+      "backscattering, saturated colours. A depolarizer.";
+  SocketDef kd;
+  kd.name = "kd";
+  kd.type = SocketType::kSpectrum;
+  kd.default_value = NodeValue::of_float(0.8f);
+  kd.role = SpectralRole::kReflectance;
+  kd.min = 0.0f;
+  kd.max = 1.0f;
+  kd.clamped = true;
+  kd.doc = "bond (spherical) albedo, the diffuse colour; mapped to the particle albedo by `mapping`";
+  SocketDef c;
+  c.name = "particle_albedo";
+  c.type = SocketType::kSpectrum;
+  c.default_value = NodeValue::of_float(-1.0f);
+  c.role = SpectralRole::kReflectance;
+  c.doc = "albedo c of the spheres; when >= 0 it is used instead of kd (default -1: use kd)";
+  d.inputs = {kd, c};
+  d.params = {choice_param("variant", "full", {"full", "fast", "exact"},
+                           "full: exact single + corrected fitted multiple scattering; fast: Eq 48 (not "
+                           "energy conserving); exact: tabulated converged half-space solution"),
+              choice_param("mapping", "exact", {"exact", "eq46"},
+                           "kd -> c: exact inverts the model's own bond albedo (< 0.5 % error); eq46 is the "
+                           "paper's fit (renders up to 3.8 % too bright)")};
+  d.outputs = {{"closure", SocketType::kClosure, false, "the Lambert-sphere lobe"}};
+  d.prepare = prepare_lambert_sphere;
+  d.eval = emit_lambert_sphere;
+  d.closure_traits = lambert_sphere_traits;
+  return d;
+}
+
+}  // namespace ochre

@@ -1,0 +1,73 @@
+// spectrum(file | name, column, scale): a tabulated or named spectrum, built once at compile time
+// (the node is always folded: its consumers sample the pre-built spectrum).
+
+#include <memory>
+
+#include "materials/nodes/node_definition.h"
+#include "materials/nodes/spectrum_source.h"
+#include "spectra/scaled_spectrum.h"
+
+namespace ochre {
+
+namespace {
+
+SpectrumPtr load(const PrepareArgs& args, bool from_file) {
+  try {
+    if (!from_file) return spectrum_by_name(args.params.at("name").get<std::string>());
+    const std::string column =
+        args.params.contains("column") ? args.params.at("column").get<std::string>() : "";
+    return spectrum_from_file(args.params.at("file").get<std::string>(), column, args.resolver);
+  } catch (const std::runtime_error& e) {
+    throw NodeError(from_file ? "file" : "name", e.what());
+  }
+}
+
+Prepared prepare_spectrum(const PrepareArgs& args) {
+  const bool has_file = args.params.contains("file"), has_name = args.params.contains("name");
+  if (has_file == has_name) throw NodeError(has_file ? "name" : "", "give exactly one of 'file' and 'name'");
+  if (has_name && args.params.contains("column"))
+    throw NodeError("column", "'column' applies to 'file' only");
+
+  SpectrumPtr s = load(args, has_file);
+  const float scale = args.params.contains("scale") ? args.params.at("scale").get<float>() : 1.0f;
+  if (scale != 1.0f) s = std::make_shared<ScaledSpectrum>(std::move(s), scale);
+
+  Prepared p;
+  p.constant_outputs = {NodeValue::of_spectrum(std::move(s))};
+  return p;
+}
+
+ParamDef string_param(const char* name, const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kString;
+  p.doc = doc;
+  return p;
+}
+
+}  // namespace
+
+NodeDefinition spectrum_node() {
+  NodeDefinition d;
+  d.name = "spectrum";
+  d.doc = "A spectrum from a CSV file or by name, times a scale. Give exactly one of file and name.";
+  ParamDef scale;
+  scale.name = "scale";
+  scale.kind = ParamKind::kFloat;
+  scale.default_value = 1.0;
+  scale.min = 0.0;
+  scale.doc = "factor applied to every value (>= 0)";
+  d.params = {string_param("file", "CSV file (wavelength in nm, then values), relative to the scene file"),
+              string_param("name",
+                           "named spectrum: CIE illuminants (\"D65\", \"A\", \"E\", ...) and others of "
+                           "spectra/named_spectra.h"),
+              string_param("column",
+                           "value column of the CSV file, by header name (default: the first after "
+                           "the wavelength)"),
+              scale};
+  d.outputs = {{"spectrum", SocketType::kSpectrum, false, "the spectrum"}};
+  d.prepare = prepare_spectrum;
+  return d;
+}
+
+}  // namespace ochre

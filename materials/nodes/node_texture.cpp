@@ -1,0 +1,96 @@
+// texture(file, colorspace, channel; uv): a filtered image lookup through the renderer's
+// TextureProvider. Wrap mode is periodic; the filter width is the shading point's uv footprint.
+
+#include <stdexcept>
+#include <string>
+
+#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/node_definition.h"
+
+namespace ochre {
+
+namespace {
+
+struct TextureData {
+  int id = -1;
+  int channels = 0;
+  int channel = 0;  // channel read by the `value` output
+};
+
+Prepared prepare_texture(const PrepareArgs& args) {
+  const std::filesystem::path path = args.resolver.resolve(args.params.at("file").get<std::string>());
+  auto data = std::make_shared<TextureData>();
+  try {
+    data->id = args.resolver.texture(path, args.params.at("colorspace").get<std::string>(), data->channels);
+  } catch (const std::exception& e) {
+    throw NodeError("file", "cannot open texture '" + path.string() + "': " + e.what());
+  }
+  data->channel = args.params.at("channel").get<int>();
+  if (data->channel >= data->channels)
+    throw NodeError("channel", "channel " + std::to_string(data->channel) + " does not exist: '" +
+                                   path.string() + "' has " + std::to_string(data->channels) + " channel(s)");
+  Prepared p;
+  p.payload = data;
+  return p;
+}
+
+void eval_texture(const NodeArgs& a) {
+  const TextureData& t = a.data<TextureData>();
+  if (!a.ctx.textures)
+    throw std::logic_error("texture node evaluated without a TextureProvider in the ShadingContext");
+  const Vec3 uvw = a.in_vector(0);
+  const Vec2 uv{uvw.x, uvw.y};
+  // Images with fewer than 3 channels are grey: their first channel fills r, g and b.
+  const int colour_channels = t.channels >= 3 ? 3 : 1;
+  const bool value_in_colour = t.channel < colour_channels;
+  float c[3] = {0.0f, 0.0f, 0.0f};
+  if (a.output_used(0) || (a.output_used(1) && value_in_colour)) {
+    a.ctx.textures->lookup(t.id, uv, a.ctx.uv_footprint, 0, colour_channels, c);
+    if (colour_channels == 1) c[1] = c[2] = c[0];
+    a.set_colour(0, {c[0], c[1], c[2]});
+  }
+  if (a.output_used(1)) {
+    float v = value_in_colour ? c[t.channel] : 0.0f;
+    if (!value_in_colour) a.ctx.textures->lookup(t.id, uv, a.ctx.uv_footprint, t.channel, 1, &v);
+    a.set_float(1, v);
+  }
+}
+
+}  // namespace
+
+NodeDefinition texture_node() {
+  NodeDefinition d;
+  d.name = "texture";
+  d.doc = "Filtered image lookup (periodic wrap). Images with 1 or 2 channels give a grey colour.";
+  SocketDef uv;
+  uv.name = "uv";
+  uv.type = SocketType::kVector;
+  uv.default_node = "uv";
+  uv.doc = "lookup coordinates (u, v, ignored); default: the mesh uv";
+  d.inputs = {uv};
+  ParamDef file;
+  file.name = "file";
+  file.required = true;
+  file.doc = "image file, relative to the scene file";
+  ParamDef colorspace;
+  colorspace.name = "colorspace";
+  colorspace.default_value = "auto";
+  colorspace.choices = {"auto", "srgb", "linear"};
+  colorspace.doc =
+      "encoding of the stored values: auto (from the file: 8-bit images sRGB, float linear), srgb, linear";
+  ParamDef channel;
+  channel.name = "channel";
+  channel.kind = ParamKind::kInt;
+  channel.default_value = 0;
+  channel.min = 0;
+  channel.doc = "channel read by the value output";
+  d.params = {file, colorspace, channel};
+  d.outputs = {{"color", SocketType::kColour, false, "linear Rec.709 colour"},
+               {"value", SocketType::kFloat, false, "the channel `channel`, linear"}};
+  d.context_usage = kUsesUV | kUsesTextures;
+  d.prepare = prepare_texture;
+  d.eval = eval_texture;
+  return d;
+}
+
+}  // namespace ochre

@@ -1,0 +1,21 @@
+#pragma once
+// ShadingContext: what a material graph may read at a shading point.
+
+#include "materials/core/vec3.h"
+#include "materials/nodes/texture_provider.h"
+#include "spectra/color_types.h"
+#include "spectra/sampled_wavelengths.h"
+
+namespace ochre {
+
+struct ShadingContext {
+  Vec3 p;                      // world position
+  Vec3 n;                      // shading normal (world)
+  Vec2 uv;                     // mesh texture coordinates (0,0 when the mesh has none)
+  RGB vertex_colour{1, 1, 1};  // linear Rec.709, (1,1,1) when the mesh has none
+  float uv_footprint = 0;      // texture filter width in uv units (0 = point lookup)
+  const SampledWavelengths* lambda = nullptr;
+  const TextureProvider* textures = nullptr;
+};
+
+}  // namespace ochre

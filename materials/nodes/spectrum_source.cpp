@@ -1,0 +1,103 @@
+#include "materials/nodes/spectrum_source.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "materials/graph/resource_resolver.h"
+#include "spectra/blackbody_spectrum.h"
+#include "spectra/cie.h"
+#include "spectra/named_spectra.h"
+#include "spectra/scaled_spectrum.h"
+#include "spectra/tabulated_spectrum.h"
+
+namespace ochre {
+
+SpectrumPtr spectrum_by_name(const std::string& name) {
+  try {
+    return named_spectrum(name);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("spectrum name '" + name + "': " + e.what());
+  }
+}
+
+SpectrumPtr spectrum_from_file(const std::string& file, const std::string& column,
+                               const ResourceResolver& resolver) {
+  const std::filesystem::path path = resolver.resolve(file);
+  try {
+    return column.empty() ? load_spectrum_csv(path) : load_spectrum_csv(path, std::string_view(column));
+  } catch (const std::exception& e) {
+    // The loaders name the file already, but say which one the scene meant in every case.
+    throw std::runtime_error("cannot load spectrum file '" + path.string() + "': " + e.what());
+  }
+}
+
+SpectrumPtr blackbody_unit_luminance(double kelvin) {
+  auto planck = std::make_shared<BlackbodySpectrum>(static_cast<float>(kelvin));
+  return std::make_shared<ScaledSpectrum>(planck, 1.0f / spectrum_to_xyz(*planck).y);
+}
+
+bool is_spectrum_object(const nlohmann::json& j) {
+  return j.is_object() && (j.contains("name") || j.contains("file") || j.contains("blackbody"));
+}
+
+namespace {
+
+std::string string_field(const nlohmann::json& j, const char* key) {
+  if (!j.at(key).is_string()) throw SpectrumObjectError(key, std::string("'") + key + "' must be a string");
+  return j.at(key).get<std::string>();
+}
+
+double number_field(const nlohmann::json& j, const char* key) {
+  const nlohmann::json& v = j.at(key);
+  if (!v.is_number() || !std::isfinite(v.get<double>()))
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be a finite number, got " + v.dump());
+  return v.get<double>();
+}
+
+}  // namespace
+
+SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver& resolver) {
+  const int kinds = j.contains("name") + j.contains("file") + j.contains("blackbody");
+  if (kinds != 1)
+    throw SpectrumObjectError(
+        "",
+        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...]} "
+        "or {\"blackbody\": kelvin}, with an optional \"scale\"");
+  for (const auto& [key, value] : j.items())
+    if (key != "name" && key != "file" && key != "column" && key != "blackbody" && key != "scale")
+      throw SpectrumObjectError(
+          key, "unknown key '" + key + "' in a spectrum (known: name, file, column, blackbody, scale)");
+  if (j.contains("column") && !j.contains("file"))
+    throw SpectrumObjectError("column", "'column' needs 'file'");
+
+  SpectrumPtr base;
+  if (j.contains("name")) {
+    try {
+      base = spectrum_by_name(string_field(j, "name"));
+    } catch (const SpectrumObjectError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw SpectrumObjectError("name", e.what());
+    }
+  } else if (j.contains("blackbody")) {
+    const double kelvin = number_field(j, "blackbody");
+    if (!(kelvin > 0.0) || kelvin > 1e6)
+      throw SpectrumObjectError("blackbody", "temperature must be in (0, 1e6] K");
+    base = blackbody_unit_luminance(kelvin);
+  } else {
+    const std::string column = j.contains("column") ? string_field(j, "column") : "";
+    try {
+      base = spectrum_from_file(string_field(j, "file"), column, resolver);
+    } catch (const SpectrumObjectError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw SpectrumObjectError("file", e.what());
+    }
+  }
+  if (!j.contains("scale")) return base;
+  const double scale = number_field(j, "scale");
+  if (scale < 0.0) throw SpectrumObjectError("scale", "'scale' must be >= 0");
+  return std::make_shared<ScaledSpectrum>(base, static_cast<float>(scale));
+}
+
+}  // namespace ochre
