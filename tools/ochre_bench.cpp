@@ -29,7 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The target of DESIGN.md / docs/performance.md: the renderer keeps at least half of raw Embree's rate.
+// The goal of docs/performance.md: the renderer keeps at least half of raw Embree's rate.
 constexpr double kGoalRatio = 0.5;
 
 struct BenchCommand {
