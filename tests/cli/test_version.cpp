@@ -1,5 +1,6 @@
 // Every tool's --version prints the version of project(VERSION) in CMakeLists.txt, the one source of
-// the version number (the installed tools are checked by tests/install/install_test.cmake).
+// the version number, and rendered EXR files record it (the installed tools are checked by
+// tests/install/install_test.cmake).
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "cli/cli_runner.h"
+#include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -32,6 +34,15 @@ TEST(Version, EveryToolPrintsTheVersionOfCMakeLists) {
     EXPECT_EQ(r.exit_code, 0) << tool << ": " << r.output;
     EXPECT_EQ(r.output, std::string(tool) + " " + version + "\n") << tool;
   }
+}
+
+TEST(Version, RenderedExrRecordsTheVersionOfCMakeLists) {
+  const auto dir = scratch_dir();
+  const auto scene = source_dir() / "scenes" / "furnace" / "furnace.json";
+  const CommandResult r =
+      run_ochre("render '" + scene.string() + "' -o out.exr --resolution 4x2 --spp 1 -q", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_exr(dir / "out.exr").string_attributes.at("software"), "ochre " + cmake_project_version());
 }
 
 }  // namespace
