@@ -58,21 +58,20 @@ const std::vector<std::vector<float>> kTableWavelengths = {{400.0f, 550.0f, 700.
                                                            {400.0f, 500.0f, 700.0f}};
 const std::vector<float> kTableValues = {0.2f, 0.6f, 0.4f};
 
+// The values of a spectrum over the 400-700 nm table above at its ends (the table's), just outside, far
+// outside and at NaN (the value below the table: finite).
+void expect_ends_and_outside(const TabulatedSpectrum& s, float below, float above) {
+  EXPECT_EQ(s.eval(400.0f), 0.2f);
+  EXPECT_EQ(s.eval(700.0f), 0.4f);
+  for (float x : {just_below(400.0f), 399.0f, 360.0f, -1e6f, float(NAN)}) EXPECT_EQ(s.eval(x), below) << x;
+  for (float x : {just_above(700.0f), 701.0f, 830.0f, 1e6f}) EXPECT_EQ(s.eval(x), above) << x;
+  EXPECT_EQ(s.max_value(), 0.6f);
+}
+
 TEST(TabulatedSpectrum, ClampHoldsTheEndValuesOutsideTheTable) {
   for (const auto& l : kTableWavelengths) {
     const TabulatedSpectrum s(l, kTableValues, TableExtrapolation::kClamp);
-    EXPECT_EQ(s.eval(400.0f), 0.2f);  // at the ends: the table's values
-    EXPECT_EQ(s.eval(700.0f), 0.4f);
-    EXPECT_EQ(s.eval(just_below(400.0f)), 0.2f);  // just outside
-    EXPECT_EQ(s.eval(just_above(700.0f)), 0.4f);
-    EXPECT_EQ(s.eval(399.0f), 0.2f);
-    EXPECT_EQ(s.eval(701.0f), 0.4f);
-    EXPECT_EQ(s.eval(360.0f), 0.2f);  // far outside
-    EXPECT_EQ(s.eval(830.0f), 0.4f);
-    EXPECT_EQ(s.eval(-1e6f), 0.2f);
-    EXPECT_EQ(s.eval(1e6f), 0.4f);
-    EXPECT_EQ(s.eval(NAN), 0.2f);
-    EXPECT_EQ(s.max_value(), 0.6f);
+    expect_ends_and_outside(s, 0.2f, 0.4f);
     EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
               SampledSpectrum(0.2f, 0.2f, 0.4f, 0.4f));
   }
@@ -83,20 +82,10 @@ TEST(TabulatedSpectrum, ClampHoldsTheEndValuesOutsideTheTable) {
 TEST(TabulatedSpectrum, ZeroVanishesOutsideTheTableOnly) {
   for (const auto& l : kTableWavelengths) {
     const TabulatedSpectrum s(l, kTableValues, TableExtrapolation::kZero);
-    EXPECT_EQ(s.eval(400.0f), 0.2f);  // at the ends: still the table's values
-    EXPECT_EQ(s.eval(700.0f), 0.4f);
+    expect_ends_and_outside(s, 0.0f, 0.0f);
+    // Just inside, the table's interpolation, as with clamp.
     EXPECT_EQ(s.eval(just_above(400.0f)), TabulatedSpectrum(l, kTableValues).eval(just_above(400.0f)));
     EXPECT_EQ(s.eval(just_below(700.0f)), TabulatedSpectrum(l, kTableValues).eval(just_below(700.0f)));
-    EXPECT_EQ(s.eval(just_below(400.0f)), 0.0f);  // just outside
-    EXPECT_EQ(s.eval(just_above(700.0f)), 0.0f);
-    EXPECT_EQ(s.eval(399.0f), 0.0f);
-    EXPECT_EQ(s.eval(701.0f), 0.0f);
-    EXPECT_EQ(s.eval(360.0f), 0.0f);  // far outside
-    EXPECT_EQ(s.eval(830.0f), 0.0f);
-    EXPECT_EQ(s.eval(-1e6f), 0.0f);
-    EXPECT_EQ(s.eval(1e6f), 0.0f);
-    EXPECT_EQ(s.eval(NAN), 0.0f);  // finite
-    EXPECT_EQ(s.max_value(), 0.6f);
     EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
               SampledSpectrum(0.0f, 0.2f, 0.4f, 0.0f));
   }
