@@ -1,6 +1,7 @@
 #include "renderer/image_metrics.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards (DESIGN.md).
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards
+// (docs/architecture.md, 'Building against Debian 12's packages').
 #include <fmt/format.h>
 // clang-format off
 #include <OpenImageIO/imageio.h>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/display_image.h"
 #include "renderer/exr_writer.h"
@@ -126,7 +127,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     if (film.spectral_bins() > 0) add_spectral_channels(film, image);
     if (film.has_stokes()) add_stokes_channels(film, image);
     image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
-    image.string_attributes["software"] = "ochre 0.1.0";
+    image.string_attributes["software"] = "ochre " OCHRE_VERSION;
     image.string_attributes["ochre.scene"] = scene_file;
     image.string_attributes["ochre.colorspace"] = outputs.colorspace;
     image.string_attributes["ochre.spp"] = std::to_string(settings.spp);

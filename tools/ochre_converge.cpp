@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
 #include "renderer/film.h"
@@ -26,6 +27,7 @@
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "tools/tool_files.h"
 
 namespace {
 
@@ -227,16 +229,8 @@ void print_equal_time_ratios(const std::vector<std::vector<Row>>& by_variant) {
   }
 }
 
-// tools/plot_convergence.py beside the executable's source tree (build/bin/../../tools), else in the
-// source directory this tool was built from.
 fs::path plot_script() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const fs::path beside = exe.parent_path() / ".." / ".." / "tools" / "plot_convergence.py";
-    if (fs::exists(beside)) return beside;
-  }
-  return fs::path(OCHRE_SOURCE_DIR) / "tools" / "plot_convergence.py";
+  return ochre::tool_file("scripts/plot_convergence.py", "tools/plot_convergence.py");
 }
 
 std::string shell_quote(const std::string& s) {
@@ -301,6 +295,7 @@ int run_converge(ConvergeCommand cmd) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-converge: relative MSE against render time, per variant of a scene's settings"};
+  app.set_version_flag("--version", "ochre-converge " OCHRE_VERSION);
   ConvergeCommand cmd;
   int threads = 0, width = 0, height = 0;
   uint64_t seed = 0;

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <regex>
 
+#include "ochre/version.h"
 #include "tools/render_command.h"
 
 namespace {
@@ -21,7 +22,7 @@ bool parse_resolution(const std::string& text, int& width, int& height) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre: spectral path tracer with Mueller-matrix polarization"};
-  app.set_version_flag("--version", "ochre 0.1.0");
+  app.set_version_flag("--version", "ochre " OCHRE_VERSION);
   app.require_subcommand(1);
 
   ochre::RenderCommand cmd;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
 #include "renderer/image_error.h"
@@ -247,6 +248,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "ochre-regress: noise-aware image regression tests (per-pixel luminance z-test, Sidak "
       "correction)"};
+  app.set_version_flag("--version", "ochre-regress " OCHRE_VERSION);
   RegressCommand cmd;
   app.add_option("dir", cmd.dir, "Folder of *.json scenes with references/<name>.exr")->required();
   app.add_flag("--update", cmd.update,

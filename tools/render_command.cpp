@@ -17,7 +17,7 @@ namespace ochre {
 
 namespace {
 
-// "auto" models only what the scene needs (DESIGN.md): off when nothing polarizes.
+// "auto" models only what the scene needs (docs/architecture.md, 'Design rules'): off when nothing polarizes.
 std::string polarization_mode(const Scene& scene) {
   const PolarizationChoice choice = polarization_for(scene);
   return fmt::format("{} ({})", polarization_mode_name(choice.mode), choice.reason);

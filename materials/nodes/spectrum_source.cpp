@@ -1,6 +1,7 @@
 #include "materials/nodes/spectrum_source.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "materials/graph/resource_resolver.h"
@@ -21,14 +22,22 @@ SpectrumPtr spectrum_by_name(const std::string& name) {
 }
 
 SpectrumPtr spectrum_from_file(const std::string& file, const std::string& column,
-                               const ResourceResolver& resolver) {
+                               const ResourceResolver& resolver, TableExtrapolation extrapolation) {
   const std::filesystem::path path = resolver.resolve(file);
   try {
-    return column.empty() ? load_spectrum_csv(path) : load_spectrum_csv(path, std::string_view(column));
+    return column.empty() ? load_spectrum_csv(path, std::size_t{1}, extrapolation)
+                          : load_spectrum_csv(path, std::string_view(column), extrapolation);
   } catch (const std::exception& e) {
     // The loaders name the file already, but say which one the scene meant in every case.
     throw std::runtime_error("cannot load spectrum file '" + path.string() + "': " + e.what());
   }
+}
+
+TableExtrapolation table_extrapolation(const nlohmann::json& value) {
+  const std::optional<TableExtrapolation> e =
+      value.is_string() ? table_extrapolation_from_name(value.get<std::string>()) : std::nullopt;
+  if (!e) throw std::runtime_error("'extrapolate' must be \"clamp\" or \"zero\", got " + value.dump());
+  return *e;
 }
 
 SpectrumPtr blackbody_unit_luminance(double kelvin) {
@@ -61,14 +70,17 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   if (kinds != 1)
     throw SpectrumObjectError(
         "",
-        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...]} "
-        "or {\"blackbody\": kelvin}, with an optional \"scale\"");
+        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...][, "
+        "\"extrapolate\": \"clamp\"|\"zero\"]} or {\"blackbody\": kelvin}, with an optional \"scale\"");
   for (const auto& [key, value] : j.items())
-    if (key != "name" && key != "file" && key != "column" && key != "blackbody" && key != "scale")
+    if (key != "name" && key != "file" && key != "column" && key != "extrapolate" && key != "blackbody" &&
+        key != "scale")
       throw SpectrumObjectError(
-          key, "unknown key '" + key + "' in a spectrum (known: name, file, column, blackbody, scale)");
-  if (j.contains("column") && !j.contains("file"))
-    throw SpectrumObjectError("column", "'column' needs 'file'");
+          key, "unknown key '" + key +
+                   "' in a spectrum (known: name, file, column, extrapolate, blackbody, scale)");
+  for (const char* file_only : {"column", "extrapolate"})
+    if (j.contains(file_only) && !j.contains("file"))
+      throw SpectrumObjectError(file_only, std::string("'") + file_only + "' needs 'file'");
 
   SpectrumPtr base;
   if (j.contains("name")) {
@@ -86,8 +98,16 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
     base = blackbody_unit_luminance(kelvin);
   } else {
     const std::string column = j.contains("column") ? string_field(j, "column") : "";
+    TableExtrapolation extrapolation = TableExtrapolation::kClamp;
+    if (j.contains("extrapolate")) {
+      try {
+        extrapolation = table_extrapolation(j.at("extrapolate"));
+      } catch (const std::runtime_error& e) {
+        throw SpectrumObjectError("extrapolate", e.what());
+      }
+    }
     try {
-      base = spectrum_from_file(string_field(j, "file"), column, resolver);
+      base = spectrum_from_file(string_field(j, "file"), column, resolver, extrapolation);
     } catch (const SpectrumObjectError&) {
       throw;
     } catch (const std::exception& e) {

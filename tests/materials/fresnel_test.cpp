@@ -1,5 +1,5 @@
-// Fresnel amplitudes, reflectances and Mueller matrices against ../shared/notes/polarization.md
-// (values from Mitsuba 3's test suite, reproduced independently) and analytic limits.
+// Fresnel amplitudes, reflectances and Mueller matrices against the check values of
+// docs/polarization.md (those of Mitsuba 3's test suite) and analytic limits.
 
 #include "materials/lobes/fresnel.h"
 

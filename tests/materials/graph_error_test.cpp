@@ -240,6 +240,23 @@ TEST(GraphErrors, MissingSpectrumFileNamesThePath) {
   expect_error_at(error_of(m, resolver), "s", "file", "/data/scenes/spd/lamp.csv");
 }
 
+TEST(GraphErrors, BadSpectrumExtrapolation) {
+  // Node parameter: one of the two names, and only with a file.
+  expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "file": "x.csv", "extrapolate": "none"},
+                                         "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})"),
+                  "s", "extrapolate", "'none' is not one of: clamp, zero");
+  expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "name": "D65", "extrapolate": "zero"},
+                                         "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})"),
+                  "s", "extrapolate", "'extrapolate' applies to 'file' only");
+  // Spectrum literal: the same rules, named by the input.
+  expect_error_at(error_of(R"({"type": "emission", "color": {"file": "x.csv", "extrapolate": "none"}})"), "",
+                  "color", "'extrapolate' must be \"clamp\" or \"zero\", got \"none\"");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"file": "x.csv", "extrapolate": 0}})"), "",
+                  "color", "'extrapolate' must be \"clamp\" or \"zero\", got 0");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"name": "D65", "extrapolate": "zero"}})"), "",
+                  "color", "'extrapolate' needs 'file'");
+}
+
 TEST(GraphErrors, UnknownSpectrumName) {
   expect_error_at(error_of(R"({"type": "emission", "color": {"name": "D66"}})"), "", "color", "D66");
   expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "name": "D66"},

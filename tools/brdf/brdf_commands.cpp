@@ -17,6 +17,7 @@
 #include "tools/brdf/direction_pairs.h"
 #include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
+#include "tools/tool_files.h"
 
 namespace ochre {
 
@@ -66,16 +67,8 @@ void write_output(const std::string& path, const std::string& text) {
   out.commit();
 }
 
-// tools/plot_brdf.py beside the executable's source tree (build/bin/../../tools), else in the source
-// directory this tool was built from.
 fs::path plot_script() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const fs::path beside = exe.parent_path() / ".." / ".." / "tools" / "plot_brdf.py";
-    if (fs::exists(beside)) return beside;
-  }
-  return fs::path(OCHRE_SOURCE_DIR) / "tools" / "plot_brdf.py";
+  return tool_file("scripts/plot_brdf.py", "tools/plot_brdf.py");
 }
 
 std::string shell_quote(const std::string& s) {
