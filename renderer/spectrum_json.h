@@ -5,6 +5,8 @@
 //   {"name": "D65", "scale": s}  named spectrum (illuminants have luminance 1 before scale)
 //   {"blackbody": 2700, "scale": s}  Planck spectrum normalised to luminance 1
 //   {"file": "x.csv", "column": "value", "scale": s}  tabulated, used as given (path relative to the scene)
+// Every form must be >= 0 at every wavelength: an InputError names `where` (and the CSV file and the
+// wavelength of its first negative entry).
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

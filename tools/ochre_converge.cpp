@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,11 +65,15 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     try {
       size_t used = 0;
       const long long v = std::stoll(value, &used);
-      if (used != value.size() || v < 0) throw std::invalid_argument(value);
-      target = static_cast<std::decay_t<decltype(*target)>>(v);
+      using Target = std::decay_t<decltype(*target)>;
+      // Checked before the conversion: 4294967297 must not wrap to 1.
+      if (used != value.size() || v < 0 ||
+          static_cast<unsigned long long>(v) > std::numeric_limits<Target>::max())
+        throw std::invalid_argument(value);
+      target = static_cast<Target>(v);
     } catch (const std::logic_error&) {
-      throw InputError(
-          fmt::format("--variant '{}': {} must be a non-negative integer, not '{}'", spec, key, value));
+      throw InputError(fmt::format("--variant '{}': {} must be a non-negative integer in range, not '{}'",
+                                   spec, key, value));
     }
   };
   if (key == "sampler")
