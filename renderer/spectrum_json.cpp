@@ -28,7 +28,8 @@ SpectrumPtr from_rgb(const nlohmann::json& value, SpectrumRole role, const std::
       return std::make_shared<RGBIlluminantSpectrum>(rgb);
     case SpectrumRole::Reflectance:
       if (c.x > 1 || c.y > 1 || c.z > 1)
-        throw InputError(fmt::format("{}: reflectance components must be <= 1 (got {})", where, json_excerpt(value)));
+        throw InputError(
+            fmt::format("{}: reflectance components must be <= 1 (got {})", where, json_excerpt(value)));
       return std::make_shared<RGBAlbedoSpectrum>(rgb);
     case SpectrumRole::Unbounded:
       break;

@@ -110,43 +110,41 @@ TEST(ErrorLocations, BlackbodyTooColdToEmitVisibleLight) {
                    {"scene.json: lights[0].intensity.blackbody: ", "60 K"}});
 }
 
+// The scene with shapes[0] a mesh of tests/data/`file` with the members `members`.
+std::string with_mesh(const char* file, const std::string& members) {
+  return with_shape(
+      fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey", {}}})", data_file(file), members));
+}
+
 TEST(ErrorLocations, LoopSubdivisionOfQuads) {
   expect_rejected({"loop",
-                   with_shape(fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey",
-                                              "subdivision": {{"scheme": "loop", "level": 1}}}})",
-                                          data_file("cube_quads.obj"))),
+                   with_mesh("cube_quads.obj", R"("subdivision": {"scheme": "loop", "level": 1})"),
                    {"scene.json: shapes[0].subdivision: ", "cube_quads", "triangles only"}});
 }
 
 TEST(ErrorLocations, DisplacementWithoutTextureCoordinates) {
-  expect_rejected({"uv",
-                   with_shape(fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey",
-                                              "subdivision": {{"level": 1}}, "displacement": {{"file": "h.exr"}}}})",
-                                          data_file("tetrahedron.obj"))),
-                   {"scene.json: shapes[0].displacement: ", "texture coordinates"}});
+  expect_rejected(
+      {"uv",
+       with_mesh("tetrahedron.obj", R"("subdivision": {"level": 1}, "displacement": {"file": "h.exr"})"),
+       {"scene.json: shapes[0].displacement: ", "texture coordinates"}});
 }
 
 TEST(ErrorLocations, DisplacementTextureMissing) {
-  expect_rejected({"texture",
-                   with_shape(fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey",
-                                              "subdivision": {{"level": 1}}, "displacement": {{"file": "h.exr"}}}})",
-                                          data_file("cube_quads.obj"))),
-                   {"scene.json: shapes[0].displacement: ", "h.exr"}});
+  expect_rejected(
+      {"texture",
+       with_mesh("cube_quads.obj", R"("subdivision": {"level": 1}, "displacement": {"file": "h.exr"})"),
+       {"scene.json: shapes[0].displacement: ", "h.exr"}});
 }
 
 TEST(ErrorLocations, FlipUvIsNotSilentlyIgnoredWithSubdivision) {
-  expect_rejected(
-      {"flip",
-       with_shape(fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey", "flip_uv_v": true,
-                                              "subdivision": {{"level": 1}}}})",
-                              data_file("cube_quads.obj"))),
-       {"scene.json: shapes[0].flip_uv_v: "}});
+  expect_rejected({"flip",
+                   with_mesh("cube_quads.obj", R"("flip_uv_v": true, "subdivision": {"level": 1})"),
+                   {"scene.json: shapes[0].flip_uv_v: "}});
 }
 
 TEST(ErrorLocations, MeshWithoutTriangles) {
   expect_rejected({"no triangles",
-                   with_shape(fmt::format(R"({{"type": "mesh", "file": "{}", "material": "grey"}})",
-                                          data_file("no_triangles.obj"))),
+                   with_mesh("no_triangles.obj", R"("name": "empty")"),
                    {"scene.json: shapes[0].file: ", "no_triangles.obj"}});
 }
 
