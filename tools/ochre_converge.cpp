@@ -27,6 +27,7 @@
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "tools/unsigned_option.h"
 
 namespace {
 
@@ -321,7 +322,8 @@ int main(int argc, char** argv) {
   app.add_option("--plot", cmd.plot,
                  "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
   auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)");
-  auto* seed_opt = app.add_option("--seed", seed, "Seed (default: the scene's)");
+  auto* seed_opt =
+      app.add_option("--seed", seed, "Seed (default: the scene's)")->check(ochre::unsigned_64_check());
   auto* width_opt =
       app.add_option("--width", width, "Film width (default: the scene's)")->check(CLI::PositiveNumber);
   auto* height_opt =

@@ -155,6 +155,25 @@ TEST(JsonTypes, IntegerWrittenWithAPointZeroIsAnInteger) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+// The command line's integers are checked the same way: CLI11 alone reads --seed -1 as 2^64 - 1.
+TEST(JsonTypes, CommandLineIntegersDoNotWrap) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", scene_with("/integrator/spp", "1"));
+  for (const char* args :
+       {"--seed -1", "--seed 18446744073709551616", "--exposure 1e39", "--spp 4294967297"}) {
+    const CommandResult r = run_ochre(std::string("render scene.json -o out.exr ") + args, dir);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(std::string(args).substr(0, std::string(args).find(' '))), std::string::npos)
+        << args << "\n"
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.exr")) << args;
+  }
+  const CommandResult r =
+      run_tool("ochre-converge", "scene.json --reference auto --spp 1 --variant a:threads=4294967297", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("threads"), std::string::npos) << r.output;
+}
+
 // --- numbers that are finite doubles but not usable single-precision floats
 
 TEST(JsonTypes, NumbersThatUnderflowSinglePrecision) {
