@@ -72,7 +72,10 @@ EnvironmentMap::EnvironmentMap(int width, int height, std::vector<RGB> rgb)
       for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(rgb_[i][c]))
           throw std::invalid_argument(fmt::format("texel (column {}, row {}) is not finite", column, row));
-        rgb_[i][c] = std::max(rgb_[i][c], 0.0f);
+        // A light never emits negative radiance (docs/scene-format.md, "Validation").
+        if (rgb_[i][c] < 0.0f)
+          throw std::invalid_argument(fmt::format("texel (column {}, row {}) is negative ({}, {}, {})",
+                                                  column, row, rgb_[i].r, rgb_[i].g, rgb_[i].b));
       }
       lum[i] = luminance(rgb_[i]);
       row_sum += lum[i];

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "renderer/input_error.h"
+#include "renderer/json_duplicate_keys.h"
 
 namespace ochre {
 
@@ -34,7 +35,7 @@ nlohmann::json read_json_file(const std::filesystem::path& file, const char* wha
   buffer << in.rdbuf();
   const std::string text = buffer.str();
   try {
-    return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    return parse_json_rejecting_duplicate_keys(text, file.string());
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(
         fmt::format("{}: {}: malformed JSON ({})", file.string(), line_column(text, e.byte), e.what()));

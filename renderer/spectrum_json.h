@@ -6,6 +6,8 @@
 //   {"blackbody": 2700, "scale": s}  Planck spectrum normalised to luminance 1
 //   {"file": "x.csv", "column": "value", "extrapolate": "zero", "scale": s}  tabulated, used as given (path
 //                                relative to the scene; outside the table: "clamp" (default) or "zero")
+// Every form must be >= 0 at every wavelength: an InputError names `where` (and the CSV file and the
+// wavelength of its first negative entry).
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
 #include "tools/tool_files.h"
+#include "tools/unsigned_option.h"
 
 namespace {
 
@@ -66,11 +68,15 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     try {
       size_t used = 0;
       const long long v = std::stoll(value, &used);
-      if (used != value.size() || v < 0) throw std::invalid_argument(value);
-      target = static_cast<std::decay_t<decltype(*target)>>(v);
+      using Target = std::decay_t<decltype(*target)>;
+      // Checked before the conversion: 4294967297 must not wrap to 1.
+      if (used != value.size() || v < 0 ||
+          static_cast<unsigned long long>(v) > std::numeric_limits<Target>::max())
+        throw std::invalid_argument(value);
+      target = static_cast<Target>(v);
     } catch (const std::logic_error&) {
-      throw InputError(
-          fmt::format("--variant '{}': {} must be a non-negative integer, not '{}'", spec, key, value));
+      throw InputError(fmt::format("--variant '{}': {} must be a non-negative integer in range, not '{}'",
+                                   spec, key, value));
     }
   };
   if (key == "sampler")
@@ -311,7 +317,8 @@ int main(int argc, char** argv) {
   app.add_option("--plot", cmd.plot,
                  "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
   auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)");
-  auto* seed_opt = app.add_option("--seed", seed, "Seed (default: the scene's)");
+  auto* seed_opt =
+      app.add_option("--seed", seed, "Seed (default: the scene's)")->check(ochre::unsigned_64_check());
   auto* width_opt =
       app.add_option("--width", width, "Film width (default: the scene's)")->check(CLI::PositiveNumber);
   auto* height_opt =

@@ -5,6 +5,7 @@
 
 #include "ochre/version.h"
 #include "tools/render_command.h"
+#include "tools/unsigned_option.h"
 
 namespace {
 
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
   auto* threads_opt =
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
-  auto* seed_opt = render->add_option("--seed", seed, "Random seed");
+  auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
   auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
   auto* view_opt = render->add_option("--view", view, "OCIO view (default: the display's)");
   auto* cs_opt = render->add_option("--colorspace", colorspace, "EXR working space: rec709 | acescg")
                      ->check(CLI::IsMember({"rec709", "acescg"}));
-  auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops");
+  auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops")
+                           ->check(CLI::Range(-64.0, 64.0));  // as output.exposure
   render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
   render
       ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")

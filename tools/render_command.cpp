@@ -66,10 +66,10 @@ int render_scene(const RenderCommand& command) {
   if (!command.polarization_png.empty()) out.polarization_png = command.polarization_png;
   if (!out.polarization_png.empty()) out.stokes = true;  // DoLP / AoLP need S1, S2
   if (out.stokes && scene->settings.polarization != "auto" && scene->settings.polarization != "stokes")
-    throw InputError(
-        fmt::format("Stokes output (--stokes, output.stokes or a polarization PNG) needs "
-                    "polarization mode stokes or auto, not '{}'",
-                    scene->settings.polarization));
+    throw InputError(fmt::format(
+        "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
+        "needs polarization mode stokes or auto, not '{}'",
+        command.scene, scene->settings.polarization));
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);

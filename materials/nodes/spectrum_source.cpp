@@ -4,7 +4,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "materials/core/single_precision.h"
 #include "materials/graph/resource_resolver.h"
+#include "materials/nodes/json_literal.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"
 #include "spectra/named_spectra.h"
@@ -42,7 +44,12 @@ TableExtrapolation table_extrapolation(const nlohmann::json& value) {
 
 SpectrumPtr blackbody_unit_luminance(double kelvin) {
   auto planck = std::make_shared<BlackbodySpectrum>(static_cast<float>(kelvin));
-  return std::make_shared<ScaledSpectrum>(planck, 1.0f / spectrum_to_xyz(*planck).y);
+  const float luminance = spectrum_to_xyz(*planck).y;
+  // Below a few hundred kelvin the visible part of Planck's law underflows single precision.
+  if (!(luminance > 0.0f) || !std::isfinite(1.0f / luminance))
+    throw std::invalid_argument("a blackbody at " + number_text(kelvin) +
+                                " K emits no visible light in single precision");
+  return std::make_shared<ScaledSpectrum>(planck, 1.0f / luminance);
 }
 
 bool is_spectrum_object(const nlohmann::json& j) {
@@ -58,8 +65,11 @@ std::string string_field(const nlohmann::json& j, const char* key) {
 
 double number_field(const nlohmann::json& j, const char* key) {
   const nlohmann::json& v = j.at(key);
-  if (!v.is_number() || !std::isfinite(v.get<double>()))
-    throw SpectrumObjectError(key, std::string("'") + key + "' must be a finite number, got " + v.dump());
+  if (!v.is_number())
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be a number, got " + json_excerpt(v));
+  if (const std::string problem = single_precision_problem(v.get<double>()); !problem.empty())
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be a finite number (got " +
+                                       json_excerpt(v) + ", " + problem + ")");
   return v.get<double>();
 }
 
@@ -94,8 +104,13 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   } else if (j.contains("blackbody")) {
     const double kelvin = number_field(j, "blackbody");
     if (!(kelvin > 0.0) || kelvin > 1e6)
-      throw SpectrumObjectError("blackbody", "temperature must be in (0, 1e6] K");
-    base = blackbody_unit_luminance(kelvin);
+      throw SpectrumObjectError("blackbody",
+                                "temperature must be in (0, 1e6] K (got " + number_text(kelvin) + ")");
+    try {
+      base = blackbody_unit_luminance(kelvin);
+    } catch (const std::invalid_argument& e) {
+      throw SpectrumObjectError("blackbody", e.what());
+    }
   } else {
     const std::string column = j.contains("column") ? string_field(j, "column") : "";
     TableExtrapolation extrapolation = TableExtrapolation::kClamp;
@@ -116,7 +131,8 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   }
   if (!j.contains("scale")) return base;
   const double scale = number_field(j, "scale");
-  if (scale < 0.0) throw SpectrumObjectError("scale", "'scale' must be >= 0");
+  if (scale < 0.0)
+    throw SpectrumObjectError("scale", "'scale' must be >= 0 (got " + number_text(scale) + ")");
   return std::make_shared<ScaledSpectrum>(base, static_cast<float>(scale));
 }
 
