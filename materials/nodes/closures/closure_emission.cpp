@@ -11,7 +11,7 @@ namespace {
 
 void emit_emission(const NodeArgs& a) {
   const float strength = std::max(a.in_float(1), 0.0f);
-  a.closure.add_emission(a.weight() * a.in_spectrum(0) * strength);
+  a.add_emission(a.weight() * a.in_spectrum(0) * strength);
 }
 
 ClosureTraits emission_traits(std::span<const InputView> in) {
