@@ -18,7 +18,7 @@ UnboundedRGB decompose_unbounded(RGB rgb) {
   if (m == 0.0f) return {0.0f, RGBSigmoidPolynomial::constant(0.0f)};
   // rgb / (2 m) as (rgb / m) / 2: the same bits, and no overflow of 2 m for m near the largest float.
   const RGB bounded{rgb.r / m * 0.5f, rgb.g / m * 0.5f, rgb.b / m * 0.5f};
-  return {2.0f * m, RGBToSpectrumTable::srgb().lookup(bounded)};
+  return {std::min(2.0f * m, kLargest), RGBToSpectrumTable::srgb().lookup(bounded)};
 }
 
 RGBAlbedoSpectrum::RGBAlbedoSpectrum(RGB rgb) : poly_(RGBToSpectrumTable::srgb().lookup(rgb)) {}
