@@ -18,16 +18,14 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "materials/lobes/oren_nayar.h"
 #include "materials/numerics/h_function.h"
+#include "support/awkward_floats.h"
 
 namespace ochre {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
-
-std::vector<float> awkward_values() {
-  return {kNaN, kInf, -kInf, 1e30f, -1e30f, std::numeric_limits<float>::max(), -0.0f, 1e-45f};
-}
+using test::awkward_floats;
+using test::kInf;
+using test::kNaN;
 
 template <class T>
 void expect_finite_constants(const LambertSphereConstants<T>& k, float c) {
@@ -38,7 +36,7 @@ void expect_finite_constants(const LambertSphereConstants<T>& k, float c) {
 }
 
 TEST(NonFiniteLookups, LambertSphereConstants) {
-  for (float c : awkward_values()) {
+  for (float c : awkward_floats()) {
     expect_finite_constants(lambert_sphere_constants_interpolated(c), c);
     expect_finite_constants(lambert_sphere_constants(static_cast<double>(c)), c);
     EXPECT_TRUE(std::isfinite(lambert_sphere_kd_from_c_eq47(c))) << c;
@@ -49,11 +47,11 @@ TEST(NonFiniteLookups, LambertSphereConstants) {
 
 TEST(NonFiniteLookups, LambertSphereExactTableIndices) {
   const LambertSphereExactGrid& grid = lambert_sphere_exact_grid();
-  for (float c : awkward_values()) {
+  for (float c : awkward_floats()) {
     const LambertSphereExactConstants k = lambert_sphere_exact_constants(c);
     EXPECT_TRUE(k.s_index >= 0 && k.s_index <= grid.s_nodes - 2) << c;
     EXPECT_TRUE(k.s_weight >= 0.0f && k.s_weight <= 1.0f) << c;
-    for (float mu : awkward_values()) {
+    for (float mu : awkward_floats()) {
       const LambertSphereExactGeometry g = lambert_sphere_exact_geometry(mu, 0.5f, 0.3f);
       if (!g.valid) continue;  // NaN and mu <= 0
       EXPECT_TRUE(g.i >= 0 && g.i <= grid.x_nodes - 2) << mu;
@@ -65,7 +63,7 @@ TEST(NonFiniteLookups, LambertSphereExactTableIndices) {
 }
 
 TEST(NonFiniteLookups, BondAlbedoInverses) {
-  for (float kd : awkward_values())
+  for (float kd : awkward_floats())
     for (const BondAlbedoInverse* inverse :
          {&lambert_sphere_kd_inverse(), &lambert_sphere_exact_kd_inverse()}) {
       const float c = inverse->c(kd);
@@ -75,11 +73,11 @@ TEST(NonFiniteLookups, BondAlbedoInverses) {
 }
 
 TEST(NonFiniteLookups, ChandrasekharTable) {
-  for (float c : awkward_values()) {
+  for (float c : awkward_floats()) {
     const ChandrasekharConstants k = chandrasekhar_constants(c);
     EXPECT_TRUE(k.c >= 0.0f && k.c <= 1.0f) << c;
     EXPECT_TRUE(k.s_weight >= 0.0f && k.s_weight <= 1.0f) << c;
-    for (float mu : awkward_values()) {
+    for (float mu : awkward_floats()) {
       EXPECT_TRUE(std::isfinite(chandrasekhar_h(k, mu))) << c << " " << mu;
       EXPECT_TRUE(std::isfinite(chandrasekhar_brdf(k, mu, 0.5f))) << c << " " << mu;
     }
@@ -119,7 +117,7 @@ void expect_finite_lobe(const Lobe& lobe, float parameter) {
 
 TEST(NonFiniteLookups, LobesBuiltFromNonFiniteParameters) {
   const SampledSpectrum copper_n(0.27f, 1.1f, 1.2f, 0.2f), copper_k(3.4f, 2.6f, 2.4f, 4.0f);
-  for (float x : awkward_values()) {
+  for (float x : awkward_floats()) {
     const SampledSpectrum s(x);
     for (LambertSphereVariant v :
          {LambertSphereVariant::kFull, LambertSphereVariant::kFast, LambertSphereVariant::kExact})

@@ -15,13 +15,10 @@
 #include "materials/core/pcg32.h"
 #include "materials/lobes/lambert.h"
 #include "materials/nodes/node_args.h"
+#include "support/awkward_floats.h"
 
 namespace ochre::test {
 namespace {
-
-constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr float kMax = std::numeric_limits<float>::max();
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
 bool finite(const SampledSpectrum& s) {
   return s.is_finite();
@@ -53,10 +50,10 @@ TEST_F(NodeArgsBoundary, FiniteWritesAreUnchangedAndNotCounted) {
   const NodeArgs a = args();
   a.set_float(0, -0.0f);
   EXPECT_TRUE(std::signbit(frame[8]));
-  a.set_colour(0, {kMax, 1e-45f, -kMax});
-  EXPECT_EQ(frame[8], kMax);
+  a.set_colour(0, {kLargest, 1e-45f, -kLargest});
+  EXPECT_EQ(frame[8], kLargest);
   EXPECT_EQ(frame[9], 1e-45f);
-  EXPECT_EQ(frame[10], -kMax);
+  EXPECT_EQ(frame[10], -kLargest);
   a.set_vector(1, {0.5f, -2.0f, 3e38f});
   EXPECT_EQ(frame[14], 3e38f);
   a.set_spectrum(1, {1.0f, 2.0f, 3.0f, 4.0f});
@@ -70,22 +67,22 @@ TEST_F(NodeArgsBoundary, EachNonFiniteWriteIsMadeFiniteAndCountedOnce) {
   EXPECT_EQ(std::bit_cast<uint32_t>(frame[8]), 0u);
   EXPECT_EQ(tally.values, 1u);
   a.set_colour(0, {kInf, 0.5f, kNaN});
-  EXPECT_EQ(frame[8], kMax);
+  EXPECT_EQ(frame[8], kLargest);
   EXPECT_EQ(frame[9], 0.5f);
   EXPECT_EQ(frame[10], 0.0f);
   EXPECT_EQ(tally.values, 2u);
   a.set_vector(1, {-kInf, 1.0f, 2.0f});
-  EXPECT_EQ(frame[12], -kMax);
+  EXPECT_EQ(frame[12], -kLargest);
   EXPECT_EQ(tally.values, 3u);
   a.set_spectrum(1, {kNaN, kInf, -kInf, 0.25f});
-  EXPECT_EQ(at(12), SampledSpectrum(0.0f, kMax, -kMax, 0.25f));
+  EXPECT_EQ(at(12), SampledSpectrum(0.0f, kLargest, -kLargest, 0.25f));
   EXPECT_EQ(tally.values, 4u);
 }
 
 TEST_F(NodeArgsBoundary, ClosureWeightsThatOverflowAreLimited) {
-  for (int k = 0; k < 4; ++k) frame[k] = kMax;
-  args().add_weight(0, SampledSpectrum(kMax));
-  EXPECT_EQ(at(0), SampledSpectrum(kMax));
+  for (int k = 0; k < 4; ++k) frame[k] = kLargest;
+  args().add_weight(0, SampledSpectrum(kLargest));
+  EXPECT_EQ(at(0), SampledSpectrum(kLargest));
   EXPECT_EQ(tally.values, 1u);
   args().add_weight(1, SampledSpectrum(0.5f));
   EXPECT_EQ(at(4), SampledSpectrum(0.5f));
@@ -97,7 +94,7 @@ TEST_F(NodeArgsBoundary, LobeWeightsAreFinite) {
   const LambertLobe* lobe = arena.make<LambertLobe>();
   a.add_lobe(lobe, SampledSpectrum(kInf, kNaN, 1.0f, 2.0f));
   ASSERT_EQ(closure.lobe_count(), 1);
-  EXPECT_EQ(closure.lobe(0).weight, SampledSpectrum(kMax, 0.0f, 1.0f, 2.0f));
+  EXPECT_EQ(closure.lobe(0).weight, SampledSpectrum(kLargest, 0.0f, 1.0f, 2.0f));
   a.add_lobe(lobe, SampledSpectrum(kNaN));  // all NaN: weight 0, so no lobe
   EXPECT_EQ(closure.lobe_count(), 1);
   a.add_lobe(lobe, SampledSpectrum(0.5f));
@@ -107,20 +104,20 @@ TEST_F(NodeArgsBoundary, LobeWeightsAreFinite) {
 
 TEST_F(NodeArgsBoundary, EmissionThatOverflowsWhenSummedIsLimited) {
   const NodeArgs a = args();
-  a.add_emission(SampledSpectrum(kMax));
+  a.add_emission(SampledSpectrum(kLargest));
   EXPECT_EQ(tally.values, 0u);
-  a.add_emission(SampledSpectrum(kMax));  // two finite emissions whose sum overflows
-  EXPECT_EQ(closure.emission(), SampledSpectrum(kMax));
+  a.add_emission(SampledSpectrum(kLargest));  // two finite emissions whose sum overflows
+  EXPECT_EQ(closure.emission(), SampledSpectrum(kLargest));
   EXPECT_EQ(tally.values, 1u);
   a.add_emission(SampledSpectrum(kNaN, 0.0f, 0.0f, 0.0f));
-  EXPECT_EQ(closure.emission(), SampledSpectrum(0.0f, kMax, kMax, kMax));
+  EXPECT_EQ(closure.emission(), SampledSpectrum(0.0f, kLargest, kLargest, kLargest));
   EXPECT_EQ(tally.values, 2u);
 }
 
 TEST_F(NodeArgsBoundary, WithoutATallyValuesAreStillMadeFinite) {
   ctx.nonfinite = nullptr;
   args().set_spectrum(0, SampledSpectrum(kInf));
-  EXPECT_EQ(at(8), SampledSpectrum(kMax));
+  EXPECT_EQ(at(8), SampledSpectrum(kLargest));
 }
 
 TEST_F(NodeArgsBoundary, ConstantFoldingKeepsTheValueToReportIt) {
@@ -222,7 +219,7 @@ TEST_F(NonFiniteEntryPoints, NonFiniteUvReachTheTextureFinite) {
                             &textures),
             1u);
   EXPECT_EQ(textures.last_uv.x, 0.0f);
-  EXPECT_EQ(textures.last_uv.y, kMax);
+  EXPECT_EQ(textures.last_uv.y, kLargest);
 }
 
 // Each closure fed NaN, +inf and -inf texels (through a colour and through a float input).
