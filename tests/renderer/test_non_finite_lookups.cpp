@@ -20,15 +20,12 @@
 #include "support/awkward_floats.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test {
 namespace {
 
 using test::awkward_floats;
-using test::kInf;
-using test::kLargest;
-using test::kNaN;
 
-std::vector<float> awkward_values() {
+std::vector<float> awkward_values() {  // and ordinary ones
   std::vector<float> v = awkward_floats();
   v.insert(v.end(), {0.3f});
   return v;
@@ -138,4 +135,4 @@ TEST(NonFiniteLookups, MeshesRejectNonFiniteAttributes) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test

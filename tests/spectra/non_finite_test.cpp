@@ -18,15 +18,12 @@
 #include "spectra/rgb_to_spectrum_table.h"
 #include "support/awkward_floats.h"
 
-namespace ochre {
+namespace ochre::test {
 namespace {
 
 using test::awkward_floats;
-using test::kInf;
-using test::kLargest;
-using test::kNaN;
 
-std::vector<float> awkward_values() {
+std::vector<float> awkward_values() {  // and ordinary ones
   std::vector<float> v = awkward_floats();
   v.insert(v.end(), {0.0f, 0.25f, 0.5f, 1.0f, 2.0f});
   return v;
@@ -138,4 +135,4 @@ TEST(NonFinite, UnboundedDecompositionMatchesTheDirectFormula) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test
