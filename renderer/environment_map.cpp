@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "spectra/color_space.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -47,8 +48,8 @@ Vec2 direction_to_equirect_uv(const Vec3& direction) {
   const float phi = std::atan2(d.x, -d.z);
   const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
   float u = 0.5f + phi * (0.5f / kPi);
-  if (!(u < 1.0f)) u = 0.0f;  // phi = pi (+z) belongs to the seam at u = 0
-  return {std::max(u, 0.0f), std::clamp(theta / kPi, 0.0f, 1.0f)};
+  if (!(u < 1.0f)) u = 0.0f;  // phi = pi (+z) belongs to the seam at u = 0; also NaN
+  return {std::max(u, 0.0f), nan_safe_clamp(theta / kPi, 0.0f, 1.0f)};  // a NaN direction gives (0, 0)
 }
 
 Vec3 equirect_uv_to_direction(const Vec2& uv) {

@@ -135,6 +135,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
         fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
     image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
     image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+    image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
     write_exr(outputs.exr, image);
     written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
                                   image.height));

@@ -42,9 +42,9 @@ void print_stats(const RenderStats& stats) {
   std::cerr << fmt::format(
       "ochre: rendered in {:.2f} s on {} threads: {:.3f} M samples/s, {:.3f} M rays/s ({} rays, {} shadow "
       "rays), "
-      "{} discarded NaN/Inf samples\n",
+      "{} discarded NaN/Inf samples, {} NaN/Inf shading values made finite\n",
       stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6,
-      stats.rays, stats.shadow_rays, stats.discarded);
+      stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
 }
 
 int render_scene(const RenderCommand& command) {

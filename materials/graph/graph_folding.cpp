@@ -176,6 +176,10 @@ class Folder {
     const SampledWavelengths lambda = SampledWavelengths::fixed(SampledSpectrum(550.0f));
     ShadingContext ctx;
     ctx.lambda = &lambda;
+    // A NaN or an overflow here stays in the folded constant: the input it reaches rejects it by name.
+    NonFiniteTally keep_non_finite;
+    keep_non_finite.keep_values = true;
+    ctx.nonfinite = &keep_non_finite;
     LobeArena arena(64);
     Closure closure;
     fn(NodeArgs{ctx, frame.data(), in.data(), out.data(), node.prepared.payload.get(), ~0u, arena, closure});

@@ -22,6 +22,7 @@ class Closure {
   // Adds a lobe with its weight; lobes with zero weight are dropped, equal lobes are not merged.
   void add_lobe(const Lobe* lobe, const SampledSpectrum& weight);
   void add_emission(const SampledSpectrum& radiance) { emission_ += radiance; }
+  void set_emission(const SampledSpectrum& radiance) { emission_ = radiance; }
   // Multiplies every lobe weight and the emission (closure scale).
   void scale(const SampledSpectrum& s);
   // this = this + other (closure add).

@@ -2,6 +2,7 @@
 // ShadingContext: what a material graph may read at a shading point.
 
 #include "materials/core/vec3.h"
+#include "materials/nodes/non_finite_tally.h"
 #include "materials/nodes/texture_provider.h"
 #include "spectra/color_types.h"
 #include "spectra/sampled_wavelengths.h"
@@ -16,6 +17,7 @@ struct ShadingContext {
   float uv_footprint = 0;      // texture filter width in uv units (0 = point lookup)
   const SampledWavelengths* lambda = nullptr;
   const TextureProvider* textures = nullptr;
+  NonFiniteTally* nonfinite = nullptr;  // counts the NaN / infinite values made finite (null: not counted)
 };
 
 }  // namespace ochre

@@ -170,6 +170,25 @@ TEST(Fresnel, ConductorWithZeroKIsTheDielectric) {
     }
 }
 
+// n = k = 0 (a constant of 0, or a NaN made 0) would divide by eta^2: the limit eta -> 0 reflects
+// everything, and the amplitudes there agree with a tiny index computed by the general formulas.
+TEST(Fresnel, VanishingConductorIndexReflectsEverything) {
+  for (float c : {0.0f, 1e-7f, 0.3f, 0.7f, 1.0f}) {
+    for (float tiny : {0.0f, 1e-20f, 1e-16f}) {
+      EXPECT_EQ(fresnel_conductor(c, tiny, 0.0f), 1.0f) << c << " " << tiny;
+      EXPECT_EQ(fresnel_conductor(c, 0.0f, tiny), 1.0f) << c << " " << tiny;
+    }
+    const auto limit = fresnel_amplitudes(double(c), std::complex<double>(0.0));
+    const auto near = fresnel_amplitudes(double(c), std::complex<double>(1e-7, 0.0));
+    EXPECT_NEAR(std::abs(limit.r_s - near.r_s), 0.0, 1e-6) << c;
+    EXPECT_NEAR(std::abs(limit.r_p - near.r_p), 0.0, 1e-6) << c;
+    const Mueller m = specular_reflection(c, std::complex<float>(0.0f));
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isfinite(m(r, k)));
+    EXPECT_FLOAT_EQ(m(0, 0), 1.0f);
+  }
+}
+
 TEST(Fresnel, ReflectionPlusTransmissionIsOneOnBothSides) {
   for (float eta : {1.5f, 1.33f, 2.4f})
     for (float side : {1.0f, -1.0f})

@@ -11,7 +11,7 @@ namespace {
 void emit_chandrasekhar(const NodeArgs& a) {
   const SampledSpectrum w = a.weight();
   if (w.is_black()) return;
-  a.closure.add_lobe(a.arena.make<ChandrasekharLobe>(a.in_spectrum(0)), w);
+  a.add_lobe(a.arena.make<ChandrasekharLobe>(a.in_spectrum(0)), w);
 }
 
 ClosureTraits chandrasekhar_traits(std::span<const InputView> in) {

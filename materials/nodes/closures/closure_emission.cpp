@@ -13,7 +13,7 @@ namespace {
 // with one) can still be negative somewhere and counts as 0 there: a light never emits negative radiance.
 void emit_emission(const NodeArgs& a) {
   const float strength = std::max(a.in_float(1), 0.0f);
-  a.closure.add_emission(clamp_zero(a.weight() * a.in_spectrum(0) * strength));
+  a.add_emission(clamp_zero(a.weight() * a.in_spectrum(0) * strength));
 }
 
 ClosureTraits emission_traits(std::span<const InputView> in) {

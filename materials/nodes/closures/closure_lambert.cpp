@@ -11,7 +11,7 @@ namespace {
 void emit_lambert(const NodeArgs& a) {
   const SampledSpectrum w = a.weight() * a.in_spectrum(0);
   if (w.is_black()) return;
-  a.closure.add_lobe(a.arena.make<LambertLobe>(), w);
+  a.add_lobe(a.arena.make<LambertLobe>(), w);
 }
 
 ClosureTraits lambert_traits(std::span<const InputView> in) {
