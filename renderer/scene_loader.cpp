@@ -363,12 +363,16 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.sampler) s.sampler = *o.sampler;
 }
 
-// An emissive shape whose power overflows (see check_power).
+// An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power
+// overflows (see check_power). Emission that varies over the surface is made finite where it is evaluated.
 void check_area_light_power(const Scene& scene, const JsonFields& top) {
-  for (size_t m = 0; m < scene.mesh_light.size(); ++m)
-    if (scene.mesh_light[m] >= 0 && !std::isfinite(scene.lights[size_t(scene.mesh_light[m])]->power()))
+  for (size_t m = 0; m < scene.mesh_light.size(); ++m) {
+    if (scene.mesh_light[m] < 0 || !scene.materials[scene.meshes[m].material]->facts().uniform_over_surface)
+      continue;
+    if (!std::isfinite(scene.lights[size_t(scene.mesh_light[m])]->power()))
       top.fail(fmt::format("shapes[{}]", m),
                "the emitted power overflows single precision (the material's emission is too large)");
+  }
 }
 
 std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const SceneOverrides& overrides) {

@@ -268,7 +268,7 @@ TEST(NonFiniteValues, DisplacementByNonFiniteTexelsIsRejected) {
                       (source_dir() / "tests/data/cube_quads.obj").string() +
                       R"(", "material": "m", "subdivision": {"level": 1},
                   "displacement": {"file": "bad.exr", "colorspace": "linear", "scale": 0.1}}]})",
-                  {"scene.json", "shapes[0].file", "cube_quads", "position of vertex 0 is not finite"});
+                  {"scene.json", "shapes[0].displacement", "cube_quads", "position of vertex 0 is not finite"});
 }
 
 }  // namespace
