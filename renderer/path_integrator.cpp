@@ -116,7 +116,7 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   if (incoming.radiance.is_black()) return;
 
   Ray shadow;
-  shadow.origin = offset_ray_origin(v.sp.p, v.ng, ls->wi);
+  shadow.origin = offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, ls->wi);
   shadow.dir = ls->wi;
   shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
   ++stats.shadow_rays;
@@ -215,7 +215,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
         beta.scale(1.0f / (1.0f - q));
       }
     }
-    ray = Ray{offset_ray_origin(v.sp.p, v.ng, wi), wi};
+    ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
   }
   return L;
 }
