@@ -37,7 +37,8 @@ Mesh make_groove_plate(const GroovePlate& plate) {
   mesh.positions.reserve(8 * size_t(plate.count) + 1);
   // Line j of the profile: ridges at even j, valleys at odd j.
   auto line = [&](int j) {
-    return Vec2{static_cast<float>(y0 + 0.5 * j * plate.pitch), j % 2 == 0 ? 0.0f : static_cast<float>(-depth)};
+    return Vec2{static_cast<float>(y0 + 0.5 * j * plate.pitch),
+                j % 2 == 0 ? 0.0f : static_cast<float>(-depth)};
   };
   for (int j = 0; j < 2 * plate.count; ++j) {
     const Vec2 a = line(j), b = line(j + 1);  // from a to b across y
@@ -60,7 +61,8 @@ namespace {
 
 // A surface of revolution about z through the profile points (r_j, z_j), each band between successive
 // points flat in the profile (its own vertices, normal perpendicular to the band) and smooth around.
-Mesh revolve(const std::vector<Vec2>& profile, int segments, float height, const char* name, bool smooth_profile) {
+Mesh revolve(const std::vector<Vec2>& profile, int segments, float height, const char* name,
+             bool smooth_profile) {
   Mesh mesh;
   mesh.name = name;
   auto ring = [&](const Vec2& point, const Vec2& normal_rz, float v) {
@@ -77,7 +79,8 @@ Mesh revolve(const std::vector<Vec2>& profile, int segments, float height, const
     const Vec2 a = profile[j], b = profile[j + 1];
     const double dr = b.x - a.x, dz = b.y - a.y, len = std::hypot(dr, dz);
     // Outward normal of the band: the profile direction (dr, dz) turned by -90 degrees.
-    const Vec2 n = smooth_profile ? Vec2{1, 0} : Vec2{static_cast<float>(dz / len), static_cast<float>(-dr / len)};
+    const Vec2 n =
+        smooth_profile ? Vec2{1, 0} : Vec2{static_cast<float>(dz / len), static_cast<float>(-dr / len)};
     const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
     ring(a, n, a.y / height);
     ring(b, n, b.y / height);
@@ -101,7 +104,8 @@ Mesh make_grooved_cylinder(const GroovedCylinder& c) {
   for (int j = 0; j <= 2 * grooves; ++j)
     profile.push_back({static_cast<float>(j % 2 == 0 ? c.radius : c.radius - depth),
                        static_cast<float>(0.5 * j * c.pitch)});
-  return revolve(profile, c.segments, static_cast<float>(grooves * double(c.pitch)), "grooved_cylinder", false);
+  return revolve(profile, c.segments, static_cast<float>(grooves * double(c.pitch)), "grooved_cylinder",
+                 false);
 }
 
 }  // namespace ochre

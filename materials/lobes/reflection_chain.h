@@ -69,6 +69,20 @@ class ChainFrames {
   Vec3d first_s_, last_s_, outgoing_;
 };
 
+// Visits the reflections of a path traced from the viewer in the order light meets them: the light
+// arrives along -exit and meets the traced reflections last to first. normal_of(j) is the facet normal
+// of traced reflection j (1-based); on_step(ChainStep) is called for each. Returns the chain's frames.
+template <class NormalOf, class OnStep>
+ChainFrames reversed_light_chain(const Vec3d& exit, int reflections, NormalOf&& normal_of, OnStep&& on_step) {
+  ChainFrames frames;
+  Vec3d d = -exit;
+  for (int j = reflections; j >= 1; --j) {
+    on_step(frames.reflect(d, normal_of(j)));
+    d = frames.outgoing();
+  }
+  return frames;
+}
+
 // The response of one chain at one facet index, accumulated step by step.
 class ChainResponse {
  public:

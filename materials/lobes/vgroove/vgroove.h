@@ -66,13 +66,10 @@ class VGroove {
 // leaving).
 template <class OnStep>
 ChainFrames light_chain(const VGroove& groove, const VGroovePath& path, OnStep&& on_step) {
-  ChainFrames frames;
-  Vec3d d = -path.exit;
-  for (int j = path.reflections; j >= 1; --j) {
-    on_step(frames.reflect(d, groove.facet_normal(VGroove::facet_of_reflection(path, j))));
-    d = frames.outgoing();
-  }
-  return frames;
+  return reversed_light_chain(
+      path.exit, path.reflections,
+      [&](int j) -> const Vec3d& { return groove.facet_normal(VGroove::facet_of_reflection(path, j)); },
+      on_step);
 }
 
 }  // namespace ochre
