@@ -255,15 +255,26 @@ namespace {
 // Position, normal and doubled area from the triangle's corners (shared by the two functions below, which
 // load the corners once).
 // The error of a point interpolated in float arithmetic from barycentrics (pbrt-v4 Eq 6.28: gamma(7) times
-// the sum of |b_i p_i|): the bound also covers the rounding of b0 = 1 - b1 - b2 and the next ray's
-// intersection arithmetic, whose errors scale with the corners too.
+// the sum of |b_i p_i|), which also covers the rounding of b0 = 1 - b1 - b2.
 constexpr float kGamma7 = 7.0f * 0x1p-24f / (1.0f - 7.0f * 0x1p-24f);
+// Unlike pbrt's intersection test, Embree's has no conservative t bound: it computes the corners relative
+// to the ray origin, so a ray leaving a long, thin triangle can find it again at t ~ 1e-9 behind an
+// origin offset by the interpolation bound alone (measured: 3.6 eps per unit of distance to the far
+// corner). The spawn bound adds 16 eps times that distance.
+constexpr float kSpawnEpsilon = 16.0f * 0x1p-24f;
+
+float max_abs_component(const Vec3& v) {
+  return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
+}
 
 TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   TrianglePoint t;
   const float b0 = 1.0f - b1 - b2;
   t.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
-  t.p_error = (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7;
+  const float reach = std::max(max_abs_component(p[0] - t.p),
+                               std::max(max_abs_component(p[1] - t.p), max_abs_component(p[2] - t.p)));
+  t.p_error =
+      (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
   const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
   t.double_area = length(n);
   t.ng = t.double_area > 0.0f && std::isfinite(t.double_area) ? n / t.double_area : Vec3(0, 0, 0);

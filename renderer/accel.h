@@ -74,7 +74,8 @@ class Accel {
 // Everything the integrator needs about a hit point.
 struct SurfacePoint {
   Vec3 p;                // position from the barycentrics (more precise than origin + t * dir)
-  Vec3 p_error;          // conservative bound of |p - the exact point on the triangle| per component
+  Vec3 p_error;          // conservative bound of |p - the exact point on the triangle| per component, widened
+                         // to cover the next ray's intersection arithmetic (offset_ray_origin)
   Vec3 ng;               // unit geometric normal, cross(p1 - p0, p2 - p0) normalized (from the winding)
   Vec3 ns;               // unit shading normal: interpolated vertex normals, or ng for flat meshes
   Vec2 uv;               // interpolated texture coordinates, (0, 0) without UVs

@@ -260,8 +260,8 @@ TEST(Accel, OffsetOriginsLeaveAxisAlignedPlanesThroughTheOrigin) {
 // uncertain as the corners; rays reflected there must never hit the plane again, and rays through it must
 // never hit it twice.
 TEST(Accel, OffsetOriginsOnHugeTiltedTrianglesAvoidSelfIntersection) {
-  const Transform tilt = Transform::rotate(37, {1, 0, 0}) * Transform::rotate(23, {0, 0, 1}) *
-                         Transform::rotate(11, {0, 1, 0});
+  const Transform tilt =
+      Transform::rotate(37, {1, 0, 0}) * Transform::rotate(23, {0, 0, 1}) * Transform::rotate(11, {0, 1, 0});
   for (float half : {400.0f, 4000.0f}) {
     Mesh plane;
     plane.positions = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
@@ -273,8 +273,10 @@ TEST(Accel, OffsetOriginsOnHugeTiltedTrianglesAvoidSelfIntersection) {
     int self_hits = 0;
     for (int i = 0; i < 50000; ++i) {
       // Aim at points spread over the middle of the plane, from far away.
-      const Vec3 target = tilt.point(Vec3((random.uniform() - 0.5f) * half, (random.uniform() - 0.5f) * half, 0));
-      const Vec3 origin = target + tilt.vector(Vec3(0, 0, 1)) * (0.5f * half) + random.direction() * (0.1f * half);
+      const Vec3 target =
+          tilt.point(Vec3((random.uniform() - 0.5f) * half, (random.uniform() - 0.5f) * half, 0));
+      const Vec3 origin =
+          target + tilt.vector(Vec3(0, 0, 1)) * (0.5f * half) + random.direction() * (0.1f * half);
       const Ray ray{origin, target - origin};
       const auto hit = accel.intersect(ray);
       if (!hit) continue;
