@@ -1,0 +1,16 @@
+#pragma once
+// Writes a square 8-bit RGB map as PNG (renderer/display_image.h, atomically). A separate file because
+// display_image.h brings spectra/mat3.h's Vec3d, which clashes with the materials' Vec3d that the
+// model's headers bring.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ochre {
+
+void write_map_png(const std::filesystem::path& path, int size, const std::vector<std::uint8_t>& rgb,
+                   const std::string& description);
+
+}  // namespace ochre
