@@ -1,7 +1,6 @@
 #pragma once
-// The V-groove library's own values (materials/lobes/vgroove/), for checking ochre-vgroove's output.
-// Plain types only: the model's headers and renderer/display_image.h cannot share a translation unit
-// (two different Vec3d types).
+// The V-groove library's own values (materials/lobes/vgroove/), for checking ochre-vgroove's output,
+// behind plain types so the tool tests need no model headers.
 
 #include <string>
 #include <vector>

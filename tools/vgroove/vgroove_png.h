@@ -1,7 +1,5 @@
 #pragma once
-// Writes a square 8-bit RGB map as PNG (renderer/display_image.h, atomically). A separate file because
-// display_image.h brings spectra/mat3.h's Vec3d, which clashes with the materials' Vec3d that the
-// model's headers bring.
+// Writes a square 8-bit RGB map as PNG (renderer/display_image.h, atomically).
 
 #include <cstdint>
 #include <filesystem>
