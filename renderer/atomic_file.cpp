@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <fstream>
 #include <system_error>
 
 #include "renderer/image_error.h"
@@ -80,6 +81,16 @@ void check_output_writable(const fs::path& output) {
   if (fs::is_directory(output, error)) {
     throw ImageError(fmt::format("cannot write {}: it is a directory", out));
   }
+}
+
+void write_text_file(const fs::path& path, std::string_view text) {
+  AtomicOutput output(path);
+  {
+    std::ofstream file(output.temp_path(), std::ios::binary);
+    file << text;
+    if (!file.flush()) throw ImageError(fmt::format("cannot write {}", path.string()));
+  }
+  output.commit();
 }
 
 }  // namespace ochre

@@ -4,6 +4,7 @@
 // image and never damages the file being replaced (rename(2) is atomic within one filesystem).
 
 #include <filesystem>
+#include <string_view>
 
 namespace ochre {
 
@@ -30,6 +31,9 @@ class AtomicOutput {
   std::filesystem::path temp_path_;
   bool committed_ = false;
 };
+
+// Writes `text` to `path` through an AtomicOutput; throws ImageError naming the path when it cannot.
+void write_text_file(const std::filesystem::path& path, std::string_view text);
 
 // Throws ImageError("cannot write OUT: directory D does not exist" / "... is not writable" / ...) when
 // an output file could not be created. The renderer calls it for every output before rendering, so a

@@ -20,6 +20,7 @@
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
 #include "renderer/subdivision.h"
+#include "renderer/groove_shapes.h"
 #include "renderer/transform.h"
 
 namespace ochre {
@@ -222,6 +223,43 @@ Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, con
   return mesh;
 }
 
+// The explicit groove shapes of renderer/groove_shapes.h, in object space.
+Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
+  auto positive = [&](const char* key, double fallback) {
+    return static_cast<float>(f.number(key, fallback, 0.0, 1e30, true));
+  };
+  auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
+  if (type == "groove_plate") {
+    f.check_known({"type", "alpha", "pitch", "count", "length", "orientation", "material", "transform", "name",
+                   "polarizer"});
+    GroovePlate plate;
+    plate.alpha_degrees = alpha();
+    plate.pitch = positive("pitch", 1.0);
+    plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
+    plate.length = positive("length", 40.0);
+    Mesh mesh = make_groove_plate(plate);
+    mesh.transform(Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
+    return mesh;
+  }
+  if (type == "cylinder") {
+    f.check_known({"type", "radius", "height", "segments", "material", "transform", "name", "polarizer"});
+    return make_cylinder(positive("radius", 1.0), positive("height", 2.0),
+                         static_cast<int>(f.integer("segments", 256, 3, 1 << 20)));
+  }
+  f.check_known({"type", "radius", "height", "alpha", "pitch", "segments", "material", "transform", "name",
+                 "polarizer"});
+  GroovedCylinder c;
+  c.radius = positive("radius", 1.0);
+  c.height = positive("height", 2.0);
+  c.alpha_degrees = alpha();
+  c.pitch = positive("pitch", 0.05);
+  c.segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+  if (!(c.pitch <= c.height)) f.fail("pitch", "must not exceed the height");
+  if (!(0.5 * c.pitch / std::tan(0.5 * c.alpha_degrees * M_PI / 180.0) < c.radius))
+    f.fail("alpha", "the grooves would be deeper than the radius: increase alpha or decrease the pitch");
+  return make_grooved_cylinder(c);
+}
+
 Mesh load_shape(const JsonFields& f, const Scene& scene) {
   const std::string type = f.required_string("type");
   const Transform to_world = f.has("transform")
@@ -262,8 +300,14 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     const int segments = static_cast<int>(f.integer("segments", 128, 3, 1 << 20));
     mesh = f.in_context("", [&] { return make_disk(radius, segments); });
     f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "groove_plate" || type == "cylinder" || type == "grooved_cylinder") {
+    mesh = load_groove_shape(f, type);
+    f.in_context("", [&] { mesh.transform(to_world); });
   } else {
-    f.fail("type", fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk)", type));
+    f.fail("type", fmt::format(
+                       "unknown shape type '{}' (known: mesh, sphere, plane, disk, groove_plate, cylinder, "
+                       "grooved_cylinder)",
+                       type));
   }
   mesh.name = f.string("name", type);
   mesh.material = material_index(scene, f);

@@ -14,11 +14,13 @@ inline NonFiniteTally& thread_non_finite_tally() {
 }
 
 inline ShadingContext shading_context(const SurfacePoint& sp, const SampledWavelengths& lambda,
-                                      const TextureProvider* textures) {
+                                      const TextureProvider* textures, const Mesh* mesh = nullptr) {
   ShadingContext ctx;
   ctx.p = sp.p;
   ctx.n = sp.ns;
   ctx.uv = sp.uv;
+  ctx.dpdu = sp.dpdu;
+  if (mesh) ctx.object_axes = mesh->object_axes.data();
   if (sp.has_colour) ctx.vertex_colour = {sp.colour.x, sp.colour.y, sp.colour.z};
   ctx.lambda = &lambda;
   ctx.textures = textures;

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -28,7 +27,7 @@
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
-#include "tools/tool_files.h"
+#include "tools/python_script.h"
 #include "tools/unsigned_option.h"
 
 namespace {
@@ -235,23 +234,10 @@ void print_equal_time_ratios(const std::vector<std::vector<Row>>& by_variant) {
   }
 }
 
-fs::path plot_script() {
-  return ochre::tool_file("scripts/plot_convergence.py", "tools/plot_convergence.py");
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // Runs the plotting script; a missing Python or matplotlib is a warning (the CSV is kept).
 void plot(const fs::path& csv, const fs::path& png) {
-  const fs::path script = plot_script();
-  const std::string command = fmt::format("/usr/bin/python3 {} {} {}", shell_quote(script.string()),
-                                          shell_quote(csv.string()), shell_quote(png.string()));
-  const int status = std::system(command.c_str());
-  if (status != 0)
+  const fs::path script = ochre::tool_script("plot_convergence.py");
+  if (!ochre::run_python(script, {csv.string(), png.string()}))
     fmt::print(stderr,
                "ochre-converge: warning: plot {} not written ({} failed; is matplotlib installed?); "
                "the CSV {} is kept\n",

@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 
@@ -17,7 +15,7 @@
 #include "tools/brdf/direction_pairs.h"
 #include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
-#include "tools/tool_files.h"
+#include "tools/python_script.h"
 
 namespace ochre {
 
@@ -58,23 +56,7 @@ void write_output(const std::string& path, const std::string& text) {
     return;
   }
   check_output_writable(path);
-  AtomicOutput out{fs::path(path)};
-  {
-    std::ofstream file(out.temp_path(), std::ios::binary);
-    file << text;
-    if (!file.flush()) throw InputError(fmt::format("cannot write {}", path));
-  }
-  out.commit();
-}
-
-fs::path plot_script() {
-  return tool_file("scripts/plot_brdf.py", "tools/plot_brdf.py");
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+  write_text_file(path, text);
 }
 
 // The closure's BRDF on a (theta_o, phi_o) grid for each incidence (wi at phi = 0, so phi_o = 0 is the
@@ -146,14 +128,12 @@ int run_plot(const PlotArgs& args) {
   write_output(csv_path.string(), csv);
   AtomicOutput png{fs::path(args.output)};
   const std::string title = fmt::format("{} ({} nm)", probe.name(), number(args.lambda_nm));
-  const std::string command =
-      fmt::format("/usr/bin/python3 {} {} {} {}", shell_quote(plot_script().string()),
-                  shell_quote(csv_path.string()), shell_quote(png.temp_path().string()), shell_quote(title));
-  const int status = std::system(command.c_str());
+  const fs::path script = tool_script("plot_brdf.py");
+  const bool plotted = run_python(script, {csv_path.string(), png.temp_path().string(), title});
   if (args.csv.empty()) fs::remove(csv_path);
-  if (status != 0) {
+  if (!plotted) {
     std::cerr << fmt::format("ochre-brdf: error: plot {} not written ({} failed; is matplotlib installed?)\n",
-                             args.output, plot_script().string());
+                             args.output, script.string());
     return 1;
   }
   png.commit();

@@ -46,7 +46,7 @@ void emit_conductor(const NodeArgs& a) {
     a.add_lobe(a.arena.make<SmoothConductorLobe>(eta, k), w);
 }
 
-ClosureTraits conductor_traits(std::span<const InputView> in) {
+ClosureTraits conductor_traits(std::span<const InputView> in, const void*) {
   const uint32_t base = kLobeReflection | kLobePolarizing;
   if (!in[2].is_constant()) return {base | kLobeDelta | kLobeGlossy, false};
   return {base | (in[2].value->f > 0.0f ? kLobeGlossy : kLobeDelta), false};

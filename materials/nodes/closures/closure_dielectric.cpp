@@ -39,7 +39,7 @@ void emit_dielectric(const NodeArgs& a) {
     a.add_lobe(a.arena.make<SmoothDielectricLobe>(eta, a.data<DielectricOptions>().opaque), w);
 }
 
-ClosureTraits dielectric_traits(std::span<const InputView> in) {
+ClosureTraits dielectric_traits(std::span<const InputView> in, const void*) {
   // The traits cannot see the `opaque` parameter: transmission is declared whenever a smooth lobe
   // may be made (a superset of the flags, which is what the facts need).
   const uint32_t base = kLobeReflection | kLobePolarizing;

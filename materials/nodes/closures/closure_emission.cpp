@@ -16,7 +16,7 @@ void emit_emission(const NodeArgs& a) {
   a.add_emission(clamp_zero(a.weight() * a.in_spectrum(0) * strength));
 }
 
-ClosureTraits emission_traits(std::span<const InputView> in) {
+ClosureTraits emission_traits(std::span<const InputView> in, const void*) {
   for (const InputView& v : in)
     if (v.is_constant() && is_zero(*v.value)) return {};
   return {0, true};

@@ -14,7 +14,7 @@ void emit_lambert(const NodeArgs& a) {
   a.add_lobe(a.arena.make<LambertLobe>(), w);
 }
 
-ClosureTraits lambert_traits(std::span<const InputView> in) {
+ClosureTraits lambert_traits(std::span<const InputView> in, const void*) {
   if (in[0].is_constant() && is_zero(*in[0].value)) return {};
   return {LambertLobe().flags(), false};
 }

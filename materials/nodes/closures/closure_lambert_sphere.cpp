@@ -66,7 +66,7 @@ void emit_lambert_sphere(const NodeArgs& a) {
   a.add_lobe(a.arena.make<LambertSphereLobe>(s.variant, c), w);
 }
 
-ClosureTraits lambert_sphere_traits(std::span<const InputView>) {
+ClosureTraits lambert_sphere_traits(std::span<const InputView>, const void*) {
   return {kLobeReflection | kLobeDiffuse, false};
 }
 
