@@ -12,8 +12,14 @@ namespace fs = std::filesystem;
 
 std::string shell_quote(const std::string& s) {
   std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+  for (char c : s) {
+    if (c == '\'')
+      quoted.append("'\\''");
+    else
+      quoted.push_back(c);
+  }
+  quoted.push_back('\'');
+  return quoted;
 }
 
 }  // namespace
@@ -23,8 +29,12 @@ fs::path tool_script(std::string_view name) {
 }
 
 bool run_python(const fs::path& script, const std::vector<std::string>& args) {
-  std::string command = "/usr/bin/python3 " + shell_quote(script.string());
-  for (const std::string& arg : args) command += " " + shell_quote(arg);
+  std::string command = "/usr/bin/python3 ";
+  command.append(shell_quote(script.string()));
+  for (const std::string& arg : args) {
+    command.push_back(' ');
+    command.append(shell_quote(arg));
+  }
   return std::system(command.c_str()) == 0;
 }
 

@@ -75,6 +75,10 @@ class NodeArgs {
     make_finite_spectrum(total);
     closure_.set_emission(total);
   }
+  // Anisotropic leaves: the closure's tangent (closure.h, set_tangent), set by the first of them.
+  bool has_tangent() const { return closure_.has_tangent(); }
+  const Vec3& tangent() const { return closure_.tangent(); }
+  void set_tangent(const Vec3& world_tangent) const { closure_.set_tangent(world_tangent); }
 
  private:
   // NaN and infinities are the floats whose exponent bits are all set: adding 1 to such an exponent carries

@@ -59,9 +59,9 @@ void emit_microgroove(const NodeArgs& a) {
   const MicrogrooveSettings& s = a.data<MicrogrooveSettings>();
   const Vec3 axis = groove_local_axis(a, s.facet, kInputs);
   const MicrogrooveShape shape{s.profile.get(), s.alpha_min, s.alpha_max};
-  a.closure.add_lobe(a.arena.make<MicrogrooveLobe>(shape, axis, groove_facet(a, s.facet, kInputs),
-                                                   s.facet.model, s.facet.reflection_limit),
-                     w);
+  a.add_lobe(a.arena.make<MicrogrooveLobe>(shape, axis, groove_facet(a, s.facet, kInputs), s.facet.model,
+                                           s.facet.reflection_limit),
+             w);
 }
 
 ClosureTraits microgroove_traits(std::span<const InputView>, const void* payload) {

@@ -28,9 +28,9 @@ void emit_vgroove(const NodeArgs& a) {
   const GrooveFacetSettings& s = a.data<GrooveFacetSettings>();
   const Vec3 axis = groove_local_axis(a, s, kInputs);
   const float alpha_degrees = std::clamp(a.in_float(0), kMinAlphaDegrees, 180.0f);
-  a.closure.add_lobe(a.arena.make<VGrooveLobe>(alpha_degrees * (std::numbers::pi / 180.0), axis,
-                                               groove_facet(a, s, kInputs), s.model, s.reflection_limit),
-                     w);
+  a.add_lobe(a.arena.make<VGrooveLobe>(alpha_degrees * (std::numbers::pi / 180.0), axis,
+                                       groove_facet(a, s, kInputs), s.model, s.reflection_limit),
+             w);
 }
 
 ClosureTraits vgroove_traits(std::span<const InputView>, const void* payload) {

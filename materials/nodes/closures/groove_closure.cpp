@@ -70,11 +70,11 @@ Vec3 groove_local_axis(const NodeArgs& a, const GrooveFacetSettings& s, const Gr
   const float angle = a.in_float(in.angle) * (std::numbers::pi_v<float> / 180.0f);
   const Vec3 reference = tangent_of(n, reference_direction(a, s.space, in.direction));
   const Vec3 groove = reference * std::cos(angle) + cross(n, reference) * std::sin(angle);
-  if (!a.closure.has_tangent()) {
-    a.closure.set_tangent(groove);
+  if (!a.has_tangent()) {
+    a.set_tangent(groove);
     return {1.0f, 0.0f, 0.0f};
   }
-  const Vec3 x = tangent_of(n, a.closure.tangent());
+  const Vec3 x = tangent_of(n, a.tangent());
   return {dot(groove, x), dot(groove, cross(n, x)), 0.0f};
 }
 
