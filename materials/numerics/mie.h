@@ -9,11 +9,11 @@
 namespace ochre {
 
 struct MieEfficiencies {
-  double extinction = 0.0;  // Q_ext
-  double scattering = 0.0;  // Q_sca
+  double extinction = 0.0;   // Q_ext
+  double scattering = 0.0;   // Q_sca
   double backscatter = 0.0;  // Q_back
-  double asymmetry = 0.0;   // g = <cos Theta>
-  int terms = 0;            // series terms summed (Wiscombe's criterion)
+  double asymmetry = 0.0;    // g = <cos Theta>
+  int terms = 0;             // series terms summed (Wiscombe's criterion)
 
   // Single-scattering albedo Q_sca / Q_ext (0 when nothing is extinguished).
   double albedo() const { return extinction > 0.0 ? scattering / extinction : 0.0; }

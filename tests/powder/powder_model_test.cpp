@@ -3,6 +3,8 @@
 // the white furnace, energy of the default material, the scaling and peak of the cyclical term, the
 // Harvey-Shack lobe, single scattering at backscatter, the thickness factor.
 
+#include "materials/lobes/powder/powder_model.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +13,6 @@
 
 #include "materials/core/vec3d.h"
 #include "materials/lobes/powder/pigment_table.h"
-#include "materials/lobes/powder/powder_model.h"
 #include "materials/numerics/gauss_legendre.h"
 
 namespace ochre::test {
@@ -126,7 +127,8 @@ TEST(PowderModel, SymmetricLadderEqualsTheSignFixedEquation21) {  // T5
       const double mi = wi.z, mo = wo.z;
       // Eq 21 with (1 + mu_o c) in place of the printed (1 - mu_o c), Q of Eq 15e, divided by 4 pi.
       const double q = (1.0 + mi * c0 - (1.0 - mi * c0) * std::exp(-2.0 * c0 * tau)) / (4.0 * c0);
-      const double eq21 = 3.0 * rho * rho / (1.0 - mi * mi * c0 * c0) * (2.0 * q / (1.0 + mo * c0) - mi * mi / (mi + mo));
+      const double eq21 =
+          3.0 * rho * rho / (1.0 - mi * mi * c0 * c0) * (2.0 * q / (1.0 + mo * c0) - mi * mi / (mi + mo));
       EXPECT_NEAR(powder_terms(p, PowderWavelength<double>{0.6, rho, tau}, wi, wo).l2, eq21 / (4.0 * kPi),
                   1e-10 * std::fabs(eq21));
     }
@@ -153,9 +155,10 @@ TEST(PowderModel, IsotropicLimitIsEquation14) {  // T6
 }
 
 // Directional albedo of the volume terms at incidence wi: (sin^2 theta_o, phi) Gauss-Legendre.
-double volume_albedo(const PowderParams<double>& p, const PowderWavelength<double>& w, const Vec3d& wi, bool with_c,
-                     int n = 256) {
-  const GaussLegendreRule us = gauss_legendre_rule(n, 0.0, 1.0), phis = gauss_legendre_rule(n, 0.0, 2.0 * kPi);
+double volume_albedo(const PowderParams<double>& p, const PowderWavelength<double>& w, const Vec3d& wi,
+                     bool with_c, int n = 256) {
+  const GaussLegendreRule us = gauss_legendre_rule(n, 0.0, 1.0),
+                          phis = gauss_legendre_rule(n, 0.0, 2.0 * kPi);
   double sum = 0.0;
   for (size_t a = 0; a < us.nodes.size(); ++a) {
     const double theta = std::asin(std::sqrt(us.nodes[a]));
@@ -281,8 +284,8 @@ TEST(PowderModel, SingleScatteringAtBackscatterAndTheThicknessFactor) {  // T13,
   const PowderWavelength<double> w{0.55, 0.6, 0.03};
   const double infinite = powder_terms(thick, w, wi, wo).l1;
   // Thin layer: [1 - exp(-kappa d (1/mu_i + 1/mu_o))] -> kappa d (1/mu_i + 1/mu_o).
-  EXPECT_NEAR(powder_terms(thin, w, wi, wo).l1 / infinite, thin.kappa * thin.thickness * (1 / wi.z + 1 / wo.z),
-              1e-8);
+  EXPECT_NEAR(powder_terms(thin, w, wi, wo).l1 / infinite,
+              thin.kappa * thin.thickness * (1 / wi.z + 1 / wo.z), 1e-8);
   PowderParams<double> thousand;
   thousand.thickness = 1000.0;  // the paper's samples: 1 mm
   EXPECT_NEAR(powder_terms(thousand, w, wi, wo).l1, infinite, 1e-15);

@@ -1,13 +1,14 @@
 // Mie scattering and the derived optics of the powder model: Bohren and Huffman's test case, the Rayleigh
 // limit, the extrapolation ratio tau_o, the hematite data and the pigment table's interpolation error.
 
+#include "materials/lobes/powder/powder_optics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "materials/lobes/powder/pigment_table.h"
-#include "materials/lobes/powder/powder_optics.h"
 #include "materials/numerics/mie.h"
 #include "spectra/named_spectra.h"
 
@@ -71,9 +72,10 @@ TEST(PowderOptics, PigmentTableInterpolation) {
     errors.push_back(std::fabs(table->albedo(float(lambda), float(b)) - exact));
   }
   std::sort(errors.begin(), errors.end());
-  const double median = errors[errors.size() / 2], p99 = errors[errors.size() * 99 / 100], worst = errors.back();
-  std::printf("pigment table |rho - Mie|: median %.1e, 99th percentile %.1e, max %.1e (%zu KiB)\n", median, p99,
-              worst, table->memory_bytes() / 1024);
+  const double median = errors[errors.size() / 2], p99 = errors[errors.size() * 99 / 100],
+               worst = errors.back();
+  std::printf("pigment table |rho - Mie|: median %.1e, 99th percentile %.1e, max %.1e (%zu KiB)\n", median,
+              p99, worst, table->memory_bytes() / 1024);
   EXPECT_LT(median, 2e-4);
   EXPECT_LT(p99, 5e-3);
   EXPECT_LT(worst, 0.02);  // near the sharp Mie resonances of grains of 0.2-0.5 um in the red

@@ -11,7 +11,10 @@ PowderLobe::PowderLobe(const std::array<PowderParams<float>, kSpectrumSamples>& 
                        const std::array<PowderWavelength<float>, kSpectrumSamples>& wavelengths)
     : params_(params), wavelengths_(wavelengths) {}
 
-SampledSpectrum PowderLobe::eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
+// noinline: GCC 12 at -O3 miscompiles this loop once inlined into sample() (every weight 0; correct with
+// -fno-tree-pre, at -O2, with clang 14, or out of line); tests/powder checks every sampled weight.
+__attribute__((noinline)) SampledSpectrum PowderLobe::eval(const Vec3& wo, const Vec3& wi,
+                                                           const SampledWavelengths&) const {
   SampledSpectrum f;
   for (int i = 0; i < kSpectrumSamples; ++i) f[i] = powder_brdf(params_[i], wavelengths_[i], wi, wo);
   return f;
@@ -66,9 +69,11 @@ const std::array<PowderSampling, kSpectrumSamples>& PowderLobe::mixtures(const V
   return mixtures_;
 }
 
-float PowderLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
+float PowderLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
   if (!(wi.z > 0.0f) || !(wo.z > 0.0f)) return 0.0f;
   const std::array<PowderSampling, kSpectrumSamples>& m = mixtures(wo);
+  // After a dispersive event only the hero wavelength carries light: no averaging over the others.
+  if (lambda.secondary_terminated()) return mixture_pdf(m[0], wo, wi);
   float sum = 0.0f;
   for (int i = 0; i < kSpectrumSamples; ++i) sum += mixture_pdf(m[i], wo, wi);
   return sum / kSpectrumSamples;

@@ -21,20 +21,20 @@
 namespace ochre {
 
 // Options; the defaults are the model of docs/materials/powder.md, the others the printed paper.
-enum class PowderLadder { kSymmetric, kPrinted };         // Eq 21 sign-fixed (symmetric form) / as printed
-enum class PowderLadderDecay { kC0, kWithAlpha };         // the ladder's c: c0, or Eq 22's c with alpha
+enum class PowderLadder { kSymmetric, kPrinted };            // Eq 21 sign-fixed (symmetric form) / as printed
+enum class PowderLadderDecay { kC0, kWithAlpha };            // the ladder's c: c0, or Eq 22's c with alpha
 enum class PowderNormalisation { kPerSteradian, kPrinted };  // L2, C divided by 4 pi, or as printed
-enum class PowderSurface { kHarveyShack, kGaussian };     // Eqs 27-28, or Eq 26
+enum class PowderSurface { kHarveyShack, kGaussian };        // Eqs 27-28, or Eq 26
 
 template <class T>
 struct PowderParams {
-  T volume_amplitude = 1;           // A_v
-  T g = 0;                          // Henyey-Greenstein anisotropy, (-1, 1)
-  T kappa = T(0.25);                // extinction coefficient, 1/um
-  T surface_amplitude = T(3e-6);    // A_s' = A_s sigma_s^2, um^2
-  T correlation_length = 2;         // l_c, um
-  T thickness = T(1e30);            // d, um (1e30: infinite)
-  T gaussian_sigma = T(0.1);        // Eq 26 only: the Gaussian's width in radians
+  T volume_amplitude = 1;         // A_v
+  T g = 0;                        // Henyey-Greenstein anisotropy, (-1, 1)
+  T kappa = T(0.25);              // extinction coefficient, 1/um
+  T surface_amplitude = T(3e-6);  // A_s' = A_s sigma_s^2, um^2
+  T correlation_length = 2;       // l_c, um
+  T thickness = T(1e30);          // d, um (1e30: infinite)
+  T gaussian_sigma = T(0.1);      // Eq 26 only: the Gaussian's width in radians
   PowderLadder ladder = PowderLadder::kSymmetric;
   PowderLadderDecay ladder_decay = PowderLadderDecay::kC0;
   PowderNormalisation normalisation = PowderNormalisation::kPerSteradian;
@@ -45,7 +45,7 @@ struct PowderParams {
 template <class T>
 struct PowderWavelength {
   T lambda_um = T(0.7);
-  T rho = T(0.752);    // single-scattering albedo of the grains
+  T rho = T(0.752);     // single-scattering albedo of the grains
   T tau_o = T(0.0318);  // extrapolation ratio of Eq 16
 };
 
@@ -76,14 +76,15 @@ T henyey_greenstein(T cos_theta, T g) {
 
 // The four terms (before the amplitudes A_v and A_s') at one wavelength.
 template <class T, class V>
-PowderTerms<T> powder_terms(const PowderParams<T>& p, const PowderWavelength<T>& w, const V& wi, const V& wo) {
+PowderTerms<T> powder_terms(const PowderParams<T>& p, const PowderWavelength<T>& w, const V& wi,
+                            const V& wo) {
   PowderTerms<T> out;
   const T mu_i = T(wi.z), mu_o = T(wo.z);
   if (!(mu_i > 0) || !(mu_o > 0)) return out;
   constexpr T kPi = std::numbers::pi_v<T>;
   const T dx_ebs = T(wo.x) - T(wi.x), dy_ebs = T(wo.y) - T(wi.y);
   const T f_ebs = std::sqrt(dx_ebs * dx_ebs + dy_ebs * dy_ebs);  // 0 at exact backscatter
-  const T k_over_kappa = 2 * kPi / (w.lambda_um * p.kappa);       // k0 / kappa
+  const T k_over_kappa = 2 * kPi / (w.lambda_um * p.kappa);      // k0 / kappa
   const T v = T(0.5) * (1 / mu_i + 1 / mu_o);
   const T u = k_over_kappa * (mu_i - mu_o);
   const T alpha = k_over_kappa * f_ebs;
