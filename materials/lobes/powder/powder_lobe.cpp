@@ -8,8 +8,9 @@
 namespace ochre {
 
 PowderLobe::PowderLobe(const std::array<PowderParams<float>, kSpectrumSamples>& params,
-                       const std::array<PowderWavelength<float>, kSpectrumSamples>& wavelengths)
-    : params_(params), wavelengths_(wavelengths) {}
+                       const std::array<PowderWavelength<float>, kSpectrumSamples>& wavelengths,
+                       PowderSamplingStrategy strategy)
+    : params_(params), wavelengths_(wavelengths), strategy_(strategy) {}
 
 // noinline: GCC 12 at -O3 miscompiles this loop once inlined into sample() (every weight 0; correct with
 // -fno-tree-pre, at -O2, with clang 14, or out of line); tests/powder checks every sampled weight.
@@ -24,6 +25,7 @@ PowderSampling PowderLobe::mixture(int i, const Vec3& wo) const {
   const PowderParams<float>& p = params_[i];
   const PowderWavelength<float>& w = wavelengths_[i];
   PowderSampling m;
+  if (strategy_ == PowderSamplingStrategy::kCosine) return m;
   const float mu_o = std::max(wo.z, 1e-4f);
   const float c0 = std::sqrt(std::max(0.0f, 3.0f * (1.0f - w.rho) * (1.0f - w.rho * p.g)));
   // The cone's half-width in the projected disk: where alpha = c0 + 1/mu_o halves the cyclical term.

@@ -26,12 +26,16 @@ struct PowderSampling {
   float surface_sigma = 0.0f;             // standard deviation of wi_xy around -wo_xy
 };
 
+// kCosine samples cosine-weighted directions only (the baseline the mixture is measured against).
+enum class PowderSamplingStrategy { kMixture, kCosine };
+
 class PowderLobe final : public Lobe {
  public:
   // Per hero wavelength: the model's parameters and spectral values; wo is not known here, so the
   // sampling mixtures are built for each wo in sample() / pdf() (cheap: closed forms).
   PowderLobe(const std::array<PowderParams<float>, kSpectrumSamples>& params,
-             const std::array<PowderWavelength<float>, kSpectrumSamples>& wavelengths);
+             const std::array<PowderWavelength<float>, kSpectrumSamples>& wavelengths,
+             PowderSamplingStrategy strategy = PowderSamplingStrategy::kMixture);
 
   uint32_t flags() const override { return kLobeReflection | kLobeDiffuse | kLobeGlossy; }
   SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const override;
@@ -52,6 +56,7 @@ class PowderLobe final : public Lobe {
 
   std::array<PowderParams<float>, kSpectrumSamples> params_;
   std::array<PowderWavelength<float>, kSpectrumSamples> wavelengths_;
+  PowderSamplingStrategy strategy_;
   mutable std::array<PowderSampling, kSpectrumSamples> mixtures_{};
   mutable Vec3 mixtures_wo_{0.0f, 0.0f, -2.0f};  // no direction: nothing cached yet
 };
