@@ -35,7 +35,8 @@ const SampledWavelengths& wavelengths() {
   return lambda;
 }
 
-SampledSpectrum evaluate(const std::string& json, const Vec3& wo, const Vec3& wi, ResourceResolver&& resolver = Files()) {
+SampledSpectrum evaluate(const std::string& json, const Vec3& wo, const Vec3& wi,
+                         ResourceResolver&& resolver = Files()) {
   const auto material = compile_material(nlohmann::json::parse(json), "m", "scene.json", resolver);
   ShadingContext ctx;
   ctx.lambda = &wavelengths();
@@ -49,7 +50,8 @@ SampledSpectrum evaluate(const std::string& json, const Vec3& wo, const Vec3& wi
 const Vec3 kWo = normalize(Vec3(0.3f, 0.1f, 0.8f));
 const Vec3 kWi = normalize(Vec3(-0.5f, 0.2f, 0.4f));
 
-float model(const PowderParams<float>& p, float lambda_nm, float rho, float tau, const Vec3& wi, const Vec3& wo) {
+float model(const PowderParams<float>& p, float lambda_nm, float rho, float tau, const Vec3& wi,
+            const Vec3& wo) {
   return powder_brdf(p, PowderWavelength<float>{lambda_nm * 1e-3f, rho, tau}, wi, wo);
 }
 
@@ -58,20 +60,24 @@ TEST(PowderNode, DefaultsAreTheDefaultHematitePowder) {
   const auto table = PigmentTable::named("hematite", PowderTau::kPaper);
   for (int i = 0; i < 4; ++i) {
     const float l = wavelengths()[i];
-    EXPECT_FLOAT_EQ(f[i], model(PowderParams<float>{}, l, table->albedo(l, 0.05f), table->tau_o(l), kWi, kWo));
+    EXPECT_FLOAT_EQ(f[i],
+                    model(PowderParams<float>{}, l, table->albedo(l, 0.05f), table->tau_o(l), kWi, kWo));
   }
   // Fine hematite is red: more light at 650-700 nm than at 450-550 nm.
   EXPECT_GT(f[3], 2.0f * f[1]);
 }
 
 TEST(PowderNode, InputsAndOptionsReachTheModel) {
-  const std::string json = R"({"type": "powder", "volume_amplitude": 1.7, "g": 0.3, "kappa": 0.6, "radius": 0.12,
+  const std::string json =
+      R"({"type": "powder", "volume_amplitude": 1.7, "g": 0.3, "kappa": 0.6, "radius": 0.12,
       "surface_amplitude": 1e-5, "correlation_length": 1.5, "thickness": 40, "ladder_decay": "alpha",
       "normalisation": "printed", "pigment": "hematite_o", "tau": "two_thirds"})";
   const SampledSpectrum f = evaluate(json, kWo, kWi);
   PowderParams<float> p;
-  p.volume_amplitude = 1.7f, p.g = 0.3f, p.kappa = 0.6f, p.surface_amplitude = 1e-5f, p.correlation_length = 1.5f;
-  p.thickness = 40.0f, p.ladder_decay = PowderLadderDecay::kWithAlpha, p.normalisation = PowderNormalisation::kPrinted;
+  p.volume_amplitude = 1.7f, p.g = 0.3f, p.kappa = 0.6f, p.surface_amplitude = 1e-5f,
+  p.correlation_length = 1.5f;
+  p.thickness = 40.0f, p.ladder_decay = PowderLadderDecay::kWithAlpha,
+  p.normalisation = PowderNormalisation::kPrinted;
   const auto table = PigmentTable::named("hematite_o", PowderTau::kTwoThirds);
   for (int i = 0; i < 4; ++i) {
     const float l = wavelengths()[i];
@@ -83,14 +89,16 @@ TEST(PowderNode, RhoOverridesTheMieAlbedo) {
   const SampledSpectrum f = evaluate(R"({"type": "powder", "rho": 0.9})", kWo, kWi);
   const auto table = PigmentTable::named("hematite", PowderTau::kPaper);
   for (int i = 0; i < 4; ++i)
-    EXPECT_FLOAT_EQ(f[i], model(PowderParams<float>{}, wavelengths()[i], 0.9f, table->tau_o(wavelengths()[i]), kWi, kWo));
+    EXPECT_FLOAT_EQ(
+        f[i], model(PowderParams<float>{}, wavelengths()[i], 0.9f, table->tau_o(wavelengths()[i]), kWi, kWo));
 }
 
 TEST(PowderNode, TwoGrainPopulationsMix) {
   const std::string json = R"({"nodes": {
       "fine": {"type": "powder", "radius": 0.03}, "coarse": {"type": "powder", "radius": 0.7},
       "out": {"type": "mix", "a": {"link": "fine"}, "b": {"link": "coarse"}, "factor": 0.25}}, "output": "out"})";
-  const auto material = compile_material(nlohmann::json::parse(json), "m", "scene.json", *std::make_unique<Files>());
+  const auto material =
+      compile_material(nlohmann::json::parse(json), "m", "scene.json", *std::make_unique<Files>());
   ShadingContext ctx;
   ctx.lambda = &wavelengths();
   LobeArena arena;
@@ -106,11 +114,13 @@ TEST(PowderNode, TwoGrainPopulationsMix) {
 TEST(PowderNode, PigmentFromACsvOfNAndK) {
   const auto dir = scratch_dir();
   std::ofstream(dir / "grain.csv") << "wavelength_nm,n,k\n300,1.6,0.01\n900,1.6,0.01\n";
-  const SampledSpectrum f = evaluate(R"({"type": "powder", "pigment_file": "grain.csv"})", kWo, kWi, Files(dir));
+  const SampledSpectrum f =
+      evaluate(R"({"type": "powder", "pigment_file": "grain.csv"})", kWo, kWi, Files(dir));
   for (int i = 0; i < 4; ++i) {
     const float l = wavelengths()[i];
     const float rho = static_cast<float>(grain_albedo(1.6, 0.01, 0.05, l * 1e-3));
-    EXPECT_NEAR(f[i], model(PowderParams<float>{}, l, rho, static_cast<float>(powder_tau_o(1.6)), kWi, kWo), 2e-3f * f[i]);
+    EXPECT_NEAR(f[i], model(PowderParams<float>{}, l, rho, static_cast<float>(powder_tau_o(1.6)), kWi, kWo),
+                2e-3f * f[i]);
   }
 }
 
@@ -124,7 +134,8 @@ TEST(PowderNode, BadParametersAreNamed) {
     return std::string();
   };
   EXPECT_NE(message(R"({"type": "powder", "pigment": "malachite"})").find("pigment"), std::string::npos);
-  EXPECT_NE(message(R"({"type": "powder", "pigment_file": "missing.csv"})").find("missing.csv"), std::string::npos);
+  EXPECT_NE(message(R"({"type": "powder", "pigment_file": "missing.csv"})").find("missing.csv"),
+            std::string::npos);
   EXPECT_NE(message(R"({"type": "powder", "kappa": -1})").find("kappa"), std::string::npos);
   EXPECT_NE(message(R"({"type": "powder", "g": 1.5})").find("g"), std::string::npos);
   EXPECT_NE(message(R"({"type": "powder", "ladder": "fixed"})").find("ladder"), std::string::npos);
