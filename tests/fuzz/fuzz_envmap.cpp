@@ -1,0 +1,74 @@
+// Fuzz target: environment maps (renderer/environment_map.h, renderer/environment_light.h) from HDR
+// and OpenEXR bytes. The input is written as map.exr when it starts with the OpenEXR magic number,
+// else as map.hdr, read by EnvironmentMap::load (OpenImageIO), turned into an environment light and
+// sampled and looked up in a few directions.
+//
+// Bounded work: images whose header declares more than 2^20 values (texels x channels) are skipped
+// before loading (a 30-byte header may declare gigabytes of pixels; see docs/validation.md). Expected errors:
+// the std::runtime_error that EnvironmentMap::load documents.
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "fuzz_support.h"
+#include "renderer/environment_light.h"
+#include "spectra/sampled_wavelengths.h"
+
+namespace {
+
+constexpr long long kMaxValues = 1 << 20;
+
+bool declares_few_values(const std::filesystem::path& file) {
+  auto input = OIIO::ImageInput::open(file.string());
+  if (!input) {
+    OIIO::geterror();  // clear the message, or OIIO keeps it per thread
+    return true;       // EnvironmentMap::load reports it
+  }
+  const OIIO::ImageSpec& spec = input->spec();
+  return static_cast<long long>(spec.width) * spec.height * std::max(spec.depth, 1) * spec.nchannels <=
+         kMaxValues;
+}
+
+// Texels near the float limit may give infinite radiance or power; NaN is never right.
+void check_not_nan(float value, const char* what) {
+  if (std::isnan(value)) {
+    std::fprintf(stderr, "ochre fuzz: FINDING: %s is %f\n", what, value);
+    std::abort();
+  }
+}
+
+void exercise(const std::shared_ptr<const ochre::EnvironmentMap>& map) {
+  const ochre::EnvironmentLight light(map, /*scene_radius=*/1.0f, /*scale=*/1.0f, /*rotation_degrees=*/30.0f);
+  check_not_nan(light.power(), "the light's power");
+  const auto lambda = ochre::SampledWavelengths::sample_visible(0.29f);
+  for (const ochre::Vec2& u :
+       {ochre::Vec2{0.1f, 0.2f}, ochre::Vec2{0.5f, 0.5f}, ochre::Vec2{0.999f, 0.001f}}) {
+    if (const auto s = light.sample({0, 0, 0}, u, lambda)) {
+      check_not_nan(s->pdf, "a sample's pdf");
+      for (int i = 0; i < ochre::kSpectrumSamples; ++i) check_not_nan(s->radiance[i], "a sample's radiance");
+    }
+  }
+  for (const ochre::Vec3& d : {ochre::Vec3{0, 1, 0}, ochre::Vec3{0, -1, 0}, ochre::Vec3{0.6f, 0, -0.8f}}) {
+    float pdf = 0.0f;
+    const ochre::SampledSpectrum radiance = light.radiance(d, lambda, &pdf);
+    check_not_nan(pdf, "a direction's pdf");
+    for (int i = 0; i < ochre::kSpectrumSamples; ++i) check_not_nan(radiance[i], "a direction's radiance");
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const char kExrMagic[] = {0x76, 0x2f, 0x31, 0x01};
+  const std::string_view bytes = ochre::fuzz::as_text(data, size);
+  const bool exr = bytes.substr(0, 4) == std::string_view(kExrMagic, 4);
+  const std::filesystem::path file = ochre::fuzz::write_workspace_file(exr ? "map.exr" : "map.hdr", bytes);
+  if (!declares_few_values(file)) return 0;
+  ochre::fuzz::expect_only_input_errors(
+      [&] { exercise(std::make_shared<const ochre::EnvironmentMap>(ochre::EnvironmentMap::load(file))); },
+      /*parser_errors=*/true);
+  return 0;
+}
