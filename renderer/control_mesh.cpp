@@ -17,6 +17,7 @@
 
 #include "renderer/input_error.h"
 #include "renderer/mesh_import.h"
+#include "renderer/ply_header.h"
 
 namespace ochre {
 
@@ -308,6 +309,7 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error))
     throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
+  check_ply_header(file);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(where, aiProcess_JoinIdenticalVertices);
   if (scene == nullptr)

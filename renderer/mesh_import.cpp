@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "renderer/input_error.h"
+#include "renderer/ply_header.h"
 
 namespace ochre {
 
@@ -196,6 +197,7 @@ Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
   if (!std::filesystem::is_regular_file(file, error)) {
     throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
   }
+  check_ply_header(file);
   Assimp::Importer importer;
   // Points and lines pass through and are skipped by convert_mesh, so a file without triangles
   // gets our own error message rather than one from Assimp's validation.

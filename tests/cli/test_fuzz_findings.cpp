@@ -1,0 +1,60 @@
+// Inputs found by fuzzing (tests/fuzz, docs/validation.md "Fuzzing") that crashed or hung ochre: each
+// is now bad input, rejected by `ochre render` with exit code 2, a message naming the file and the
+// field, and no output file. The same inputs are in tests/fuzz/corpus/, replayed by fuzz_corpus.*.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "cli/cli_runner.h"
+#include "support/test_paths.h"
+
+namespace ochre::test {
+namespace {
+
+struct Rejection {
+  std::filesystem::path dir;
+  CommandResult result;
+};
+
+// Renders scene.json (with the extra files given) in a scratch directory.
+Rejection render_scene(const std::string& scene,
+                       const std::vector<std::pair<std::string, std::string>>& files = {}) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", scene);
+  for (const auto& [name, text] : files) write_text(dir / name, text);
+  return {dir, run_ochre("render scene.json -o out.exr", dir)};
+}
+
+void expect_rejected(const Rejection& r, const std::vector<std::string>& expected) {
+  EXPECT_EQ(r.result.exit_code, 2) << r.result.output;
+  for (const std::string& s : expected)
+    EXPECT_NE(r.result.output.find(s), std::string::npos) << "message must contain '" << s << "'\n"
+                                                          << r.result.output;
+  EXPECT_FALSE(std::filesystem::exists(r.dir / "out.exr"));
+}
+
+std::string mesh_scene(const std::string& file, const std::string& options = "") {
+  return fmt::format(R"({{"film": {{"resolution": [4, 4]}}, "integrator": {{"spp": 1}},
+    "materials": {{"m": {{"type": "lambert"}}}},
+    "shapes": [{{"type": "mesh", "file": "{}", "material": "m"{}}}]}})",
+                     file, options);
+}
+
+const char* kSubdivided = R"(, "subdivision": {"level": 1})";
+
+// Assimp 5.2's PLY reader looped forever on a header without end_header (fuzz_mesh).
+TEST(FuzzFindings, PlyHeaderWithoutEndHeaderIsRejected) {
+  const std::string truncated = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n";
+  for (const std::string& options : {std::string(), std::string(kSubdivided)}) {
+    SCOPED_TRACE(options);
+    expect_rejected(render_scene(mesh_scene("mesh.ply", options), {{"mesh.ply", truncated}}),
+                    {"scene.json", "shapes[0].file", "mesh.ply", "malformed PLY header: no end_header line"});
+  }
+  expect_rejected(render_scene(mesh_scene("magic_only.ply"), {{"magic_only.ply", "ply\r\n"}}),
+                  {"magic_only.ply", "no end_header"});
+  // The check goes by the content, not the name: Assimp picks its PLY reader by content too.
+  expect_rejected(render_scene(mesh_scene("mesh.dat"), {{"mesh.dat", truncated}}),
+                  {"mesh.dat", "end_header"});
+}
+
+}  // namespace
+}  // namespace ochre::test
