@@ -15,9 +15,9 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "renderer/assimp_reader.h"
 #include "renderer/input_error.h"
 #include "renderer/mesh_import.h"
-#include "renderer/ply_header.h"
 
 namespace ochre {
 
@@ -309,11 +309,8 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error))
     throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
-  check_ply_header(file);
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(where, aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr)
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
+  const aiScene* scene = &read_with_assimp(importer, file, aiProcess_JoinIdenticalVertices);
   ControlMesh mesh;
   mesh.name = file.stem().string();
   Welder welder(mesh, vertex_colour_encoding(file));

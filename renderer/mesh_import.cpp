@@ -12,8 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/assimp_reader.h"
 #include "renderer/input_error.h"
-#include "renderer/ply_header.h"
 
 namespace ochre {
 
@@ -197,17 +197,13 @@ Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
   if (!std::filesystem::is_regular_file(file, error)) {
     throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
   }
-  check_ply_header(file);
   Assimp::Importer importer;
   // Points and lines pass through and are skipped by convert_mesh, so a file without triangles
   // gets our own error message rather than one from Assimp's validation.
   unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   if (options.smooth_normals) flags |= aiProcess_GenSmoothNormals;
   if (options.flip_uv_v) flags |= aiProcess_FlipUVs;
-  const aiScene* scene = importer.ReadFile(where, flags);
-  if (scene == nullptr) {
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
-  }
+  const aiScene* scene = &read_with_assimp(importer, file, flags);
   std::vector<Mesh> parts;
   if (scene->mRootNode != nullptr) {
     const ImportContext context{*scene, to_world, vertex_colour_encoding(file), where};

@@ -56,5 +56,32 @@ TEST(FuzzFindings, PlyHeaderWithoutEndHeaderIsRejected) {
                   {"mesh.dat", "end_header"});
 }
 
+std::string ply_triangle(int vertex_count, const std::string& face) {
+  return fmt::format(
+      "ply\nformat ascii 1.0\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n{}\n",
+      vertex_count, face);
+}
+
+// A PLY declaring 2 vertices and giving 3: the third vertex line is read as a face without vertices, on
+// which Assimp's triangulation asserted (abort, fuzz_mesh).
+TEST(FuzzFindings, PlyFaceWithoutVerticesIsRejected) {
+  for (const std::string& options : {std::string(), std::string(kSubdivided)}) {
+    SCOPED_TRACE(options);
+    expect_rejected(render_scene(mesh_scene("mesh.ply", options), {{"mesh.ply", ply_triangle(2, "3 0 1 2")}}),
+                    {"scene.json", "shapes[0].file", "mesh.ply", "face 0 has no vertices"});
+  }
+}
+
+// Assimp's PLY reader passes vertex indices through unchecked; its post-processing then read past the
+// vertex array (a render of garbage).
+TEST(FuzzFindings, PlyVertexIndexOutOfRangeIsRejected) {
+  for (const std::string& options : {std::string(), std::string(kSubdivided)}) {
+    SCOPED_TRACE(options);
+    expect_rejected(render_scene(mesh_scene("mesh.ply", options), {{"mesh.ply", ply_triangle(3, "3 0 1 7")}}),
+                    {"mesh.ply", "face 0 uses vertex 7, but there are 3 vertices"});
+  }
+}
+
 }  // namespace
 }  // namespace ochre::test
