@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "renderer/input_error.h"
 
@@ -17,14 +20,69 @@ std::string without_cr(std::string line) {
   return line;
 }
 
-// Assimp's PLY reader is chosen by content as well as by extension: any file whose first line is "ply".
+std::vector<std::string> words_of(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string word; in >> word;) words.push_back(word);
+  return words;
+}
+
+bool is_ply_type(const std::string& word) {
+  static const std::set<std::string> kTypes = {"char",  "uchar",  "short",   "ushort", "int",   "uint",
+                                               "float", "double", "int8",    "uint8",  "int16", "uint16",
+                                               "int32", "uint32", "float32", "float64"};
+  return kTypes.contains(word);
+}
+
+bool is_count(const std::string& word) {
+  return !word.empty() && word.size() <= 10 && word.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Why a PLY header line is malformed, or empty when it is well formed (P. Bourke, "PLY - Polygon File
+// Format"): format, comment / obj_info, element NAME COUNT, property TYPE NAME, property list TYPE TYPE NAME.
+std::string ply_header_line_fault(const std::vector<std::string>& w, bool& format_seen, bool& element_seen) {
+  if (w.empty()) return "empty line";
+  if (w[0] == "comment" || w[0] == "obj_info") return {};
+  if (w[0] == "format") {
+    if (format_seen) return "a second format line";
+    format_seen = true;
+    const bool known =
+        w.size() == 3 && (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian");
+    return known && w[2] == "1.0" ? "" : "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'";
+  }
+  if (!format_seen) return "expected the format line";
+  if (w[0] == "element") {
+    element_seen = true;
+    return w.size() == 3 && is_count(w[2]) ? "" : "expected 'element NAME COUNT'";
+  }
+  if (w[0] == "property") {
+    if (!element_seen) return "a property before any element";
+    if (w.size() == 3 && is_ply_type(w[1])) return {};
+    if (w.size() == 5 && w[1] == "list" && is_ply_type(w[2]) && is_ply_type(w[3])) return {};
+    return "expected 'property TYPE NAME' or 'property list TYPE TYPE NAME'";
+  }
+  return "unknown keyword '" + w[0] + "'";
+}
+
+// Assimp's PLY reader hangs on some malformed headers, so a file that is a PLY by its name or its first
+// bytes must have a well-formed header, up to its end_header line.
 void check_ply_header(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line) || without_cr(line) != "ply") return;
-  while (std::getline(in, line))
-    if (without_cr(line).starts_with("end_header")) return;
-  throw InputError(fmt::format("{}: malformed PLY header: no end_header line", file.string()));
+  const bool named_ply = file.extension() == ".ply" || file.extension() == ".PLY";
+  if (!std::getline(in, line) || (!named_ply && !line.starts_with("ply"))) return;
+  const std::string where = file.string();
+  if (words_of(without_cr(line)) != std::vector<std::string>{"ply"})
+    throw InputError(fmt::format("{}: malformed PLY header: the first line must be 'ply'", where));
+  bool format_seen = false, element_seen = false;
+  for (int number = 2; std::getline(in, line); ++number) {
+    const std::vector<std::string> words = words_of(without_cr(line));
+    if (words.size() == 1 && words[0] == "end_header") return;
+    const std::string fault = ply_header_line_fault(words, format_seen, element_seen);
+    if (!fault.empty())
+      throw InputError(fmt::format("{}: malformed PLY header: line {}: {}", where, number, fault));
+  }
+  throw InputError(fmt::format("{}: malformed PLY header: no end_header line", where));
 }
 
 void check_faces(const aiScene& scene, const std::string& where) {

@@ -41,7 +41,8 @@ std::string mesh_scene(const std::string& file, const std::string& options = "")
 
 const char* kSubdivided = R"(, "subdivision": {"level": 1})";
 
-// Assimp 5.2's PLY reader looped forever on a header without end_header (fuzz_mesh).
+// Assimp 5.2's PLY reader looped forever on a header without end_header and on malformed header lines
+// (fuzz_mesh): PLY headers are now checked line by line first.
 TEST(FuzzFindings, PlyHeaderWithoutEndHeaderIsRejected) {
   const std::string truncated = "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n";
   for (const std::string& options : {std::string(), std::string(kSubdivided)}) {
@@ -61,6 +62,35 @@ std::string ply_triangle(int vertex_count, const std::string& face) {
       "ply\nformat ascii 1.0\nelement vertex {}\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n{}\n",
       vertex_count, face);
+}
+
+TEST(FuzzFindings, MalformedPlyHeaderLinesAreRejected) {
+  const std::string start = "ply\nformat ascii 1.0\n";
+  const std::string rest = "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string vertex = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\n";
+  const struct {
+    std::string text, expected;
+  } cases[] = {
+      {"plyx\n" + vertex + face + rest, "the first line must be 'ply'"},
+      {"ply\nformat ascii 1.0\xe4\xe4\n" + vertex + face + rest, "line 2: expected 'format ascii|binary"},
+      {"ply\n" + vertex + face + rest, "line 2: expected the format line"},
+      {start + start.substr(4) + vertex + face + rest, "line 3: a second format line"},
+      {start + "propertty float w\n" + vertex + face + rest, "line 3: unknown keyword 'propertty'"},
+      {start + "property float w\n" + vertex + face + rest, "line 3: a property before any element"},
+      {start + "element vertex three\n" + face + rest, "line 3: expected 'element NAME COUNT'"},
+      {start + vertex + "property flaot w\n" + face + rest, "line 7: expected 'property TYPE NAME'"},
+      {start + vertex + "element face 1\nproperty list uchar vertex_indices\n" + rest,
+       "line 8: expected 'property TYPE NAME' or 'property list TYPE TYPE NAME'"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.text);
+    expect_rejected(render_scene(mesh_scene("mesh.ply"), {{"mesh.ply", c.text}}),
+                    {"shapes[0].file", "mesh.ply: malformed PLY header: " + c.expected});
+  }
+  // The same file with a well-formed header renders.
+  const Rejection good = render_scene(mesh_scene("mesh.ply"), {{"mesh.ply", start + vertex + face + rest}});
+  EXPECT_EQ(good.result.exit_code, 0) << good.result.output;
 }
 
 // A PLY declaring 2 vertices and giving 3: the third vertex line is read as a face without vertices, on
