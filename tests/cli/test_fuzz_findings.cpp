@@ -113,5 +113,16 @@ TEST(FuzzFindings, PlyVertexIndexOutOfRangeIsRejected) {
   }
 }
 
+// A spectrum file whose neighbouring values differ by more than the float range gave NaN at a knot
+// (fuzz_csv).
+TEST(FuzzFindings, SpectrumValuesBeyondTheFloatRangeAreRejected) {
+  const std::string scene = R"({"film": {"resolution": [4, 4]}, "integrator": {"spp": 1},
+    "materials": {"m": {"type": "lambert", "color": {"file": "huge.csv"}}},
+    "shapes": [{"type": "plane", "material": "m"}]})";
+  expect_rejected(
+      render_scene(scene, {{"huge.csv", "wavelength,value\n400,0\n510,-3e38\n600,3e38\n"}}),
+      {"scene.json", "'m'", "huge.csv", "values at index 1 and 2 differ by more than the float range"});
+}
+
 }  // namespace
 }  // namespace ochre::test
