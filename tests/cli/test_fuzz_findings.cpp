@@ -1,5 +1,5 @@
-// Inputs found by fuzzing (tests/fuzz, docs/validation.md "Fuzzing") that crashed or hung ochre: each
-// is now bad input, rejected by `ochre render` with exit code 2, a message naming the file and the
+// Inputs that crashed, hung or misled ochre, found by fuzzing (tests/fuzz, docs/validation.md "Fuzzing"):
+// each is now bad input, rejected by `ochre render` with exit code 2, a message naming the file and the
 // field, and no output file. The same inputs are in tests/fuzz/corpus/, replayed by fuzz_corpus.*.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -114,7 +114,7 @@ TEST(FuzzFindings, PlyVertexIndexOutOfRangeIsRejected) {
 }
 
 // A spectrum file whose neighbouring values differ by more than the float range gave NaN at a knot
-// (fuzz_csv).
+// (reported by fuzz_csv on an input written by hand).
 TEST(FuzzFindings, SpectrumValuesBeyondTheFloatRangeAreRejected) {
   const std::string scene = R"({"film": {"resolution": [4, 4]}, "integrator": {"spp": 1},
     "materials": {"m": {"type": "lambert", "color": {"file": "huge.csv"}}},

@@ -71,8 +71,8 @@ TEST(TabulatedSpectrum, RejectsInvalidTables) {
   EXPECT_THROW(TabulatedSpectrum({400.0f, 500.0f}, {1.0f, NAN}), std::invalid_argument);
 }
 
-// Found by fuzz_csv: values -3e38 and 3e38 are finite, their difference is not, and the interpolation at
-// the knot between them gave 0 * inf = NaN.
+// Reported by fuzz_csv (input written by hand): values -3e38 and 3e38 are finite, their difference is not,
+// and the interpolation at the knot between them gave 0 * inf = NaN.
 TEST(TabulatedSpectrum, RejectsNeighbouringValuesBeyondTheFloatRange) {
   try {
     TabulatedSpectrum({400.0f, 510.0f, 600.0f}, {0.0f, -3e38f, 3e38f});
