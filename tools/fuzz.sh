@@ -4,7 +4,8 @@
 #   tools/fuzz.sh TARGET HOURS [FINDINGS_DIR]   long run: fuzzes TARGET for HOURS (decimals allowed, e.g.
 #                                               0.25), keeps going after a finding and saves every
 #                                               crashing, leaking or hanging input in FINDINGS_DIR
-#                                               (default build/fuzz/findings/TARGET)
+#                                               (default build/fuzz/findings/TARGET); at the end replays
+#                                               each and exits 1 when one reproduces
 #   tools/fuzz.sh --short TARGET SECONDS        short run as the test suite's fuzz.TARGET: stops at the
 #                                               first finding (exit 1); exit 77 (skip) without clang-14
 #   tools/fuzz.sh --build                       configures and builds the fuzz tree only (exit 77 without
@@ -120,11 +121,20 @@ long_run() {
     -fork="${OCHRE_FUZZ_JOBS:-1}" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
     -artifact_prefix="$findings/" "$corpus" "$SOURCE_DIR/tests/fuzz/corpus/$target" \
     >"$findings/fuzz.log" 2>&1 || status=$?
-  local count
-  count="$(find "$findings" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
-    -o -name 'oom-*' \) | wc -l)"
-  echo "tools/fuzz.sh: $target: $count finding(s) in $findings; corpus $(ls "$corpus" | wc -l) inputs;" \
-    "libFuzzer exit $status"
+  # Fork mode also saves the input a job was running when it was stopped: keep what reproduces alone.
+  local count=0 file
+  mkdir -p "$findings/not-reproduced"
+  for file in "$findings"/crash-* "$findings"/leak-* "$findings"/timeout-* "$findings"/oom-*; do
+    [ -f "$file" ] || continue
+    # shellcheck disable=SC2046
+    if "$BUILD_DIR/bin/fuzz_$target" $(common_options "$target") "$file" >"$file.log" 2>&1; then
+      mv "$file" "$file.log" "$findings/not-reproduced/"
+    else
+      count=$((count + 1))
+    fi
+  done
+  echo "tools/fuzz.sh: $target: $count finding(s) that reproduce in $findings (replay logs beside them);" \
+    "corpus $(ls "$corpus" | wc -l) inputs; libFuzzer exit $status"
   [ "$count" -eq 0 ]
 }
 
