@@ -1,12 +1,14 @@
 // Fuzz target: the material graph compiler (materials/graph/material_compiler.h) on the JSON of one
-// material, then the compiled program evaluated at two shading points and every lobe of the closure
-// evaluated and sampled once. Textures are stubs (any file name opens, with 1 to 4 channels); spectrum
-// files resolve into the fuzz workspace (red.csv is there). Expected errors: GraphError.
+// material (mutated byte-wise and by json_mutator.h), then the compiled program evaluated at two shading
+// points and every lobe of the closure evaluated and sampled once. Textures are stubs (any file name opens,
+// with 1 to 4 channels); spectrum files resolve into the fuzz workspace (red.csv is there). Expected errors:
+// GraphError.
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "fuzz_support.h"
+#include "json_mutator.h"
 #include "materials/graph/material_compiler.h"
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
@@ -79,3 +81,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+OCHRE_FUZZ_JSON_MUTATOR

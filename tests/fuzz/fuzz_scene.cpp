@@ -1,7 +1,7 @@
-// Fuzz target: the scene loader (renderer/scene_loader.h) on scene JSON text, then a 4 x 4 render at
-// 1 sample per pixel on one thread. The text is written to scene.json in the fuzz workspace, so the
-// scene may name the workspace's resource files (quad.obj, cube_quads.obj, colours.ply,
-// two_triangles.gltf, checker.ppm, sky.exr, red.csv; see fuzz_support.h).
+// Fuzz target: the scene loader (renderer/scene_loader.h) on scene JSON text, mutated byte-wise and by
+// json_mutator.h, then a 4 x 4 render at 1 sample per pixel on one thread. The text is written to
+// scene.json in the fuzz workspace, so the scene may name the workspace's resource files (quad.obj,
+// cube_quads.obj, colours.ply, two_triangles.gltf, checker.ppm, sky.exr, red.csv; see fuzz_support.h).
 //
 // Bounded work: the film is overridden to 4 x 4 pixels, 1 spp, 1 thread; inputs asking for more than
 // 64 sphere subdivisions, 4096 disk segments or subdivision level 3 are skipped before loading (the
@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fuzz_support.h"
+#include "json_mutator.h"
 #include "renderer/film.h"
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
@@ -55,3 +56,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   });
   return 0;
 }
+
+OCHRE_FUZZ_JSON_MUTATOR
