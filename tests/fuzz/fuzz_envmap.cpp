@@ -4,7 +4,8 @@
 // sampled and looked up in a few directions.
 //
 // Bounded work, skipped before loading (see docs/validation.md): images whose header declares more than
-// 2^20 values (texels x channels; a 30-byte header may declare gigabytes of pixels), and OpenEXR files
+// 2^20 values (texels x channels; a 30-byte header may declare gigabytes of pixels) in the image or in one
+// tile (OpenImageIO allocates a whole tile, however small the image), and OpenEXR files
 // with a header attribute larger than the file (OpenEXR 3.1 allocates the declared size, up to 2 GB,
 // before it finds the file too short). Expected errors:
 // the std::runtime_error that EnvironmentMap::load documents.
@@ -58,8 +59,11 @@ bool declares_few_values(const std::filesystem::path& file) {
     return true;       // EnvironmentMap::load reports it
   }
   const OIIO::ImageSpec& spec = input->spec();
-  return static_cast<long long>(spec.width) * spec.height * std::max(spec.depth, 1) * spec.nchannels <=
-         kMaxValues;
+  const long long channels = spec.nchannels,
+                  tile = static_cast<long long>(spec.tile_width) * spec.tile_height;
+  return static_cast<long long>(spec.width) * spec.height * std::max(spec.depth, 1) * channels <=
+             kMaxValues &&
+         tile * std::max(spec.tile_depth, 1) * channels <= kMaxValues;
 }
 
 // Texels near the float limit may give infinite radiance or power; NaN is never right.
