@@ -192,6 +192,8 @@ int material_index(const Scene& scene, const JsonFields& f) {
 
 Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world) {
   MeshImportOptions options;
+  for (const char* key : {"smooth_normals", "flip_uv_v"})
+    if (f.has(key) && !f.require(key).is_boolean()) f.fail(key, "expected true or false");
   if (f.has("smooth_normals")) options.smooth_normals = f.require("smooth_normals").get<bool>();
   if (f.has("flip_uv_v")) options.flip_uv_v = f.require("flip_uv_v").get<bool>();
   if (f.has("displacement"))

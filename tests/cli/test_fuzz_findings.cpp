@@ -124,5 +124,18 @@ TEST(FuzzFindings, SpectrumValuesBeyondTheFloatRangeAreRejected) {
       {"scene.json", "'m'", "huge.csv", "values at index 1 and 2 differ by more than the float range"});
 }
 
+// "smooth_normals" and "flip_uv_v" were read without a type check: any other JSON type escaped as an
+// internal error (exit 1). Found by reviewing the loader's unchecked reads; fuzz_scene reports it.
+TEST(FuzzFindings, MeshOptionsMustBeBooleans) {
+  for (const char* key : {"smooth_normals", "flip_uv_v"}) {
+    for (const char* value : {"1", "\"yes\"", "null", "[true]"}) {
+      SCOPED_TRACE(std::string(key) + ": " + value);
+      expect_rejected(render_scene(mesh_scene("quad.obj", fmt::format(R"(, "{}": {})", key, value)),
+                                   {{"quad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}),
+                      {"scene.json", fmt::format("shapes[0].{}", key), "expected true or false"});
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ochre::test
