@@ -96,9 +96,11 @@ short_run() {
   local work="$BUILD_DIR/short/$target" findings="$BUILD_DIR/findings/$target"
   rm -rf "$work"
   mkdir -p "$work" "$findings"
-  # New inputs go to the scratch directory (first), never into the seed corpus in the source tree.
+  # New inputs go to the scratch directory (first), never into the seed corpus in the source tree. A fixed
+  # seed makes the run repeatable (a test failure reproduces), up to the number of inputs run in the time.
   # shellcheck disable=SC2046
-  "$fuzzer" $(common_options "$target") -max_total_time="$seconds" -runs=1000000 -print_final_stats=1 \
+  "$fuzzer" $(common_options "$target") -seed="${OCHRE_FUZZ_SEED:-1}" -max_total_time="$seconds" \
+    -runs=1000000 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$work" "$SOURCE_DIR/tests/fuzz/corpus/$target"
 }
 
