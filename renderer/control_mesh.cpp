@@ -15,6 +15,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "renderer/assimp_reader.h"
 #include "renderer/input_error.h"
 #include "renderer/mesh_import.h"
 
@@ -309,9 +310,7 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
   if (!std::filesystem::is_regular_file(file, error))
     throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(where, aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr)
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
+  const aiScene* scene = &read_with_assimp(importer, file, aiProcess_JoinIdenticalVertices);
   ControlMesh mesh;
   mesh.name = file.stem().string();
   Welder welder(mesh, vertex_colour_encoding(file));

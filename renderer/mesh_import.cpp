@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/assimp_reader.h"
 #include "renderer/input_error.h"
 
 namespace ochre {
@@ -202,10 +203,7 @@ Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
   unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   if (options.smooth_normals) flags |= aiProcess_GenSmoothNormals;
   if (options.flip_uv_v) flags |= aiProcess_FlipUVs;
-  const aiScene* scene = importer.ReadFile(where, flags);
-  if (scene == nullptr) {
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
-  }
+  const aiScene* scene = &read_with_assimp(importer, file, flags);
   std::vector<Mesh> parts;
   if (scene->mRootNode != nullptr) {
     const ImportContext context{*scene, to_world, vertex_colour_encoding(file), where};
