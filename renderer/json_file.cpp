@@ -2,10 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "renderer/input_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -28,11 +26,10 @@ std::string line_column(const std::string& text, size_t byte) {
 }  // namespace
 
 nlohmann::json read_json_file(const std::filesystem::path& file, const char* what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::error_code error;
+  if (!std::filesystem::exists(file, error))
+    throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
+  const std::string text = read_input_file(file, InputKind{what, kJsonFileLimit});
   try {
     return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {

@@ -13,6 +13,7 @@
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/json_file.h"
+#include "renderer/memory_budget.h"
 #include "renderer/mesh_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
@@ -236,7 +237,11 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
   } else if (type == "sphere") {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
-    mesh = make_sphere(radius, static_cast<int>(f.integer("subdivisions", 96, 4, 4096)));
+    const int subdivisions = static_cast<int>(f.integer("subdivisions", 96, 4, 4096));
+    check_memory_estimate(sphere_memory_bytes(subdivisions),
+                          fmt::format("{}: a sphere of {:.0f} triangles", f.child("subdivisions"),
+                                      sphere_triangle_count(subdivisions)));
+    mesh = make_sphere(radius, subdivisions);
     mesh.transform(to_world * Transform::translate(f.vec3("center", {0, 0, 0})));
   } else if (type == "plane") {
     f.check_known({"type", "size", "material", "transform", "name", "polarizer"});

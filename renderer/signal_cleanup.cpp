@@ -1,0 +1,108 @@
+#include "renderer/signal_cleanup.h"
+
+#include <limits.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <atomic>
+#include <cstring>
+#include <mutex>
+
+namespace ochre {
+
+namespace {
+
+constexpr int kSlots = 64;
+constexpr int kHandledSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+enum SlotState : int { kFree = 0, kClaimed = 1, kReady = 2 };
+
+// Fixed storage: the handler reads paths without allocating. A slot's path is written while it is
+// kClaimed and read by the handler only once it is kReady.
+struct Slot {
+  std::atomic<int> state{kFree};
+  char path[PATH_MAX];
+};
+std::array<Slot, kSlots> slots;
+
+std::atomic<int> deferrals{0};
+std::atomic<int> pending_signal{0};
+
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
+
+void remove_temporaries_and_reraise(int signal_number) {
+  for (Slot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == kReady) ::unlink(slot.path);
+  struct sigaction default_action {};
+  default_action.sa_handler = SIG_DFL;
+  sigemptyset(&default_action.sa_mask);
+  ::sigaction(signal_number, &default_action, nullptr);
+  ::raise(signal_number);
+}
+
+extern "C" void on_signal(int signal_number) {
+  const int saved_errno = errno;
+  // Pending first, then the check: a deferral ending concurrently then sees the signal (and acts on it).
+  pending_signal.store(signal_number);
+  if (deferrals.load() > 0) {
+    errno = saved_errno;
+    return;
+  }
+  remove_temporaries_and_reraise(signal_number);
+  errno = saved_errno;
+}
+
+}  // namespace
+
+void install_signal_cleanup() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int signal_number : kHandledSignals) {
+      struct sigaction previous {};
+      if (::sigaction(signal_number, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN) continue;
+      struct sigaction action {};
+      action.sa_handler = on_signal;
+      sigemptyset(&action.sa_mask);
+      for (int other : kHandledSignals) sigaddset(&action.sa_mask, other);
+      ::sigaction(signal_number, &action, nullptr);
+    }
+  });
+}
+
+TemporaryFileRegistration::TemporaryFileRegistration(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::string absolute = std::filesystem::absolute(path, error).string();
+  if (error || absolute.size() >= PATH_MAX) return;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (!slots[i].state.compare_exchange_strong(expected, kClaimed)) continue;
+    std::memcpy(slots[i].path, absolute.c_str(), absolute.size() + 1);
+    slots[i].state.store(kReady, std::memory_order_release);
+    slot_ = i;
+    return;
+  }
+}
+
+TemporaryFileRegistration::~TemporaryFileRegistration() {
+  release();
+}
+
+void TemporaryFileRegistration::release() {
+  if (slot_ < 0) return;
+  slots[slot_].state.store(kFree, std::memory_order_release);
+  slot_ = -1;
+}
+
+SignalDeferral::SignalDeferral() {
+  deferrals.fetch_add(1);
+}
+
+SignalDeferral::~SignalDeferral() {
+  if (deferrals.fetch_sub(1) != 1) return;
+  if (const int signal_number = pending_signal.exchange(0); signal_number != 0)
+    remove_temporaries_and_reraise(signal_number);
+}
+
+}  // namespace ochre
