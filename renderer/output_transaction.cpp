@@ -50,7 +50,11 @@ class Backup {
 }  // namespace
 
 AtomicOutput& OutputTransaction::add(const fs::path& final_path) {
-  outputs_.push_back(std::make_unique<AtomicOutput>(final_path));
+  return add(std::make_unique<AtomicOutput>(final_path));
+}
+
+AtomicOutput& OutputTransaction::add(std::unique_ptr<AtomicOutput> output) {
+  outputs_.push_back(std::move(output));
   return *outputs_.back();
 }
 

@@ -31,6 +31,8 @@ class OutputTransaction {
 
   // The temporary for final_path; the writer writes output.temp_path() and does not commit.
   AtomicOutput& add(const std::filesystem::path& final_path);
+  // An output written before it was known to belong to the set (e.g. only when a plot succeeded).
+  AtomicOutput& add(std::unique_ptr<AtomicOutput> output);
 
   // Renames every temporary over its final path (see above). Throws ImageError naming the output that
   // failed; the temporaries are removed by the destructor.
