@@ -87,7 +87,8 @@ std::vector<fs::path> scene_files(const RegressCommand& cmd) {
   if (!fs::is_directory(dir)) throw ochre::InputError(cmd.dir + ": not a directory");
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+    // Not only regular files: a FIFO or a device named *.json is reported (spectra/input_file.h), not skipped.
+    if (!entry.is_directory() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (!cmd.only.empty()) {
     std::vector<fs::path> chosen;

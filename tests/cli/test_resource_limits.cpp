@@ -1,0 +1,142 @@
+// Requests larger than the machine (or --memory-limit) are refused with exit code 2 and the estimate
+// before anything is allocated: the film, subdivision, tessellation, textures; polygons too large to
+// triangulate are refused at once instead of taking minutes.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "cli/cli_runner.h"
+#include "cli/file_test_support.h"
+#include "support/test_paths.h"
+
+namespace ochre::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kTimeout = 60;
+
+CommandResult render(const fs::path& dir, const std::string& args) {
+  return run_tool("ochre", "render scene.json -o out.exr -q " + args, dir, false, kTimeout);
+}
+
+void expect_refused(const fs::path& dir, const std::string& args, const std::vector<std::string>& parts) {
+  const CommandResult r = render(dir, args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  for (const std::string& part : parts)
+    EXPECT_TRUE(contains(r.output, part)) << args << ": message must contain '" << part << "'\n" << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out.exr"));
+}
+
+TEST(ResourceLimits, FilmLargerThanTheMachineIsRefusedWithTheEstimate) {
+  const fs::path dir = scratch_dir();
+  std::string scene = minimal_scene();
+  scene.replace(scene.find("[8, 8]"), 6, "[65536, 65536]");
+  write_text(dir / "scene.json", scene);
+  expect_refused(dir, "",
+                 {"error: film 65536x65536 (XYZ) with its output buffers needs 416 GiB; this machine has",
+                  "(use --memory-limit to change the limit)"});
+  expect_refused(dir, "--aovs --spectral-bins 16", {"film 65536x65536 (XYZ, AOVs, 16 spectral bins)", "TiB"});
+}
+
+TEST(ResourceLimits, MemoryLimitRefusesAndAdmits) {
+  const fs::path dir = scratch_dir();
+  write_text(dir / "scene.json", minimal_scene());
+  expect_refused(dir, "--memory-limit 1K",
+                 {"film 8x8 (XYZ) with its output buffers needs 6.5 KiB; the memory limit (--memory-limit) is 1 KiB"});
+  const CommandResult r = render(dir, "--memory-limit 1G");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out.exr"));
+}
+
+TEST(ResourceLimits, MalformedMemoryLimitIsBadUsage) {
+  const fs::path dir = scratch_dir();
+  write_text(dir / "scene.json", minimal_scene());
+  for (const char* size : {"lots", "0", "-1G", "8Q"})
+    expect_refused(dir, std::string("--memory-limit ") + size, {"--memory-limit: expected a size such as 8G"});
+}
+
+// An n x n grid of quads in the xy plane.
+void write_grid(const fs::path& file, int n) {
+  std::ofstream out(file);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) out << "v " << i << " " << j << " 0\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i + 1;
+      out << "f " << a << " " << a + 1 << " " << a + n + 2 << " " << a + n + 1 << "\n";
+    }
+}
+
+std::string subdivided_scene(int level) {
+  return minimal_scene("", fmt::format(R"("shapes": [{{"type": "mesh", "file": "grid.obj", "material": "grey",
+                                          "subdivision": {{"level": {}}}}}])",
+                                       level));
+}
+
+TEST(ResourceLimits, SubdivisionThatWouldExplodeIsRefusedWithTheEstimate) {
+  const fs::path dir = scratch_dir();
+  write_grid(dir / "grid.obj", 128);  // 16384 quads x 4^7 x 2 = 2^31 triangles at level 8
+  write_text(dir / "scene.json", subdivided_scene(8));
+  expect_refused(dir, "",
+                 {"scene.json: shapes[0]", "grid: subdivision level 8 of 16384 faces (2147483648 triangles) needs 600 "
+                                           "GiB"});
+}
+
+TEST(ResourceLimits, SubdivisionWithinAndBeyondTheMemoryLimit) {
+  const fs::path dir = scratch_dir();
+  write_grid(dir / "grid.obj", 2);
+  write_text(dir / "scene.json", subdivided_scene(4));  // 16 corners x 2 x 4^3 = 2048 triangles x 300 bytes
+  expect_refused(dir, "--memory-limit 100K",
+                 {"grid: subdivision level 4 of 4 faces (2048 triangles) needs 600 KiB; the memory limit "
+                  "(--memory-limit) is 100 KiB"});
+  EXPECT_EQ(render(dir, "--memory-limit 1G").exit_code, 0);
+}
+
+TEST(ResourceLimits, SphereTessellationBeyondTheMemoryLimit) {
+  const fs::path dir = scratch_dir();
+  write_text(dir / "scene.json",
+             minimal_scene("", R"("shapes": [{"type": "sphere", "subdivisions": 4096, "material": "grey"}])"));
+  expect_refused(dir, "--memory-limit 1G",
+                 {"scene.json: shapes[0].subdivisions: a sphere of 67092480 triangles needs 9.4 GiB; the memory "
+                  "limit (--memory-limit) is 1 GiB"});
+}
+
+TEST(ResourceLimits, TextureBeyondTheMemoryLimit) {
+  const fs::path dir = scratch_dir();
+  write_png(dir / "big.png", 256, 256);  // 256 x 256 x 3 floats, copied by the MIP-map conversion
+  write_text(dir / "scene.json",
+             minimal_scene(R"("materials": {"grey": {"nodes": {"t": {"type": "texture", "file": "big.png"},
+                              "d": {"type": "lambert", "color": {"link": "t.color"}}}, "output": "d"}})"));
+  const CommandResult r = run_tool("ochre", "render scene.json -o out.exr -q --memory-limit 256K", dir, false,
+                                   kTimeout);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "converting texture")) << r.output;
+  EXPECT_TRUE(contains(r.output, "big.png (256x256, 3 channels) needs 1.8 MiB")) << r.output;
+}
+
+TEST(ResourceLimits, PolygonTooLargeToTriangulateIsRefusedAtOnce) {
+  const fs::path dir = scratch_dir();
+  {
+    std::ofstream out(dir / "disk.obj");
+    const int n = 50000;  // Assimp's ear clipping would take minutes
+    for (int i = 0; i < n; ++i) out << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " 0\n";
+    out << "f";
+    for (int i = 1; i <= n; ++i) out << " " << i;
+    out << "\n";
+  }
+  write_text(dir / "scene.json",
+             minimal_scene("", R"("shapes": [{"type": "mesh", "file": "disk.obj", "material": "grey"}])"));
+  const auto start = std::chrono::steady_clock::now();
+  expect_refused(dir, "", {"scene.json: shapes[0].file", "disk.obj: polygons too large to triangulate",
+                           "has 50000 vertices"});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+}
+
+}  // namespace
+}  // namespace ochre::test
