@@ -45,7 +45,9 @@ fs::path temporary_name(const fs::path& final_path) {
 }
 
 AtomicOutput::AtomicOutput(fs::path final_path)
-    : final_path_(std::move(final_path)), temp_path_(temporary_name(final_path_)), registration_(temp_path_) {}
+    : final_path_(std::move(final_path)),
+      temp_path_(temporary_name(final_path_)),
+      registration_(temp_path_) {}
 
 AtomicOutput::~AtomicOutput() {
   if (committed_) return;
@@ -100,7 +102,8 @@ void check_output_writable(const fs::path& output) {
         out, error ? "" : " to " + target.string()));
   }
   if (!S_ISREG(info.st_mode))
-    throw ImageError(fmt::format("cannot write {}: it is {}, not a regular file", out, file_type_name(info.st_mode)));
+    throw ImageError(
+        fmt::format("cannot write {}: it is {}, not a regular file", out, file_type_name(info.st_mode)));
 }
 
 }  // namespace ochre

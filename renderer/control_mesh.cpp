@@ -16,8 +16,8 @@
 
 #include "renderer/input_error.h"
 #include "renderer/mesh_file_reader.h"
-#include "spectra/input_file.h"
 #include "renderer/mesh_import.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 

@@ -29,8 +29,8 @@ class InputFileIStream final : public Imf::IStream {
   bool read(char c[], int n) override {
     size_t done = 0;
     while (done < static_cast<size_t>(n)) {
-      const ssize_t got = ::pread(file_.fd(), c + done, static_cast<size_t>(n) - done,
-                                  static_cast<off_t>(position_ + done));
+      const ssize_t got =
+          ::pread(file_.fd(), c + done, static_cast<size_t>(n) - done, static_cast<off_t>(position_ + done));
       if (got < 0 && errno == EINTR) continue;
       if (got < 0) throw std::runtime_error(std::strerror(errno));
       if (got == 0) throw std::runtime_error("unexpected end of file");

@@ -53,7 +53,8 @@ Film::Film(int width, int height, const FilmLayers& layers) : width_(width), hei
   pixels_.resize(static_cast<size_t>(width) * height);
   if (layers.aovs) enable_aovs();
   if (layers.stokes) enable_stokes();
-  if (layers.spectral_bins > 0) enable_spectral(layers.spectral_bins, layers.spectral_min, layers.spectral_max);
+  if (layers.spectral_bins > 0)
+    enable_spectral(layers.spectral_bins, layers.spectral_min, layers.spectral_max);
 }
 
 void Film::add_sample(int x, int y, const XYZ& xyz) {

@@ -19,7 +19,8 @@ std::optional<std::uint64_t> explicit_limit;  // guarded by limit_mutex
 
 std::uint64_t physical_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page_size = ::sysconf(_SC_PAGESIZE);
-  if (pages > 0 && page_size > 0) return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
+  if (pages > 0 && page_size > 0)
+    return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_size);
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
   std::uint64_t kib = 0;

@@ -53,12 +53,13 @@ void check_output_files(const std::vector<fs::path>& outputs, const InputFileLog
     const Output output{path, resolved(path), identity(path)};
     for (const Output& earlier : checked)
       if (same_file(output, earlier.resolved, earlier.identity))
-        throw InputError(fmt::format("cannot write {}: it is also given as output {}; two outputs cannot be one file",
-                                     path.string(), earlier.path.string()));
+        throw InputError(
+            fmt::format("cannot write {}: it is also given as output {}; two outputs cannot be one file",
+                        path.string(), earlier.path.string()));
     for (const InputFileRecord& input : inputs.records())
       if (same_file(output, resolved(input.path), input.identity))
-        throw InputError(fmt::format("cannot write {}: it is the {} {}, an input of this command", path.string(),
-                                     input.kind, input.path.string()));
+        throw InputError(fmt::format("cannot write {}: it is the {} {}, an input of this command",
+                                     path.string(), input.kind, input.path.string()));
     checked.push_back(output);
   }
 }

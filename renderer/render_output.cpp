@@ -183,8 +183,8 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
                                   outputs.polarization_png));
   }
   if (!outputs.png.empty()) {
-    const DisplayTransformReport report =
-        write_display_png(transaction.add(outputs.png), film.width(), film.height(), rgb, display_options(outputs));
+    const DisplayTransformReport report = write_display_png(transaction.add(outputs.png), film.width(),
+                                                            film.height(), rgb, display_options(outputs));
     written.push_back(fmt::format("wrote {} ({})", outputs.png, report.description));
     for (const std::string& w : report.warnings) written.push_back("warning: " + w);
   }

@@ -138,9 +138,8 @@ void triangulate(const int* corners, int count, const std::vector<Vec3>& positio
 // Refusing before OpenSubdiv allocates: too much memory, or more vertices than 32-bit indices hold.
 void check_refined_size(const ControlMesh& control, Sdc::SchemeType scheme, int level) {
   const double triangles = subdivided_triangle_count(control, scheme == Sdc::SCHEME_LOOP, level);
-  const std::string what =
-      fmt::format("{}: subdivision level {} of {} faces ({:.0f} triangles)", control.name, level,
-                  control.face_sizes.size(), triangles);
+  const std::string what = fmt::format("{}: subdivision level {} of {} faces ({:.0f} triangles)",
+                                       control.name, level, control.face_sizes.size(), triangles);
   check_memory_estimate(triangles * kSubdividedTriangleBytes, what);
   // Vertices are fewer than triangles on a closed or open refined surface; 2^31 keeps int indices safe.
   if (triangles >= 2147483648.0)

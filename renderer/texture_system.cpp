@@ -26,8 +26,8 @@
 #include "renderer/atomic_file.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mip_pyramid.h"
-#include "spectra/input_file.h"
 #include "spectra/color_space.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 

@@ -27,10 +27,10 @@
 #include "renderer/input_error.h"
 #include "renderer/output_files.h"
 #include "renderer/output_transaction.h"
-#include "renderer/signal_cleanup.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "renderer/signal_cleanup.h"
 
 namespace {
 
@@ -251,8 +251,8 @@ std::string shell_quote(const std::string& s) {
 bool plot(const ochre::AtomicOutput& csv, const ochre::AtomicOutput& png) {
   const fs::path script = plot_script();
   const std::string command =
-      fmt::format("/usr/bin/python3 {} {} {}", shell_quote(script.string()), shell_quote(csv.temp_path().string()),
-                  shell_quote(png.temp_path().string()));
+      fmt::format("/usr/bin/python3 {} {} {}", shell_quote(script.string()),
+                  shell_quote(csv.temp_path().string()), shell_quote(png.temp_path().string()));
   if (std::system(command.c_str()) == 0) return true;
   fmt::print(stderr,
              "ochre-converge: warning: plot {} not written ({} failed; is matplotlib installed?); "
@@ -262,7 +262,8 @@ bool plot(const ochre::AtomicOutput& csv, const ochre::AtomicOutput& png) {
 }
 
 // The CSV and the plot, together (the plot only when the script succeeds).
-void write_results(const ConvergeCommand& cmd, const std::vector<Row>& rows, const ochre::InputFileLog& inputs) {
+void write_results(const ConvergeCommand& cmd, const std::vector<Row>& rows,
+                   const ochre::InputFileLog& inputs) {
   std::vector<fs::path> outputs = {cmd.csv};
   if (!cmd.plot.empty()) outputs.emplace_back(cmd.plot);
   ochre::check_output_files(outputs, inputs);  // again: the scene's own files are known now

@@ -22,11 +22,11 @@
 #include "renderer/input_error.h"
 #include "renderer/output_files.h"
 #include "renderer/output_transaction.h"
-#include "renderer/signal_cleanup.h"
 #include "renderer/regression_compare.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "renderer/signal_cleanup.h"
 
 namespace fs = std::filesystem;
 
@@ -87,7 +87,8 @@ std::vector<fs::path> scene_files(const RegressCommand& cmd) {
   if (!fs::is_directory(dir)) throw ochre::InputError(cmd.dir + ": not a directory");
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir))
-    // Not only regular files: a FIFO or a device named *.json is reported (spectra/input_file.h), not skipped.
+    // Not only regular files: a FIFO or a device named *.json is reported (spectra/input_file.h), not
+    // skipped.
     if (!entry.is_directory() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (!cmd.only.empty()) {

@@ -19,8 +19,8 @@ struct RenderCommand {
   bool quiet = false;
   bool aovs = false;
   int spectral_bins = 0;
-  bool stokes = false;           // Stokes layers in the EXR
-  std::string polarization_png;  // false-colour DoLP / AoLP PNG
+  bool stokes = false;                        // Stokes layers in the EXR
+  std::string polarization_png;               // false-colour DoLP / AoLP PNG
   std::optional<std::uint64_t> memory_limit;  // bytes (--memory-limit); default: the machine's memory
 };
 

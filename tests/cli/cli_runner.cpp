@@ -15,7 +15,8 @@ CommandResult run_tool(const std::string& tool, const std::string& args,
   std::string command;
   if (!working_dir.empty()) command = "cd '" + working_dir.string() + "' && ";
   command += "OCHRE_PROGRESS=none ";
-  if (timeout_seconds > 0) command.append("timeout -s KILL ").append(std::to_string(timeout_seconds)).append(" ");
+  if (timeout_seconds > 0)
+    command.append("timeout -s KILL ").append(std::to_string(timeout_seconds)).append(" ");
   command.append("'").append((bin_dir() / tool).string()).append("' ").append(args);
   command.append(stdout_only ? " 2>/dev/null" : " 2>&1");
   CommandResult result;

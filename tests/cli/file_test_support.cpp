@@ -17,11 +17,12 @@ namespace fs = std::filesystem;
 
 std::string minimal_scene(const std::string& materials, const std::string& shapes, const std::string& lights,
                           const std::string& extra) {
-  return fmt::format(R"({{"film": {{"resolution": [8, 8]}}, "integrator": {{"spp": 1}}, {}{}, {}, {}}})",
-                     extra.empty() ? "" : extra + ", ",
-                     materials.empty() ? R"("materials": {"grey": {"type": "lambert", "color": 0.5}})" : materials,
-                     shapes.empty() ? R"("shapes": [{"type": "plane", "material": "grey"}])" : shapes,
-                     lights.empty() ? R"("lights": [{"type": "environment", "radiance": 1}])" : lights);
+  return fmt::format(
+      R"({{"film": {{"resolution": [8, 8]}}, "integrator": {{"spp": 1}}, {}{}, {}, {}}})",
+      extra.empty() ? "" : extra + ", ",
+      materials.empty() ? R"("materials": {"grey": {"type": "lambert", "color": 0.5}})" : materials,
+      shapes.empty() ? R"("shapes": [{"type": "plane", "material": "grey"}])" : shapes,
+      lights.empty() ? R"("lights": [{"type": "environment", "radiance": 1}])" : lights);
 }
 
 void make_fifo(const fs::path& path) {

@@ -27,7 +27,8 @@ struct FileSnapshot {
   bool operator==(const FileSnapshot&) const = default;
 };
 FileSnapshot snapshot(const std::filesystem::path& path);
-// Writes `text` to `path` (creating directories) and sets its modification time an hour back, so that a rewrite shows.
+// Writes `text` to `path` (creating directories) and sets its modification time an hour back, so that a
+// rewrite shows.
 void write_old_file(const std::filesystem::path& path, const std::string& text);
 
 // Names of the entries of `dir` that look like temporaries ("*.tmp-*").

@@ -22,12 +22,24 @@ constexpr int kTimeout = 20;
 // Runs `ochre render SCENE -o out.exr` in dir and checks a refusal naming `file` and `why`.
 void expect_refused(const fs::path& dir, const std::string& scene, const std::string& file,
                     const std::string& why, const std::string& extra_args = "") {
-  const CommandResult r = run_tool("ochre", "render " + scene + " -o out.exr " + extra_args, dir, false, kTimeout);
+  const CommandResult r =
+      run_tool("ochre", "render " + scene + " -o out.exr " + extra_args, dir, false, kTimeout);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, file)) << "message must name " << file << "\n" << r.output;
   EXPECT_TRUE(contains(r.output, why)) << "message must say '" << why << "'\n" << r.output;
   EXPECT_FALSE(fs::exists(dir / "out.exr"));
   EXPECT_TRUE(temporaries_in(dir).empty());
+}
+
+// A scene naming `name` (made a FIFO), then one naming /dev/zero, for a file of `kind` (e.g. "mesh file").
+void expect_fifo_and_device_refused(std::string (*scene_naming)(const std::string&), const std::string& name,
+                                    const std::string& kind) {
+  const fs::path dir = scratch_dir();
+  make_fifo(dir / name);
+  write_text(dir / "scene.json", scene_naming(name));
+  expect_refused(dir, "scene.json", name, "the " + kind + " is a FIFO, not a regular file");
+  write_text(dir / "scene.json", scene_naming("/dev/zero"));
+  expect_refused(dir, "scene.json", "/dev/zero", "the " + kind + " is a character device");
 }
 
 TEST(InputFiles, SceneThatIsAFifo) {
@@ -69,12 +81,7 @@ std::string mesh_scene(const std::string& file) {
 }
 
 TEST(InputFiles, MeshThatIsAFifoOrADevice) {
-  const fs::path dir = scratch_dir();
-  make_fifo(dir / "mesh.obj");
-  write_text(dir / "scene.json", mesh_scene("mesh.obj"));
-  expect_refused(dir, "scene.json", "mesh.obj", "the mesh file is a FIFO, not a regular file");
-  write_text(dir / "scene.json", mesh_scene("/dev/zero"));
-  expect_refused(dir, "scene.json", "/dev/zero", "the mesh file is a character device");
+  expect_fifo_and_device_refused(mesh_scene, "mesh.obj", "mesh file");
 }
 
 TEST(InputFiles, FileNamedByAMeshThatIsAFifo) {
@@ -97,19 +104,15 @@ std::string spectrum_scene(const std::string& file) {
 }
 
 TEST(InputFiles, SpectrumThatIsAFifoOrADevice) {
-  const fs::path dir = scratch_dir();
-  make_fifo(dir / "reflectance.csv");
-  write_text(dir / "scene.json", spectrum_scene("reflectance.csv"));
-  expect_refused(dir, "scene.json", "reflectance.csv", "the CSV file is a FIFO, not a regular file");
-  write_text(dir / "scene.json", spectrum_scene("/dev/zero"));
-  expect_refused(dir, "scene.json", "/dev/zero", "the CSV file is a character device");
+  expect_fifo_and_device_refused(spectrum_scene, "reflectance.csv", "CSV file");
 }
 
 TEST(InputFiles, SpectrumLargerThanTheLimit) {
   const fs::path dir = scratch_dir();
   make_sparse_file(dir / "reflectance.csv", 65 * kMiB);
   write_text(dir / "scene.json", spectrum_scene("reflectance.csv"));
-  expect_refused(dir, "scene.json", "reflectance.csv", "is 65 MiB, larger than the 64 MiB limit for a CSV file");
+  expect_refused(dir, "scene.json", "reflectance.csv",
+                 "is 65 MiB, larger than the 64 MiB limit for a CSV file");
 }
 
 std::string texture_scene(const std::string& file) {
@@ -118,18 +121,14 @@ std::string texture_scene(const std::string& file) {
 }
 
 TEST(InputFiles, TextureThatIsAFifoOrADevice) {
-  const fs::path dir = scratch_dir();
-  make_fifo(dir / "albedo.png");
-  write_text(dir / "scene.json", texture_scene("albedo.png"));
-  expect_refused(dir, "scene.json", "albedo.png", "the texture is a FIFO, not a regular file");
-  write_text(dir / "scene.json", texture_scene("/dev/zero"));
-  expect_refused(dir, "scene.json", "/dev/zero", "the texture is a character device");
+  expect_fifo_and_device_refused(texture_scene, "albedo.png", "texture");
 }
 
 TEST(InputFiles, EnvironmentMapThatIsAFifo) {
   const fs::path dir = scratch_dir();
   make_fifo(dir / "sky.hdr");
-  write_text(dir / "scene.json", minimal_scene("", "", R"("lights": [{"type": "environment", "file": "sky.hdr"}])"));
+  write_text(dir / "scene.json",
+             minimal_scene("", "", R"("lights": [{"type": "environment", "file": "sky.hdr"}])"));
   expect_refused(dir, "scene.json", "sky.hdr", "the environment map is a FIFO, not a regular file");
 }
 
@@ -156,8 +155,8 @@ TEST(InputFiles, ReferenceOfOchreConvergeMustBeARegularFile) {
   const fs::path dir = scratch_dir();
   write_text(dir / "scene.json", minimal_scene());
   make_fifo(dir / "reference.exr");
-  const CommandResult r = run_tool("ochre-converge", "scene.json --reference reference.exr --spp 1 --csv out.csv",
-                                   dir, false, kTimeout);
+  const CommandResult r = run_tool(
+      "ochre-converge", "scene.json --reference reference.exr --spp 1 --csv out.csv", dir, false, kTimeout);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "reference.exr: the image file is a FIFO")) << r.output;
   EXPECT_FALSE(fs::exists(dir / "out.csv"));

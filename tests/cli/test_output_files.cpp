@@ -22,8 +22,9 @@ constexpr int kTimeout = 20;
 struct SceneDir {
   fs::path dir = scratch_dir();
   SceneDir() {
-    write_old_file(dir / "mesh.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-                                     "f 1/1 2/2 3/3 4/4\n");
+    write_old_file(dir / "mesh.obj",
+                   "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                   "f 1/1 2/2 3/3 4/4\n");
     write_old_file(dir / "white.csv", "wavelength,value\n360,0.5\n830,0.5\n");
     write_png(dir / "albedo.png", 4, 4);
     write_old_file(dir / "scene.json",
@@ -75,8 +76,8 @@ TEST(OutputFiles, OutputThatIsAFileTheSceneReads) {
 TEST(OutputFiles, SceneOutputFieldThatIsItsOwnMesh) {
   const SceneDir s;
   write_old_file(s.dir / "scene.json",
-                 minimal_scene("", R"("shapes": [{"type": "mesh", "file": "mesh.obj", "material": "grey"}])", "",
-                               R"("output": {"exr": "mesh.obj"})"));
+                 minimal_scene("", R"("shapes": [{"type": "mesh", "file": "mesh.obj", "material": "grey"}])",
+                               "", R"("output": {"exr": "mesh.obj"})"));
   s.expect_refused("", "mesh.obj: it is the mesh file");
 }
 
@@ -84,7 +85,8 @@ TEST(OutputFiles, OutputThatIsTheOcioConfig) {
   const SceneDir s;
   fs::copy_file(source_dir() / "renderer" / "ocio" / "config.ocio", s.dir / "config.ocio");
   const FileSnapshot config = snapshot(s.dir / "config.ocio");
-  s.expect_refused("--png config.ocio --ocio-config config.ocio", "cannot write config.ocio: it is the OCIO config");
+  s.expect_refused("--png config.ocio --ocio-config config.ocio",
+                   "cannot write config.ocio: it is the OCIO config");
   EXPECT_TRUE(snapshot(s.dir / "config.ocio") == config);
 }
 
@@ -166,7 +168,8 @@ TEST(OutputFiles, CsvOfOchreConvergeThatIsTheScene) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "cannot write scene.json: it is the scene file")) << r.output;
   EXPECT_FALSE(contains(r.output, "reference: auto")) << "refused before any render\n" << r.output;
-  r = run_tool("ochre-converge", "scene.json --reference auto --spp 1 --csv white.csv", s.dir, false, kTimeout);
+  r = run_tool("ochre-converge", "scene.json --reference auto --spp 1 --csv white.csv", s.dir, false,
+               kTimeout);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "cannot write white.csv: it is the CSV file")) << r.output;
   r = run_tool("ochre-converge", "scene.json --reference auto --spp 1 --csv a.csv --plot a.csv", s.dir, false,
@@ -181,8 +184,9 @@ TEST(OutputFiles, OutputOfOchreBrdfThatIsAnInput) {
   write_old_file(dir / "lambert.json", R"({"type": "lambert", "color": 0.5})");
   write_old_file(dir / "pairs.csv", "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,lambda_nm\n0,0,1,0,0,1,550\n");
   const FileSnapshot material = snapshot(dir / "lambert.json"), pairs = snapshot(dir / "pairs.csv");
-  CommandResult r = run_tool("ochre-brdf", "eval --material lambert.json --input pairs.csv --output pairs.csv",
-                             dir, false, kTimeout);
+  CommandResult r =
+      run_tool("ochre-brdf", "eval --material lambert.json --input pairs.csv --output pairs.csv", dir, false,
+               kTimeout);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "cannot write pairs.csv: it is the CSV file")) << r.output;
   r = run_tool("ochre-brdf", "albedo --material lambert.json --samples 100 --output lambert.json", dir, false,

@@ -47,8 +47,9 @@ TEST(ResourceLimits, FilmLargerThanTheMachineIsRefusedWithTheEstimate) {
 TEST(ResourceLimits, MemoryLimitRefusesAndAdmits) {
   const fs::path dir = scratch_dir();
   write_text(dir / "scene.json", minimal_scene());
-  expect_refused(dir, "--memory-limit 1K",
-                 {"film 8x8 (XYZ) with its output buffers needs 6.5 KiB; the memory limit (--memory-limit) is 1 KiB"});
+  expect_refused(
+      dir, "--memory-limit 1K",
+      {"film 8x8 (XYZ) with its output buffers needs 6.5 KiB; the memory limit (--memory-limit) is 1 KiB"});
   const CommandResult r = render(dir, "--memory-limit 1G");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir / "out.exr"));
@@ -58,7 +59,8 @@ TEST(ResourceLimits, MalformedMemoryLimitIsBadUsage) {
   const fs::path dir = scratch_dir();
   write_text(dir / "scene.json", minimal_scene());
   for (const char* size : {"lots", "0", "-1G", "8Q"})
-    expect_refused(dir, std::string("--memory-limit ") + size, {"--memory-limit: expected a size such as 8G"});
+    expect_refused(dir, std::string("--memory-limit ") + size,
+                   {"--memory-limit: expected a size such as 8G"});
 }
 
 // An n x n grid of quads in the xy plane.
@@ -84,8 +86,9 @@ TEST(ResourceLimits, SubdivisionThatWouldExplodeIsRefusedWithTheEstimate) {
   write_grid(dir / "grid.obj", 128);  // 16384 quads x 4^7 x 2 = 2^31 triangles at level 8
   write_text(dir / "scene.json", subdivided_scene(8));
   expect_refused(dir, "",
-                 {"scene.json: shapes[0]", "grid: subdivision level 8 of 16384 faces (2147483648 triangles) needs 600 "
-                                           "GiB"});
+                 {"scene.json: shapes[0]",
+                  "grid: subdivision level 8 of 16384 faces (2147483648 triangles) needs 600 "
+                  "GiB"});
 }
 
 TEST(ResourceLimits, SubdivisionWithinAndBeyondTheMemoryLimit) {
@@ -100,11 +103,13 @@ TEST(ResourceLimits, SubdivisionWithinAndBeyondTheMemoryLimit) {
 
 TEST(ResourceLimits, SphereTessellationBeyondTheMemoryLimit) {
   const fs::path dir = scratch_dir();
-  write_text(dir / "scene.json",
-             minimal_scene("", R"("shapes": [{"type": "sphere", "subdivisions": 4096, "material": "grey"}])"));
-  expect_refused(dir, "--memory-limit 1G",
-                 {"scene.json: shapes[0].subdivisions: a sphere of 67092480 triangles needs 9.4 GiB; the memory "
-                  "limit (--memory-limit) is 1 GiB"});
+  write_text(
+      dir / "scene.json",
+      minimal_scene("", R"("shapes": [{"type": "sphere", "subdivisions": 4096, "material": "grey"}])"));
+  expect_refused(
+      dir, "--memory-limit 1G",
+      {"scene.json: shapes[0].subdivisions: a sphere of 67092480 triangles needs 9.4 GiB; the memory "
+       "limit (--memory-limit) is 1 GiB"});
 }
 
 TEST(ResourceLimits, TextureBeyondTheMemoryLimit) {
@@ -113,8 +118,8 @@ TEST(ResourceLimits, TextureBeyondTheMemoryLimit) {
   write_text(dir / "scene.json",
              minimal_scene(R"("materials": {"grey": {"nodes": {"t": {"type": "texture", "file": "big.png"},
                               "d": {"type": "lambert", "color": {"link": "t.color"}}}, "output": "d"}})"));
-  const CommandResult r = run_tool("ochre", "render scene.json -o out.exr -q --memory-limit 256K", dir, false,
-                                   kTimeout);
+  const CommandResult r =
+      run_tool("ochre", "render scene.json -o out.exr -q --memory-limit 256K", dir, false, kTimeout);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "converting texture")) << r.output;
   EXPECT_TRUE(contains(r.output, "big.png (256x256, 3 channels) needs 1.8 MiB")) << r.output;
@@ -125,7 +130,8 @@ TEST(ResourceLimits, PolygonTooLargeToTriangulateIsRefusedAtOnce) {
   {
     std::ofstream out(dir / "disk.obj");
     const int n = 50000;  // Assimp's ear clipping would take minutes
-    for (int i = 0; i < n; ++i) out << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " 0\n";
+    for (int i = 0; i < n; ++i)
+      out << "v " << std::cos(2 * M_PI * i / n) << " " << std::sin(2 * M_PI * i / n) << " 0\n";
     out << "f";
     for (int i = 1; i <= n; ++i) out << " " << i;
     out << "\n";
@@ -133,8 +139,9 @@ TEST(ResourceLimits, PolygonTooLargeToTriangulateIsRefusedAtOnce) {
   write_text(dir / "scene.json",
              minimal_scene("", R"("shapes": [{"type": "mesh", "file": "disk.obj", "material": "grey"}])"));
   const auto start = std::chrono::steady_clock::now();
-  expect_refused(dir, "", {"scene.json: shapes[0].file", "disk.obj: polygons too large to triangulate",
-                           "has 50000 vertices"});
+  expect_refused(
+      dir, "",
+      {"scene.json: shapes[0].file", "disk.obj: polygons too large to triangulate", "has 50000 vertices"});
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 }
 

@@ -92,7 +92,8 @@ void expect_signal_during_writing_is_clean(int signal_number) {
   std::string scene = minimal_scene();
   scene.replace(scene.find("[8, 8]"), 6, "[512, 512]");
   write_text(o.dir / "scene.json", scene);
-  const pid_t pid = start_ochre(o.dir, "render scene.json -o out.exr --png out.png --spectral-bins 32 --aovs");
+  const pid_t pid =
+      start_ochre(o.dir, "render scene.json -o out.exr --png out.png --spectral-bins 32 --aovs");
   const auto deadline = Clock::now() + std::chrono::seconds(60);
   while (temporaries_in(o.dir).empty() && Clock::now() < deadline && ::waitpid(pid, nullptr, WNOHANG) == 0)
     std::this_thread::sleep_for(std::chrono::microseconds(200));

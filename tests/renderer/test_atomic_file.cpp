@@ -11,22 +11,15 @@
 #include "renderer/atomic_file.h"
 #include "renderer/image_error.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre {
 namespace {
 
 namespace fs = std::filesystem;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using test::read_text_file;
+using test::write_text_file;
 
 size_t count_entries(const fs::path& dir) {
   return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
@@ -45,37 +38,37 @@ TEST(AtomicOutput, CommitMovesTheTempFileToTheFinalName) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
   AtomicOutput output(final_path);
-  write_text(output.temp_path(), "new");
+  write_text_file(output.temp_path(), "new");
   EXPECT_FALSE(fs::exists(final_path));
   output.commit();
-  EXPECT_EQ(read_text(final_path), "new");
+  EXPECT_EQ(read_text_file(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
 TEST(AtomicOutput, CommitReplacesAnExistingFile) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
-  write_text(final_path, "old");
+  write_text_file(final_path, "old");
   AtomicOutput output(final_path);
-  write_text(output.temp_path(), "new");
-  EXPECT_EQ(read_text(final_path), "old");  // untouched until the new file is complete
+  write_text_file(output.temp_path(), "new");
+  EXPECT_EQ(read_text_file(final_path), "old");  // untouched until the new file is complete
   output.commit();
-  EXPECT_EQ(read_text(final_path), "new");
+  EXPECT_EQ(read_text_file(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
 TEST(AtomicOutput, FailureBeforeCommitKeepsTheOldFileAndRemovesTheTemp) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
-  write_text(final_path, "old");
+  write_text_file(final_path, "old");
   EXPECT_THROW(
       {
         AtomicOutput output(final_path);
-        write_text(output.temp_path(), "half-written");
+        write_text_file(output.temp_path(), "half-written");
         throw std::runtime_error("simulated crash of the writer");
       },
       std::runtime_error);
-  EXPECT_EQ(read_text(final_path), "old");
+  EXPECT_EQ(read_text_file(final_path), "old");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
@@ -94,7 +87,7 @@ TEST(AtomicOutput, CommitWithoutATempFileThrowsNamingTheFile) {
 TEST(CheckOutputWritable, AcceptsAWritableDirectoryAndAnExistingFile) {
   const fs::path dir = test::scratch_dir();
   EXPECT_NO_THROW(check_output_writable(dir / "new.png"));
-  write_text(dir / "old.png", "x");
+  write_text_file(dir / "old.png", "x");
   EXPECT_NO_THROW(check_output_writable(dir / "old.png"));
 }
 
@@ -112,7 +105,7 @@ TEST(CheckOutputWritable, MissingDirectoryIsNamed) {
 
 TEST(CheckOutputWritable, ParentThatIsAFileOrOutputThatIsADirectoryIsRejected) {
   const fs::path dir = test::scratch_dir();
-  write_text(dir / "file", "x");
+  write_text_file(dir / "file", "x");
   EXPECT_THROW(check_output_writable(dir / "file" / "image.exr"), ImageError);
   fs::create_directory(dir / "sub");
   EXPECT_THROW(check_output_writable(dir / "sub"), ImageError);

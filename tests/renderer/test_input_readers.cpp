@@ -101,7 +101,8 @@ TEST(InputReaders, PolygonOfAThousandVerticesIsTriangulated) {
 
 TEST(InputReaders, ExrThatIsAFifoOrADeviceIsRefused) {
   const fs::path fifo = make_fifo(test::scratch_dir() / "image.exr");
-  EXPECT_EQ(error_of([&] { read_exr(fifo); }), fifo.string() + ": the image file is a FIFO, not a regular file");
+  EXPECT_EQ(error_of([&] { read_exr(fifo); }),
+            fifo.string() + ": the image file is a FIFO, not a regular file");
   EXPECT_EQ(error_of([] { read_exr("/dev/zero"); }),
             "/dev/zero: the image file is a character device, not a regular file");
 }

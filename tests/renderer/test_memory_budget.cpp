@@ -1,12 +1,11 @@
 // Memory estimates (renderer/memory_budget.h) refuse what does not fit before allocating it: the film,
 // subdivided and tessellated meshes.
 
-#include "renderer/memory_budget.h"
-
 #include <gtest/gtest.h>
 
 #include "renderer/film.h"
 #include "renderer/input_error.h"
+#include "renderer/memory_budget.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/render_output.h"
 #include "renderer/subdivision.h"

@@ -1,8 +1,6 @@
 // check_output_files (renderer/output_files.h): no output replaces an input, a link, a device, a FIFO or
 // a directory, and no two outputs are one file, whatever the spelling of the paths.
 
-#include "renderer/output_files.h"
-
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -10,6 +8,7 @@
 #include <string>
 
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
 #include "support/test_paths.h"
 
 namespace ochre {
@@ -86,7 +85,8 @@ TEST(OutputFiles, LinksDevicesFifosAndDirectoriesAreRefused) {
   ASSERT_EQ(::mkfifo((in.dir / "pipe.exr").c_str(), 0600), 0);
   EXPECT_EQ(error_of({in.dir / "pipe.exr"}, in.log),
             "cannot write " + (in.dir / "pipe.exr").string() + ": it is a FIFO, not a regular file");
-  EXPECT_EQ(error_of({"/dev/null"}, in.log), "cannot write /dev/null: it is a character device, not a regular file");
+  EXPECT_EQ(error_of({"/dev/null"}, in.log),
+            "cannot write /dev/null: it is a character device, not a regular file");
   EXPECT_EQ(error_of({in.dir}, in.log), "cannot write " + in.dir.string() + ": it is a directory");
 }
 

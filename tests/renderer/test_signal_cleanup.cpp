@@ -2,8 +2,6 @@
 // output behind, still ends by that signal, and a signal during the renames of an OutputTransaction
 // waits until the set is complete. Each case runs in a forked child.
 
-#include "renderer/signal_cleanup.h"
-
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -13,6 +11,7 @@
 
 #include "renderer/atomic_file.h"
 #include "renderer/output_transaction.h"
+#include "renderer/signal_cleanup.h"
 #include "support/test_paths.h"
 
 namespace ochre {
