@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <mutex>
-#include <sstream>
 
 #include "renderer/input_error.h"
 #include "spectra/byte_size.h"

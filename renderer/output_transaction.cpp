@@ -1,6 +1,5 @@
 #include "renderer/output_transaction.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <optional>
