@@ -141,8 +141,8 @@ int run_render(const RenderCommand& command) {
   } catch (const std::bad_alloc&) {
     // Memory exhausted despite the estimates: bad input when the allocation grew with the scene or the
     // outputs asked for, an internal error while rendering (whose memory use does not grow with them).
-    std::cerr << fmt::format("ochre: {}: out of memory while {} {} (see --memory-limit in docs/cli.md)\n",
-                             phase.from_input_size ? "error" : "internal error", phase.what, command.scene);
+    std::cerr << fmt::format("ochre: {}: {}: out of memory while {} (see --memory-limit in docs/cli.md)\n",
+                             phase.from_input_size ? "error" : "internal error", command.scene, phase.what);
     return phase.from_input_size ? 2 : 1;
   } catch (const InputError& e) {
     std::cerr << "ochre: error: " << e.what() << "\n";

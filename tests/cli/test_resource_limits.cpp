@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -143,6 +145,30 @@ TEST(ResourceLimits, PolygonTooLargeToTriangulateIsRefusedAtOnce) {
       dir, "",
       {"scene.json: shapes[0].file", "disk.obj: polygons too large to triangulate", "has 50000 vertices"});
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+}
+
+TEST(ResourceLimits, OutOfMemoryDespiteTheEstimateIsReportedAsBadInput) {
+  // The estimate is passed with --memory-limit 100G, but the process may only map 3 GB: the film of
+  // 8000 x 8000 pixels (4.8 GiB) cannot be allocated.
+  const fs::path dir = scratch_dir();
+  std::string scene = minimal_scene();
+  scene.replace(scene.find("[8, 8]"), 6, "[8000, 8000]");
+  write_text(dir / "scene.json", scene);
+  const std::string command = "cd '" + dir.string() + "' && ulimit -v 3000000 && '" +
+                              (bin_dir() / "ochre").string() +
+                              "' render scene.json -o out.exr -q --memory-limit 100G 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  EXPECT_EQ(WEXITSTATUS(status), 2) << output;
+  EXPECT_EQ(output,
+            "ochre: error: scene.json: out of memory while allocating the film (see --memory-limit in "
+            "docs/cli.md)\n");
+  EXPECT_FALSE(fs::exists(dir / "out.exr"));
 }
 
 }  // namespace
