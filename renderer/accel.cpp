@@ -254,9 +254,27 @@ namespace {
 
 // Position, normal and doubled area from the triangle's corners (shared by the two functions below, which
 // load the corners once).
+// The error of a point interpolated in float arithmetic from barycentrics (pbrt-v4 Eq 6.28: gamma(7) times
+// the sum of |b_i p_i|), which also covers the rounding of b0 = 1 - b1 - b2.
+constexpr float kGamma7 = 7.0f * 0x1p-24f / (1.0f - 7.0f * 0x1p-24f);
+// Unlike pbrt's intersection test, Embree's has no conservative t bound: it computes the corners relative
+// to the ray origin, so a ray leaving a long, thin triangle can find it again at t ~ 1e-9 behind an
+// origin offset by the interpolation bound alone (measured: 3.6 eps per unit of distance to the far
+// corner). The spawn bound adds 16 eps times that distance.
+constexpr float kSpawnEpsilon = 16.0f * 0x1p-24f;
+
+float max_abs_component(const Vec3& v) {
+  return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
+}
+
 TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   TrianglePoint t;
-  t.p = p[0] * (1.0f - b1 - b2) + p[1] * b1 + p[2] * b2;
+  const float b0 = 1.0f - b1 - b2;
+  t.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
+  const float reach = std::max(max_abs_component(p[0] - t.p),
+                               std::max(max_abs_component(p[1] - t.p), max_abs_component(p[2] - t.p)));
+  t.p_error =
+      (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
   const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
   t.double_area = length(n);
   t.ng = t.double_area > 0.0f && std::isfinite(t.double_area) ? n / t.double_area : Vec3(0, 0, 0);
@@ -279,6 +297,7 @@ SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float 
   SurfacePoint sp;
   const TrianglePoint t = point_on(p, b1, b2);
   sp.p = t.p;
+  sp.p_error = t.p_error;
   sp.ng = t.ng;
   const float double_area = t.double_area;
   sp.ns = sp.ng;
@@ -310,23 +329,25 @@ SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, cons
     sp.ng = usable_unit(hit.ng) ? normalize(hit.ng) : normalize(-ray.dir);
     sp.ns = sp.ng;
     sp.p = ray.origin + ray.dir * hit.t;
+    sp.p_error = (abs(ray.origin) + abs(ray.dir * hit.t)) * kGamma7;
     sp.dpdu = Frame::from_normal(sp.ng).s;
   }
   return sp;
 }
 
-Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& dir) {
-  constexpr float kOriginRegion = 1.0f / 32.0f;
-  constexpr float kFloatScale = 1.0f / 65536.0f;
-  constexpr float kIntScale = 256.0f;
+Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& ng, const Vec3& dir) {
   Vec3 n = normalize(ng);
   if (dot(n, dir) < 0.0f) n = -n;
-  Vec3 out;
+  // An error bound of 0 (a triangle in a coordinate plane such as z = 0, where p is exact) still needs the
+  // origin strictly off the plane: Embree reports hits at t = 0, unlike pbrt's conservative test.
+  constexpr float kMinOffset = 1e-20f;
+  const Vec3 offset = n * std::max(dot(abs(n), p_error), kMinOffset);
+  Vec3 out = p + offset;
   for (int axis = 0; axis < 3; ++axis) {
-    const int ulps = static_cast<int>(kIntScale * n[axis]);
-    const int32_t bits = std::bit_cast<int32_t>(p[axis]);
-    const float shifted = std::bit_cast<float>(bits + (p[axis] < 0.0f ? -ulps : ulps));
-    out[axis] = std::fabs(p[axis]) < kOriginRegion ? p[axis] + kFloatScale * n[axis] : shifted;
+    if (offset[axis] > 0.0f)
+      out[axis] = std::nextafter(out[axis], INFINITY);
+    else if (offset[axis] < 0.0f)
+      out[axis] = std::nextafter(out[axis], -INFINITY);
   }
   return out;
 }

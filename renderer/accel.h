@@ -74,6 +74,8 @@ class Accel {
 // Everything the integrator needs about a hit point.
 struct SurfacePoint {
   Vec3 p;                // position from the barycentrics (more precise than origin + t * dir)
+  Vec3 p_error;          // conservative bound of |p - the exact point on the triangle| per component, widened
+                         // to cover the next ray's intersection arithmetic (offset_ray_origin)
   Vec3 ng;               // unit geometric normal, cross(p1 - p0, p2 - p0) normalized (from the winding)
   Vec3 ns;               // unit shading normal: interpolated vertex normals, or ng for flat meshes
   Vec2 uv;               // interpolated texture coordinates, (0, 0) without UVs
@@ -88,6 +90,7 @@ struct SurfacePoint {
 // the part of a SurfacePoint that light sampling needs.
 struct TrianglePoint {
   Vec3 p;
+  Vec3 p_error;  // conservative absolute error bound of p per component (offset_ray_origin)
   Vec3 ng;
   float double_area = 0;  // |cross(p1 - p0, p2 - p0)|
 };
@@ -99,10 +102,13 @@ TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, floa
 SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2);
 SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray);
 
-// Origin for a ray leaving the surface point p (geometric normal ng, any length) in direction
-// dir: p pushed off the surface along ng, on the side dir points to, by an error bound that
-// grows with |p| (Waechter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection",
-// Ray Tracing Gems, 2019, ch. 6). Use tmin = 0 with the returned origin.
-Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& dir);
+// Origin for a ray leaving the surface point p (with the error bound p_error of SurfacePoint, geometric
+// normal ng of any length) in direction dir: p pushed off the surface along ng, on the side dir points
+// to, by the projection of the error bound on the normal, then rounded away from p (pbrt-v4,
+// OffsetRayOrigin; Pharr, Jakob and Humphreys, "Physically Based Rendering", 4th ed., sec. 6.8.6). The
+// bound grows with the triangle's corners, not with |p|: a point near the origin of a huge tilted
+// triangle is as uncertain as its corners, and so is the next ray's intersection test (Embree
+// computes it from the corners relative to the origin). Use tmin = 0 with the returned origin.
+Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& ng, const Vec3& dir);
 
 }  // namespace ochre

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <fstream>
 #include <system_error>
 
 #include "renderer/image_error.h"
@@ -104,6 +105,18 @@ void check_output_writable(const fs::path& output) {
   if (!S_ISREG(info.st_mode))
     throw ImageError(
         fmt::format("cannot write {}: it is {}, not a regular file", out, file_type_name(info.st_mode)));
+}
+
+void write_text_file(const AtomicOutput& output, std::string_view text) {
+  std::ofstream file(output.temp_path(), std::ios::binary);
+  file << text;
+  if (!file.flush()) throw ImageError(fmt::format("cannot write {}", output.final_path().string()));
+}
+
+void write_text_file(const fs::path& path, std::string_view text) {
+  AtomicOutput output(path);
+  write_text_file(output, text);
+  output.commit();
 }
 
 }  // namespace ochre

@@ -6,6 +6,7 @@
 // (renderer/signal_cleanup.h). Several outputs that must all be written or none: OutputTransaction.
 
 #include <filesystem>
+#include <string_view>
 
 #include "renderer/signal_cleanup.h"
 
@@ -42,6 +43,12 @@ class AtomicOutput {
 
 // "<final path>.tmp-<pid>-<counter>": a name beside final_path that no other output of this process uses.
 std::filesystem::path temporary_name(const std::filesystem::path& final_path);
+
+// Writes `text` to the output's temporary file without committing it (the caller commits, or an
+// OutputTransaction commits a set); throws ImageError naming the final path when it cannot.
+void write_text_file(const AtomicOutput& output, std::string_view text);
+// Writes `text` to `path` through an AtomicOutput; throws ImageError naming the path when it cannot.
+void write_text_file(const std::filesystem::path& path, std::string_view text);
 
 // Throws ImageError("cannot write OUT: directory D does not exist" / "... is not writable" / "it is a
 // directory" / "it is a symbolic link ..." / "it is a FIFO, not a regular file" / ...) when an output

@@ -1,6 +1,7 @@
 #include "renderer/display_image.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards (DESIGN.md).
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards
+// (docs/architecture.md, 'Building against Debian 12's packages').
 #include <fmt/format.h>
 // clang-format off
 #include <OpenImageIO/imageio.h>
@@ -93,7 +94,7 @@ void convert_working_space(std::vector<float>& rgb, ColorSpace from, ColorSpace 
   if (from == to) return;
   const Mat3 m = xyz_to_rgb_matrix(to) * rgb_to_xyz_matrix(from);
   for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
-    const Vec3d converted = m * Vec3d{rgb[i], rgb[i + 1], rgb[i + 2]};
+    const Array3d converted = m * Array3d{rgb[i], rgb[i + 1], rgb[i + 2]};
     for (int c = 0; c < 3; ++c) rgb[i + c] = static_cast<float>(converted[c]);
   }
 }

@@ -58,8 +58,6 @@ DisplayTransformReport write_display_png(AtomicOutput& output, int width, int he
 DisplayTransformReport write_display_image(const std::filesystem::path& path, int width, int height,
                                            const std::vector<float>& rgb, const DisplayOptions& options);
 
-// Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
-// Throws ImageError naming the file.
 // Writes 8-bit RGB pixels (already display-encoded) atomically; format is an OIIO format name ("png").
 void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description);
@@ -67,6 +65,8 @@ void write_rgb8(const std::filesystem::path& path, const char* format, int width
 void write_rgb8(AtomicOutput& output, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description);
 
+// Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
+// Throws ImageError naming the file.
 std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height);
 
 }  // namespace ochre

@@ -32,6 +32,7 @@
 
 #include "materials/core/vec3.h"
 #include "renderer/distribution_1d.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -86,12 +87,15 @@ class Distribution2D {
   float pdf_of_key(size_t key) const {
     return empty() ? 0.0f : blocks_[key / kCellsPerBlock].pdf[key % kCellsPerBlock];
   }
-  // The cell of a point (clamped to the grid).
+  // The cell of a point (clamped to the grid; NaN gives cell 0). Clamped before the conversion to int,
+  // which is undefined for NaN and out-of-range values.
   int column_of(float u) const {
-    return std::clamp(static_cast<int>(u * static_cast<float>(width_)), 0, width_ - 1);
+    return static_cast<int>(
+        nan_safe_clamp(u * static_cast<float>(width_), 0.0f, static_cast<float>(width_ - 1)));
   }
   int row_of(float v) const {
-    return std::clamp(static_cast<int>(v * static_cast<float>(height_)), 0, height_ - 1);
+    return static_cast<int>(
+        nan_safe_clamp(v * static_cast<float>(height_), 0.0f, static_cast<float>(height_ - 1)));
   }
 
  private:

@@ -8,7 +8,7 @@
 #include "materials/core/sampling.h"
 #include "renderer/spectrum_json.h"
 #include "spectra/cie.h"
-#include "spectra/rgb_to_spectrum_table.h"
+#include "spectra/rgb_spectrum.h"
 
 namespace ochre {
 
@@ -24,12 +24,11 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, fl
   texel_spectra_.resize(map_->texel_key_count() / Distribution2D::kCellsPerBlock);
   for (int row = 0; row < map_->height(); ++row)
     for (int column = 0; column < map_->width(); ++column) {
-      const RGB& rgb = map_->texel(column, row);
-      const float m = 2.0f * std::max({rgb.r, rgb.g, rgb.b});
-      if (!(m > 0.0f)) continue;
+      const UnboundedRGB texel = decompose_unbounded(map_->texel(column, row));
+      if (!(texel.scale > 0.0f)) continue;
       const size_t key = map_->texel_key(column, row);
       texel_spectra_[key / Distribution2D::kCellsPerBlock].texel[key % Distribution2D::kCellsPerBlock] = {
-          RGBToSpectrumTable::srgb().lookup({rgb.r / m, rgb.g / m, rgb.b / m}), m};
+          texel.poly, texel.scale};
     }
 }
 

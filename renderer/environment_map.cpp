@@ -16,6 +16,7 @@
 #include "renderer/memory_budget.h"
 #include "spectra/color_space.h"
 #include "spectra/input_file.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -49,8 +50,8 @@ Vec2 direction_to_equirect_uv(const Vec3& direction) {
   const float phi = std::atan2(d.x, -d.z);
   const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
   float u = 0.5f + phi * (0.5f / kPi);
-  if (!(u < 1.0f)) u = 0.0f;  // phi = pi (+z) belongs to the seam at u = 0
-  return {std::max(u, 0.0f), std::clamp(theta / kPi, 0.0f, 1.0f)};
+  if (!(u < 1.0f)) u = 0.0f;  // phi = pi (+z) belongs to the seam at u = 0; also NaN
+  return {std::max(u, 0.0f), nan_safe_clamp(theta / kPi, 0.0f, 1.0f)};  // a NaN direction gives (0, 0)
 }
 
 Vec3 equirect_uv_to_direction(const Vec2& uv) {
@@ -74,7 +75,10 @@ EnvironmentMap::EnvironmentMap(int width, int height, std::vector<RGB> rgb)
       for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(rgb_[i][c]))
           throw std::invalid_argument(fmt::format("texel (column {}, row {}) is not finite", column, row));
-        rgb_[i][c] = std::max(rgb_[i][c], 0.0f);
+        // A light never emits negative radiance (docs/scene-format.md, "Validation").
+        if (rgb_[i][c] < 0.0f)
+          throw std::invalid_argument(fmt::format("texel (column {}, row {}) is negative ({}, {}, {})",
+                                                  column, row, rgb_[i].r, rgb_[i].g, rgb_[i].b));
       }
       lum[i] = luminance(rgb_[i]);
       row_sum += lum[i];

@@ -54,13 +54,14 @@ class EnvironmentMap {
     float pdf = 0.0f;  // solid-angle density (0: the sample must be discarded)
   };
 
-  // rgb: width * height texels, row 0 = top. Negative components are clamped to 0 (out-of-gamut
-  // colours); non-finite ones throw std::invalid_argument naming the texel.
+  // rgb: width * height texels, row 0 = top. Negative or non-finite components throw
+  // std::invalid_argument naming the texel (a light never emits negative radiance; an out-of-gamut map
+  // must be clipped or converted by the user, not silently).
   EnvironmentMap(int width, int height, std::vector<RGB> rgb);
 
   // Reads a linear HDR image (.hdr, .exr, ... anything OpenImageIO reads as floating point) with 1
   // (grey), 3 or more channels (the first three are R, G, B). Throws std::runtime_error with the
-  // reason (missing, unreadable, 8-bit, NaN texel, ...); the caller adds the file and the field.
+  // reason (missing, unreadable, 8-bit, NaN or negative texel, ...); the caller adds the file and the field.
   static EnvironmentMap load(const std::filesystem::path& path);
 
   int width() const { return width_; }

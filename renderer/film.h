@@ -4,7 +4,7 @@
 // Floating-point addition is not associative, so a float sum would depend on how the sample
 // range is cut between processes. Each sample value is rounded once to a multiple of 2^-40
 // and summed in 128-bit integers: integer addition is associative, so any split of the sample
-// range, merged, gives the same bits as one run (DESIGN.md, film). The rounding error per
+// range, merged, gives the same bits as one run (docs/architecture.md, 'Film'). The rounding error per
 // sample (4.5e-13) is far below anything visible; magnitudes are clamped at 1e15.
 
 #include <array>

@@ -1,6 +1,7 @@
 #include "renderer/image_metrics.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards (DESIGN.md).
+// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards
+// (docs/architecture.md, 'Building against Debian 12's packages').
 #include <fmt/format.h>
 // clang-format off
 #include <OpenImageIO/imageio.h>
@@ -29,7 +30,7 @@ bool same_chromaticities(const Chromaticities& a, const Chromaticities& b) {
 // Luminance weights of the working space: the Y row of its RGB -> XYZ matrix.
 std::array<double, 3> luminance_weights(const std::string& working_space) {
   const Mat3& m = rgb_to_xyz_matrix(parse_color_space(working_space));
-  return {(m * Vec3d{1, 0, 0})[1], (m * Vec3d{0, 1, 0})[1], (m * Vec3d{0, 0, 1})[1]};
+  return {(m * Array3d{1, 0, 0})[1], (m * Array3d{0, 1, 0})[1], (m * Array3d{0, 0, 1})[1]};
 }
 
 // Records the largest |a - b| and where it is; a NaN difference wins over any number (first one kept).

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "renderer/input_error.h"
+#include "renderer/json_duplicate_keys.h"
 #include "spectra/input_file.h"
 
 namespace ochre {
@@ -31,7 +32,7 @@ nlohmann::json read_json_file(const std::filesystem::path& file, const char* wha
     throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
   const std::string text = read_input_file(file, InputKind{what, kJsonFileLimit});
   try {
-    return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    return parse_json_rejecting_duplicate_keys(text, file.string());
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(
         fmt::format("{}: {}: malformed JSON ({})", file.string(), line_column(text, e.byte), e.what()));

@@ -86,4 +86,10 @@ void check_memory_estimate(double bytes, const std::string& what) {
                                what, format_estimate(bytes), format_bytes(limit)));
 }
 
+void check_triangle_estimate(double triangles, double bytes_per_triangle, const std::string& what) {
+  check_memory_estimate(triangles * bytes_per_triangle, what);
+  if (triangles >= 2147483648.0)
+    throw InputError(what + ": more than 2^31 triangles, beyond the renderer's 32-bit indices");
+}
+
 }  // namespace ochre

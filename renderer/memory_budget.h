@@ -25,6 +25,11 @@ std::uint64_t memory_limit();
 // Estimates are doubles: a product of counts cannot overflow.
 void check_memory_estimate(double bytes, const std::string& what);
 
+// A mesh of `triangles` triangles at `bytes_per_triangle` (below): check_memory_estimate(), and more than
+// 2^31 triangles refused whatever the limit, since the renderer's indices are 32-bit (a mesh has no more
+// vertices than twice its triangles). Throws InputError starting with `what`.
+void check_triangle_estimate(double triangles, double bytes_per_triangle, const std::string& what);
+
 // Peak bytes per triangle while a mesh is built and its BVH (renderer/accel.h) with it, measured with
 // /usr/bin/time (maximum resident set): 122 for a tessellated sphere of 16.8 M triangles (positions,
 // normals, uvs, indices, Embree's build), 270 for a Catmull-Clark surface of 2 M triangles (OpenSubdiv's

@@ -58,6 +58,7 @@ void Mesh::transform(const Transform& to_world) {
     }
   }
   for (Vec3& p : positions) p = to_world.point(p);
+  for (Vec3& axis : object_axes) axis = to_world.vector(axis);
   if (to_world.flips_handedness()) {
     for (size_t t = 0; t < triangle_count(); ++t) std::swap(indices[3 * t + 1], indices[3 * t + 2]);
   }

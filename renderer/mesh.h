@@ -1,6 +1,7 @@
 #pragma once
 // Mesh: an indexed triangle mesh with optional per-vertex normals, UVs and colours.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -19,6 +20,9 @@ struct Mesh {
   std::vector<Vec2> uvs;          // per vertex; empty = none (v = 0 is the bottom row of an image)
   std::vector<Vec3> colours;      // per vertex, linear Rec.709 RGB; empty = none
   int material = -1;              // index into the scene's materials
+  // Images of the object's x, y, z axes under the transforms applied so far (the linear part of the
+  // object-to-world transform): what object-space directions in materials refer to.
+  std::array<Vec3, 3> object_axes{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
 
   size_t triangle_count() const { return indices.size() / 3; }
   size_t vertex_count() const { return positions.size(); }

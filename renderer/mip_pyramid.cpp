@@ -9,6 +9,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/periodic_texture_coordinate.h"
+
 namespace ochre {
 
 namespace {
@@ -106,6 +108,8 @@ void MipPyramid::bilinear(const Level& level, float s, float t, int first_channe
 void MipPyramid::lookup(float s, float t, float footprint, int first_channel, int n, float* out) const {
   std::fill(out, out + n, 0.0f);
   if (!std::isfinite(s) || !std::isfinite(t)) return;
+  s = periodic_texture_coordinate(s);
+  t = periodic_texture_coordinate(t);
   const float texels = std::fabs(footprint) * level0_size_;
   const float lod = texels > 1.0f ? std::log2(texels) : 0.0f;  // NaN footprint -> level 0
   const int last = level_count() - 1;

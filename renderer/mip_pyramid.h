@@ -44,6 +44,8 @@ class MipPyramid {
 
   // Filtered lookup of channels [first_channel, first_channel + n) at (s, t) (t down the image) with the
   // isotropic footprint `footprint` (s/t units), written to out. The caller checks the channel range.
+  // NaN or infinite s or t give 0; |s|, |t| >= 2^23 read as 0 (periodic_texture_coordinate.h); a NaN
+  // footprint reads level 0, an infinite one the last level.
   void lookup(float s, float t, float footprint, int first_channel, int n, float* out) const;
 
  private:

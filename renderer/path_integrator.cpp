@@ -24,11 +24,13 @@ namespace {
 // viewer's side of the surface (both sides of a mesh reflect alike), falling back to the geometric normal
 // where the shading normal hides the viewer. Refracting closures need to know which side is outside: their
 // frame keeps the mesh's orientation (the geometric normal points outside), so wo may be below it.
-Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo, bool keep_orientation) {
+Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo, bool keep_orientation,
+                    const Closure& closure) {
   Vec3 ns = sp.ns;
   if (dot(ns, ng) < 0.0f) ns = -ns;
   if (!keep_orientation && dot(ns, wo) <= 0.0f) ns = ng;
-  return Frame::from_normal(ns);
+  // Anisotropic lobes are defined about local x = the closure's tangent (closure.h).
+  return closure.has_tangent() ? Frame::from_normal_tangent(ns, closure.tangent()) : Frame::from_normal(ns);
 }
 
 void record_first_hit(const PathVertex& v, float distance, const SampledWavelengths& lambda, FirstHit& out) {
@@ -114,7 +116,7 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   if (incoming.radiance.is_black()) return;
 
   Ray shadow;
-  shadow.origin = offset_ray_origin(v.sp.p, v.ng, ls->wi);
+  shadow.origin = offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, ls->wi);
   shadow.dir = ls->wi;
   shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
   ++stats.shadow_rays;
@@ -164,7 +166,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     arena.reset();
     v.closure = Closure();
     path_length += hit->t * length(ray.dir);
-    ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get());
+    ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
     // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
     // units through the triangle's world-per-uv scale.
     if (v.sp.area_scale_uv > 0.0f)
@@ -186,7 +188,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
 
     const bool refracts = v.closure.has_transmission();
     v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
-    v.frame = shading_frame(v.sp, v.ng, wo, refracts);
+    v.frame = shading_frame(v.sp, v.ng, wo, refracts, v.closure);
     v.wo_local = v.frame.to_local(wo);
     if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
@@ -213,7 +215,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
         beta.scale(1.0f / (1.0f - q));
       }
     }
-    ray = Ray{offset_ray_origin(v.sp.p, v.ng, wi), wi};
+    ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
   }
   return L;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Path throughput for the three polarization modes (DESIGN.md, polarization; docs/polarization.md).
+// Path throughput for the three polarization modes (docs/polarization.md, 'Modes').
 //
 // Backward tracing carries, from the sensor, the product T of the Mueller matrices met so far; light
 // that reaches the path's current segment with Stokes vector s (in the segment's carried frame) adds
@@ -9,8 +9,8 @@
 //   StokesThroughput      (mode stokes)    : all of T, 4x4 per wavelength.
 // The carried frame is the world-space x axis of the current segment's Stokes frame (light propagating
 // toward the sensor along d, y = cross(d, x)). It is handed from vertex to vertex, never recomputed from
-// the direction, so no basis formula can flip it (../shared/notes/polarization.md, "discontinuous
-// reference frames").
+// the direction, so no basis formula can flip it (docs/polarization.md, 'Discontinuous reference
+// frames').
 
 #include <array>
 

@@ -1,5 +1,6 @@
 #pragma once
-// Polarization modes (DESIGN.md: model only what a scene needs):
+// Polarization modes (model only what a scene needs: docs/architecture.md, 'Design rules';
+// docs/polarization.md, 'Modes'):
 //   off       : scalar throughput; every element acts as a depolarizer (filters pass half);
 //   intensity : the first row of the Mueller product (4 floats per wavelength); exact S0;
 //   stokes    : the full Mueller product; S0..S3 at the sensor.

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "renderer/path_integrator.h"
+#include "renderer/surface_shading.h"
 #include "spectra/cie.h"
 
 namespace ochre {
@@ -19,7 +20,7 @@ namespace {
 constexpr int kTileSize = 16;
 
 struct TileCounters {
-  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0};
+  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, nonfinite_values{0};
 };
 
 // First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
@@ -63,6 +64,9 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
                  TileCounters& counters, const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
   thread_local LobeArena arena;
+  // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
+  const NonFiniteTally& nonfinite = thread_non_finite_tally();
+  const uint64_t nonfinite_before = nonfinite.values;
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
   uint64_t discarded = 0;
@@ -88,6 +92,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   counters.rays += stats.rays;
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
+  counters.nonfinite_values += nonfinite.values - nonfinite_before;
   if (progress)
     progress(static_cast<uint64_t>(x_end - tile_x * kTileSize) * (y_end - tile_y * kTileSize) * s.spp);
 }
@@ -127,6 +132,7 @@ RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progr
   stats.rays = counters.rays;
   stats.shadow_rays = counters.shadow_rays;
   stats.discarded = counters.discarded;
+  stats.nonfinite_values = counters.nonfinite_values;
   stats.threads = threads;
   return stats;
 }

@@ -14,9 +14,10 @@ namespace ochre {
 struct RenderStats {
   double seconds = 0.0;
   uint64_t samples = 0;
-  uint64_t rays = 0;         // intersect queries
-  uint64_t shadow_rays = 0;  // occlusion queries
-  uint64_t discarded = 0;    // NaN / Inf samples, counted as zero
+  uint64_t rays = 0;              // intersect queries
+  uint64_t shadow_rays = 0;       // occlusion queries
+  uint64_t discarded = 0;         // NaN / Inf samples, counted as zero
+  uint64_t nonfinite_values = 0;  // NaN / Inf values of material programs, made finite (non_finite_tally.h)
   int threads = 0;
   double samples_per_second() const { return seconds > 0 ? samples / seconds : 0.0; }
   double rays_per_second() const { return seconds > 0 ? (rays + shadow_rays) / seconds : 0.0; }

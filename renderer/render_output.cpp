@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/display_image.h"
 #include "renderer/exr_writer.h"
@@ -165,7 +166,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     if (film.spectral_bins() > 0) add_spectral_channels(film, image);
     if (film.has_stokes()) add_stokes_channels(film, image);
     image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
-    image.string_attributes["software"] = "ochre 0.1.0";
+    image.string_attributes["software"] = "ochre " OCHRE_VERSION;
     image.string_attributes["ochre.scene"] = scene_file;
     image.string_attributes["ochre.colorspace"] = outputs.colorspace;
     image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
@@ -173,6 +174,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
         fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
     image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
     image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+    image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
     write_exr(transaction.add(outputs.exr), image);
     written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
                                   image.height));

@@ -17,7 +17,7 @@ struct RenderSettings {
   uint64_t seed = 0;
   int threads = 0;                    // 0 = all cores
   std::string sampler = "sobol";      // independent | sobol (padded Owen-scrambled (0,2)-sequences)
-  std::string polarization = "auto";  // auto | off | intensity | stokes (tracing arrives with issue 4)
+  std::string polarization = "auto";  // auto | off | intensity | stokes (docs/polarization.md)
 };
 
 struct OutputSettings {

@@ -1,7 +1,7 @@
 #pragma once
 // Deterministic independent sampler: every number is a pure function of
 // (seed, pixel, sample index, dimension), so an image does not depend on the thread count,
-// the tile order or how the sample range is split (DESIGN.md, determinism).
+// the tile order or how the sample range is split (docs/architecture.md, 'Sampler and determinism').
 
 #include <cstdint>
 

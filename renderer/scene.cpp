@@ -1,5 +1,7 @@
 #include "renderer/scene.h"
 
+#include "spectra/non_finite.h"
+
 namespace ochre {
 
 void Scene::build_lights() {
@@ -17,7 +19,9 @@ void Scene::build_lights() {
   for (size_t i = 0; i < lights.size(); ++i)
     if (lights[i].get() == environment) environment_light = static_cast<int>(i);
   std::vector<double> power(lights.size());
-  for (size_t i = 0; i < lights.size(); ++i) power[i] = lights[i]->power();
+  // An emitter whose radiance overflows has an infinite (or NaN) power estimate; the selection needs finite
+  // weights (NaN counts as 0: such a light is only found by rays that hit it).
+  for (size_t i = 0; i < lights.size(); ++i) power[i] = finite_or_limit(lights[i]->power());
   light_selection = Distribution1D(power);
 }
 

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "materials/graph/resource_resolver.h"
 #include "renderer/control_mesh.h"
 #include "renderer/displacement.h"
+#include "renderer/groove_shapes.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/json_file.h"
@@ -25,6 +27,9 @@
 namespace ochre {
 
 namespace {
+
+constexpr long long kMaxResolution = 65536;  // pixels per film side
+constexpr int kMaxThreads = 4096;            // as --threads
 
 // Files named by materials resolve relative to the scene file; textures go to the OIIO provider.
 class SceneResources final : public ResourceResolver {
@@ -44,34 +49,42 @@ class SceneResources final : public ResourceResolver {
   OiioTextureProvider& textures_;
 };
 
-void load_settings(const nlohmann::json& root, const std::string& file, Scene& scene) {
+// Two numbers [a, b] of the field `key`, each checked like a number field (json_fields.h).
+std::pair<double, double> number_pair(const JsonFields& f, const char* key, const char* shape, double min,
+                                      double max, bool min_exclusive) {
+  const std::string where = f.child(key);
+  const nlohmann::json& pair = json_array(f.require(key), where, 2, shape);
+  return {json_number(pair[0], where + "[0]", min, max, min_exclusive),
+          json_number(pair[1], where + "[1]", min, max, min_exclusive)};
+}
+
+void load_settings(const JsonFields& top, Scene& scene) {
   RenderSettings& s = scene.settings;
-  if (root.contains("film")) {
-    const JsonFields f(root["film"], file + ": film");
+  if (top.has("film")) {
+    const JsonFields f(top.require("film"), top.child("film"));
     f.check_known({"resolution", "colorspace"});
     if (f.has("resolution")) {
-      const nlohmann::json& r = f.require("resolution");
-      if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer())
-        f.fail("resolution", "expected [width, height] (integers)");
-      s.width = r[0].get<int>();
-      s.height = r[1].get<int>();
+      const std::string where = f.child("resolution");
+      const nlohmann::json& r = json_array(f.require("resolution"), where, 2, "[width, height]");
+      s.width = static_cast<int>(json_integer(r[0], where + "[0]", 1, kMaxResolution));
+      s.height = static_cast<int>(json_integer(r[1], where + "[1]", 1, kMaxResolution));
     }
     scene.outputs.colorspace = f.string("colorspace", scene.outputs.colorspace);
   }
-  if (root.contains("integrator")) {
-    const JsonFields f(root["integrator"], file + ": integrator");
+  if (top.has("integrator")) {
+    const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization", "sampler"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
-    s.threads = static_cast<int>(f.integer("threads", s.threads, 0, 4096));
+    s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
     s.polarization = f.string("polarization", s.polarization);
     s.sampler = f.string("sampler", s.sampler);
   }
-  if (root.contains("output")) {
-    const JsonFields f(root["output"], file + ": output");
+  if (top.has("output")) {
+    const JsonFields f(top.require("output"), top.child("output"));
     f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs", "spectral_bins",
                    "spectral_range", "stokes", "polarization_png"});
     const std::filesystem::path dir = scene.file.parent_path();
@@ -83,33 +96,27 @@ void load_settings(const nlohmann::json& root, const std::string& file, Scene& s
     scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
     scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
-      const nlohmann::json& r = f.require("spectral_range");
-      if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
-          !(r[0].get<double>() >= 360) || !(r[1].get<double>() <= 830) ||
-          !(r[0].get<double>() < r[1].get<double>()))
-        f.fail("spectral_range", "expected [min, max] nm with 360 <= min < max <= 830");
-      scene.outputs.spectral_min = r[0].get<float>();
-      scene.outputs.spectral_max = r[1].get<float>();
+      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 360.0, 830.0, false);
+      if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
+      scene.outputs.spectral_min = static_cast<float>(lo);
+      scene.outputs.spectral_max = static_cast<float>(hi);
     }
-    if (f.has("stokes")) {
-      if (!f.require("stokes").is_boolean()) f.fail("stokes", "expected true or false");
-      scene.outputs.stokes = f.require("stokes").get<bool>();
-    }
+    scene.outputs.stokes = f.boolean("stokes", scene.outputs.stokes);
     if (f.has("polarization_png"))
       scene.outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
-    if (f.has("aovs")) {
-      if (!f.require("aovs").is_boolean()) f.fail("aovs", "expected true or false");
-      scene.outputs.aovs = f.require("aovs").get<bool>();
-    }
+    scene.outputs.aovs = f.boolean("aovs", scene.outputs.aovs);
   }
 }
 
 void check_settings(const Scene& scene, const std::string& file) {
   const RenderSettings& s = scene.settings;
-  if (s.width < 1 || s.height < 1 || s.width > 65536 || s.height > 65536)
-    throw InputError(fmt::format("{}: film.resolution: must be between 1x1 and 65536x65536 (got {}x{})", file,
-                                 s.width, s.height));
+  if (s.width < 1 || s.height < 1 || s.width > kMaxResolution || s.height > kMaxResolution)
+    throw InputError(fmt::format("{}: film.resolution: must be between 1x1 and {}x{} (got {}x{})", file,
+                                 kMaxResolution, kMaxResolution, s.width, s.height));
   if (s.spp < 1) throw InputError(fmt::format("{}: integrator.spp: must be >= 1", file));
+  if (s.threads < 0 || s.threads > kMaxThreads)  // an override (the scene's own value is checked on reading)
+    throw InputError(
+        fmt::format("{}: integrator.threads: must be in [0, {}] (got {})", file, kMaxThreads, s.threads));
   const std::string& p = s.polarization;
   if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
     throw InputError(fmt::format(
@@ -128,7 +135,8 @@ std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {
   const JsonFields p(f.require("polarizer"), f.child("polarizer"));
   p.check_known({"axis"});
   const Vec3 axis = p.required_vec3("axis");
-  if (!(length(axis) > 0.0f)) p.fail("axis", "must be a non-zero vector");
+  if (!(length(axis) > 0.0f) || !std::isfinite(length(axis)))
+    p.fail("axis", "must be a non-zero vector of finite length");
   return normalize(axis);
 }
 
@@ -142,11 +150,17 @@ std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
   return rotated_element(static_cast<float>(degrees * M_PI / 180.0), linear_polarizer());
 }
 
-Camera load_camera(const nlohmann::json& root, const std::string& file, const RenderSettings& s) {
-  const nlohmann::json camera = root.contains("camera") ? root["camera"] : nlohmann::json::object();
-  const JsonFields f(camera, file + ": camera");
+Camera load_camera(const JsonFields& top, const RenderSettings& s) {
+  const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
+  const JsonFields f(camera, top.child("camera"));
   f.check_known({"type", "fov", "size", "eye", "target", "up", "transform", "polarizer"});
+  // Every given field is checked, also those the chosen placement or type does not use.
+  const std::string type = f.string("type", "perspective");
+  const auto fov = static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true));
+  const auto size = static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true));
   CameraBasis basis;
+  if (f.has("transform") && (f.has("eye") || f.has("target") || f.has("up")))
+    f.fail("transform", "give either \"transform\" or \"eye\", \"target\", \"up\", not both");
   if (f.has("transform")) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
     const Transform t = parse_transform(f.require("transform"), f.child("transform"));
@@ -158,27 +172,23 @@ Camera load_camera(const nlohmann::json& root, const std::string& file, const Re
   } else {
     const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
                up = f.vec3("up", {0, 1, 0});
-    if (length(target - eye) <= 0.0f) f.fail("target", "must differ from eye");
+    if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
+    if (!std::isfinite(length(target - eye)))
+      f.fail("target", "is too far from eye (the distance overflows single precision)");
     if (length(cross(normalize(target - eye), up)) < 1e-6f)
       f.fail("up", "must not be parallel to the view direction");
     basis = camera_basis_look_at(eye, target, up);
   }
-  const std::string type = f.string("type", "perspective");
-  if (type == "perspective")
-    return Camera::perspective(basis, static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true)), s.width,
-                               s.height);
-  if (type == "orthographic")
-    return Camera::orthographic(basis, static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true)), s.width,
-                                s.height);
+  if (type == "perspective") return Camera::perspective(basis, fov, s.width, s.height);
+  if (type == "orthographic") return Camera::orthographic(basis, size, s.width, s.height);
   f.fail("type", fmt::format("unknown camera type '{}' (known: perspective, orthographic)", type));
 }
 
-void load_materials(const nlohmann::json& root, const std::string& file, Scene& scene) {
-  if (!root.contains("materials")) return;
-  const nlohmann::json& materials = root["materials"];
-  if (!materials.is_object()) throw InputError(fmt::format("{}: materials: expected an object", file));
+void load_materials(const JsonFields& top, const std::string& file, Scene& scene) {
+  if (!top.has("materials")) return;
+  const JsonFields materials(top.require("materials"), top.child("materials"));
   SceneResources resources(scene.file.parent_path(), *scene.textures);
-  for (const auto& [name, value] : materials.items()) {
+  for (const auto& [name, value] : materials.json().items()) {
     scene.material_names.push_back(name);
     scene.materials.push_back(compile_material(value, name, file, resources));
   }
@@ -191,13 +201,11 @@ int material_index(const Scene& scene, const JsonFields& f) {
   f.fail("material", fmt::format("unknown material '{}'", name));
 }
 
-Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world) {
-  MeshImportOptions options;
-  if (f.has("smooth_normals")) options.smooth_normals = f.require("smooth_normals").get<bool>();
-  if (f.has("flip_uv_v")) options.flip_uv_v = f.require("flip_uv_v").get<bool>();
+Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
+                    const MeshImportOptions& options) {
   if (f.has("displacement"))
     f.fail("displacement", "needs \"subdivision\" (displacement moves the refined vertices)");
-  return import_mesh(path, to_world, options);
+  return f.in_context("file", [&] { return import_mesh(path, to_world, options); });
 }
 
 // Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
@@ -206,13 +214,66 @@ Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, con
                      const Scene& scene) {
   const SubdivisionOptions options =
       parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
-  Mesh mesh = subdivide(import_control_mesh(path, to_world), options);
+  const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, to_world); });
+  Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
   if (f.has("displacement")) {
     const DisplacementOptions d = parse_displacement(
         JsonFields(f.require("displacement"), f.child("displacement")), scene.file.parent_path());
-    displace(mesh, d, *scene.textures);
+    f.in_context("displacement", [&] { displace(mesh, d, *scene.textures); });
   }
   return mesh;
+}
+
+// The explicit groove shapes of renderer/groove_shapes.h, in object space.
+Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
+  auto positive = [&](const char* key, double fallback) {
+    return static_cast<float>(f.number(key, fallback, 0.0, 1e30, true));
+  };
+  auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
+  if (type == "groove_plate") {
+    f.check_known({"type", "alpha", "pitch", "count", "length", "orientation", "material", "transform",
+                   "name", "polarizer"});
+    GroovePlate plate;
+    plate.alpha_degrees = alpha();
+    plate.pitch = positive("pitch", 1.0);
+    plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
+    plate.length = positive("length", 40.0);
+    const double triangles = groove_plate_triangle_count(plate);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
+    Mesh mesh = make_groove_plate(plate);
+    mesh.transform(
+        Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
+    return mesh;
+  }
+  if (type == "cylinder") {
+    f.check_known({"type", "radius", "height", "segments", "material", "transform", "name", "polarizer"});
+    const float radius = positive("radius", 1.0), height = positive("height", 2.0);
+    const int segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+    const double triangles = cylinder_triangle_count(segments);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        fmt::format("{}: a cylinder of {:.0f} triangles", f.child("segments"), triangles));
+    return make_cylinder(radius, height, segments);
+  }
+  f.check_known({"type", "radius", "height", "alpha", "pitch", "segments", "material", "transform", "name",
+                 "polarizer"});
+  GroovedCylinder c;
+  c.radius = positive("radius", 1.0);
+  c.height = positive("height", 2.0);
+  c.alpha_degrees = alpha();
+  c.pitch = positive("pitch", 0.05);
+  c.segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+  if (!(c.pitch <= c.height)) f.fail("pitch", "must not exceed the height");
+  if (!(0.5 * c.pitch / std::tan(0.5 * c.alpha_degrees * M_PI / 180.0) < c.radius))
+    f.fail("alpha", "the grooves would be deeper than the radius: increase alpha or decrease the pitch");
+  const double triangles = grooved_cylinder_triangle_count(c);
+  check_triangle_estimate(
+      triangles, kTessellatedTriangleBytes,
+      fmt::format("{}: a grooved cylinder of {:.0f} grooves x {} segments ({:.0f} triangles)", f.where(),
+                  groove_count(c), c.segments, triangles));
+  return make_grooved_cylinder(c);
 }
 
 Mesh load_shape(const JsonFields& f, const Scene& scene) {
@@ -226,14 +287,13 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
                    "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
     if (path.is_relative()) path = scene.file.parent_path() / path;
-    try {
-      mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
-                                  : load_triangles(f, path, to_world);
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      if (what.find(f.where()) != std::string::npos) throw;
-      f.fail("file", what);
-    }
+    MeshImportOptions options;
+    options.smooth_normals = f.boolean("smooth_normals", false);
+    options.flip_uv_v = f.boolean("flip_uv_v", false);
+    if (f.has("subdivision") && options.flip_uv_v)
+      f.fail("flip_uv_v", "is not supported with \"subdivision\" (flip the uvs in the file)");
+    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
+                                : load_triangles(f, path, to_world, options);
   } else if (type == "sphere") {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
@@ -241,27 +301,32 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     check_memory_estimate(sphere_memory_bytes(subdivisions),
                           fmt::format("{}: a sphere of {:.0f} triangles", f.child("subdivisions"),
                                       sphere_triangle_count(subdivisions)));
-    mesh = make_sphere(radius, subdivisions);
-    mesh.transform(to_world * Transform::translate(f.vec3("center", {0, 0, 0})));
+    const Vec3 center = f.vec3("center", {0, 0, 0});
+    mesh = f.in_context("", [&] { return make_sphere(radius, subdivisions); });
+    f.in_context("", [&] { mesh.transform(to_world * Transform::translate(center)); });
   } else if (type == "plane") {
     f.check_known({"type", "size", "material", "transform", "name", "polarizer"});
     Vec2 size{2, 2};
     if (f.has("size")) {
-      const nlohmann::json& s = f.require("size");
-      if (!s.is_array() || s.size() != 2 || !s[0].is_number() || !s[1].is_number() ||
-          !(s[0].get<double>() > 0) || !(s[1].get<double>() > 0))
-        f.fail("size", "expected [width, height] > 0");
-      size = {s[0].get<float>(), s[1].get<float>()};
+      const auto [width, height] = number_pair(f, "size", "[width, height]", 0.0, kNoMaximum, true);
+      size = {static_cast<float>(width), static_cast<float>(height)};
     }
-    mesh = make_plane(size);
-    mesh.transform(to_world);
+    mesh = f.in_context("", [&] { return make_plane(size); });
+    f.in_context("", [&] { mesh.transform(to_world); });
   } else if (type == "disk") {
     f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer"});
-    mesh = make_disk(static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true)),
-                     static_cast<int>(f.integer("segments", 128, 3, 1 << 20)));
-    mesh.transform(to_world);
+    const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
+    const int segments = static_cast<int>(f.integer("segments", 128, 3, 1 << 20));
+    mesh = f.in_context("", [&] { return make_disk(radius, segments); });
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "groove_plate" || type == "cylinder" || type == "grooved_cylinder") {
+    mesh = load_groove_shape(f, type);
+    f.in_context("", [&] { mesh.transform(to_world); });
   } else {
-    f.fail("type", fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk)", type));
+    f.fail("type",
+           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, groove_plate, cylinder, "
+                       "grooved_cylinder)",
+                       type));
   }
   mesh.name = f.string("name", type);
   mesh.material = material_index(scene, f);
@@ -269,17 +334,24 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
   return mesh;
 }
 
-void load_shapes(const nlohmann::json& root, const std::string& file, Scene& scene) {
-  if (!root.contains("shapes") || !root["shapes"].is_array())
-    throw InputError(fmt::format("{}: shapes: expected an array of shapes", file));
-  const nlohmann::json& shapes = root["shapes"];
+void load_shapes(const JsonFields& top, Scene& scene) {
+  if (!top.has("shapes") || !top.require("shapes").is_array())
+    top.fail("shapes", "expected an array of shapes");
+  const nlohmann::json& shapes = top.require("shapes");
   for (size_t i = 0; i < shapes.size(); ++i) {
-    const JsonFields f(shapes[i], fmt::format("{}: shapes[{}]", file, i));
+    const JsonFields f(shapes[i], fmt::format("{}[{}]", top.child("shapes"), i));
     scene.meshes.push_back(load_shape(f, scene));
     scene.mesh_polarizers.push_back(parse_light_polarizer(f));
     if (scene.mesh_polarizers.back() && !scene.materials[scene.meshes.back().material]->facts().is_emissive)
       f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
   }
+}
+
+// Lights are chosen in proportion to their power: a power that overflows single precision (an intensity
+// near 3.4e38 times 4 pi) would make every choice probability NaN.
+void check_power(const Light& light, const JsonFields& f, const char* key) {
+  if (!std::isfinite(light.power()))
+    f.fail(key, "the light's power overflows single precision (the value is too large)");
 }
 
 std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
@@ -290,7 +362,8 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   const char* aim = f.has("direction") ? "direction" : "target";
   const Vec3 direction =
       f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
-  if (!(length(direction) > 0.0f)) f.fail(aim, "gives no direction");
+  if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
+    f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
   const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
   const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
   auto light = std::make_unique<SpotLight>(
@@ -300,13 +373,13 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   return light;
 }
 
-void load_lights(const nlohmann::json& root, const std::string& file, Scene& scene, float scene_radius) {
-  if (!root.contains("lights")) return;
-  const nlohmann::json& lights = root["lights"];
-  if (!lights.is_array()) throw InputError(fmt::format("{}: lights: expected an array", file));
+void load_lights(const JsonFields& top, Scene& scene, float scene_radius) {
+  if (!top.has("lights")) return;
+  const nlohmann::json& lights = top.require("lights");
+  if (!lights.is_array()) top.fail("lights", "expected an array");
   const std::filesystem::path dir = scene.file.parent_path();
   for (size_t i = 0; i < lights.size(); ++i) {
-    const JsonFields f(lights[i], fmt::format("{}: lights[{}]", file, i));
+    const JsonFields f(lights[i], fmt::format("{}[{}]", top.child("lights"), i));
     const std::string type = f.required_string("type");
     if (type == "environment") {
       if (scene.environment) f.fail("type", "only one environment light is allowed");
@@ -319,9 +392,11 @@ void load_lights(const nlohmann::json& root, const std::string& file, Scene& sce
           f.required_vec3("position"),
           parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
       light->polarizer_axis = parse_light_polarizer(f);
+      check_power(*light, f, "intensity");
       scene.lights.push_back(std::move(light));
     } else if (type == "spot") {
       scene.lights.push_back(load_spot_light(f, dir));
+      check_power(*scene.lights.back(), f, "intensity");
     } else {
       f.fail("type",
              fmt::format(
@@ -351,33 +426,42 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.sampler) s.sampler = *o.sampler;
 }
 
-}  // namespace
+// An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power
+// overflows (see check_power). Emission that varies over the surface is made finite where it is evaluated.
+void check_area_light_power(const Scene& scene, const JsonFields& top) {
+  for (size_t m = 0; m < scene.mesh_light.size(); ++m) {
+    if (scene.mesh_light[m] < 0 || !scene.materials[scene.meshes[m].material]->facts().uniform_over_surface)
+      continue;
+    if (!std::isfinite(scene.lights[size_t(scene.mesh_light[m])]->power()))
+      top.fail(fmt::format("shapes[{}]", m),
+               "the emitted power overflows single precision (the material's emission is too large)");
+  }
+}
 
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const SceneOverrides& overrides) {
   auto scene = std::make_unique<Scene>();
   scene->file = std::filesystem::absolute(path);
   const std::string file = path.string();
-  const nlohmann::json root = read_json_file(scene->file, "scene file");
+  const nlohmann::json root = read_json_file(path, "scene file");
   const JsonFields top(root, file + ":");
   top.check_known(
       {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
+  top.string("description", "");
+  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
+    top.fail("ochre", "expected a version string or number");
 
-  load_settings(root, file, *scene);
+  load_settings(top, *scene);
   apply_overrides(overrides, scene->settings);
   check_settings(*scene, file);
-  scene->camera = load_camera(root, file, scene->settings);
-  if (root.contains("camera"))
-    scene->camera_analyzer = parse_camera_polarizer(JsonFields(root["camera"], file + ": camera"));
+  scene->camera = load_camera(top, scene->settings);
+  if (top.has("camera"))
+    scene->camera_analyzer = parse_camera_polarizer(JsonFields(top.require("camera"), top.child("camera")));
 
   scene->textures = std::make_unique<OiioTextureProvider>();
-  try {
-    load_materials(root, file, *scene);
-  } catch (const GraphError& e) {
-    throw InputError(e.what());
-  }
-  load_shapes(root, file, *scene);
+  load_materials(top, file, *scene);
+  load_shapes(top, *scene);
   const float radius = bounding_radius(scene->meshes);
-  load_lights(root, file, *scene, radius);
+  load_lights(top, *scene, radius);
 
   scene->polarizing_filters = scene->camera_analyzer.has_value();
   for (const auto& light : scene->lights) scene->polarizing_filters |= light->polarizer_axis.has_value();
@@ -388,7 +472,21 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
   scene->build_lights();
+  check_area_light_power(*scene, top);
   return scene;
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  try {
+    return load_scene_file(path, overrides);
+  } catch (const GraphError& e) {
+    throw InputError(e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
+    throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+  }
 }
 
 }  // namespace ochre

@@ -1,5 +1,7 @@
 #include "renderer/signal_cleanup.h"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
 #include <unistd.h>
@@ -23,6 +25,7 @@ enum SlotState : int { kFree = 0, kClaimed = 1, kReady = 2 };
 // kClaimed and read by the handler only once it is kReady.
 struct Slot {
   std::atomic<int> state{kFree};
+  bool directory = false;
   char path[PATH_MAX];
 };
 std::array<Slot, kSlots> slots;
@@ -32,9 +35,37 @@ std::atomic<int> pending_signal{0};
 
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 
+// Unlinks every entry of a directory holding only files, then the directory, with system calls only
+// (getdents64 is the system call opendir and readdir use, without their allocation). Entries are read
+// again from the start until none is left, since unlinking while reading may skip some.
+void remove_scratch_directory(const char* path) {
+  const int fd = ::open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(struct dirent64) char buffer[4096];
+  for (int pass = 0; pass < 1000; ++pass) {
+    bool removed = false;
+    ::lseek(fd, 0, SEEK_SET);
+    for (ssize_t n; (n = ::getdents64(fd, buffer, sizeof buffer)) > 0;) {
+      for (ssize_t offset = 0; offset < n;) {
+        const auto* entry = reinterpret_cast<const struct dirent64*>(buffer + offset);
+        offset += entry->d_reclen;
+        const char* name = entry->d_name;
+        if (name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))) continue;
+        removed |= ::unlinkat(fd, name, 0) == 0;
+      }
+    }
+    if (!removed) break;
+  }
+  ::close(fd);
+  ::rmdir(path);
+}
+
 void remove_temporaries_and_reraise(int signal_number) {
   for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == kReady) ::unlink(slot.path);
+    if (slot.state.load(std::memory_order_acquire) == kReady && !slot.directory) ::unlink(slot.path);
+  for (Slot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == kReady && slot.directory)
+      remove_scratch_directory(slot.path);
   struct sigaction default_action {};
   default_action.sa_handler = SIG_DFL;
   sigemptyset(&default_action.sa_mask);
@@ -71,7 +102,7 @@ void install_signal_cleanup() {
   });
 }
 
-TemporaryFileRegistration::TemporaryFileRegistration(const std::filesystem::path& path) {
+TemporaryFileRegistration::TemporaryFileRegistration(const std::filesystem::path& path, TemporaryKind kind) {
   std::error_code error;
   const std::string absolute = std::filesystem::absolute(path, error).string();
   if (error || absolute.size() >= PATH_MAX) return;
@@ -79,6 +110,7 @@ TemporaryFileRegistration::TemporaryFileRegistration(const std::filesystem::path
     int expected = kFree;
     if (!slots[i].state.compare_exchange_strong(expected, kClaimed)) continue;
     std::memcpy(slots[i].path, absolute.c_str(), absolute.size() + 1);
+    slots[i].directory = kind == TemporaryKind::kDirectory;
     slots[i].state.store(kReady, std::memory_order_release);
     slot_ = i;
     return;

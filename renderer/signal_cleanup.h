@@ -7,8 +7,9 @@
 // action and raises the signal again, so the process still ends by the signal (a shell reports 130
 // for SIGINT, 143 for SIGTERM) and the existing outputs are untouched.
 //
-// The handler uses only async-signal-safe calls (unlink, sigaction, raise) on a fixed table of paths
-// written before registration, never memory allocation or locks.
+// The handler uses only async-signal-safe calls (unlink, sigaction, raise; for a scratch directory open,
+// getdents64, unlinkat, rmdir) on a fixed table of paths written before registration, never memory
+// allocation or locks.
 
 #include <filesystem>
 
@@ -18,12 +19,19 @@ namespace ochre {
 // were ignored when the process started (e.g. SIGHUP under nohup) stay ignored.
 void install_signal_cleanup();
 
-// Registers a temporary file for removal by the handler while the object lives. Registration is
-// best effort: beyond the table's capacity (64 paths) or for a path longer than PATH_MAX the file is
-// not removed on a signal (it still is on every normal exit path, by its owner).
+enum class TemporaryKind {
+  kFile,
+  kDirectory,  // a scratch directory of files only (no subdirectories): emptied, then removed
+};
+
+// Registers a temporary file (or scratch directory) for removal by the handler while the object lives.
+// The handler removes files before directories. Registration is best effort: beyond the table's
+// capacity (64 paths) or for a path longer than PATH_MAX the file is not removed on a signal (it still
+// is on every normal exit path, by its owner).
 class TemporaryFileRegistration {
  public:
-  explicit TemporaryFileRegistration(const std::filesystem::path& path);
+  explicit TemporaryFileRegistration(const std::filesystem::path& path,
+                                     TemporaryKind kind = TemporaryKind::kFile);
   ~TemporaryFileRegistration();
   TemporaryFileRegistration(const TemporaryFileRegistration&) = delete;
   TemporaryFileRegistration& operator=(const TemporaryFileRegistration&) = delete;

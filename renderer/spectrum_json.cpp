@@ -6,10 +6,12 @@
 #include <memory>
 
 #include "materials/graph/resource_resolver.h"
+#include "materials/nodes/json_literal.h"
 #include "materials/nodes/spectrum_source.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "spectra/constant_spectrum.h"
+#include "spectra/negative_value.h"
 #include "spectra/rgb_spectrum.h"
 
 namespace ochre {
@@ -19,14 +21,15 @@ namespace {
 SpectrumPtr from_rgb(const nlohmann::json& value, SpectrumRole role, const std::string& where) {
   const Vec3 c = json_vec3(value, where);
   if (c.x < 0 || c.y < 0 || c.z < 0)
-    throw InputError(fmt::format("{}: colour components must be >= 0", where));
+    throw InputError(fmt::format("{}: colour components must be >= 0 (got {})", where, json_excerpt(value)));
   const RGB rgb{c.x, c.y, c.z};
   switch (role) {
     case SpectrumRole::Illuminant:
       return std::make_shared<RGBIlluminantSpectrum>(rgb);
     case SpectrumRole::Reflectance:
       if (c.x > 1 || c.y > 1 || c.z > 1)
-        throw InputError(fmt::format("{}: reflectance components must be <= 1", where));
+        throw InputError(
+            fmt::format("{}: reflectance components must be <= 1 (got {})", where, json_excerpt(value)));
       return std::make_shared<RGBAlbedoSpectrum>(rgb);
     case SpectrumRole::Unbounded:
       break;
@@ -52,23 +55,31 @@ class SceneDirectory final : public ResourceResolver {
 
 SpectrumPtr from_object(const nlohmann::json& value, const std::string& where,
                         const std::filesystem::path& scene_dir) {
+  const SceneDirectory directory(scene_dir);
+  SpectrumPtr spectrum;
   try {
-    return spectrum_from_object(value, SceneDirectory(scene_dir));
+    spectrum = spectrum_from_object(value, directory);
   } catch (const SpectrumObjectError& e) {
     throw InputError(fmt::format("{}{}: {}", where, e.key.empty() ? "" : "." + e.key, e.what()));
   }
+  // Named spectra and blackbodies are >= 0 and the scale is checked: only a table can be negative.
+  if (const auto negative = first_negative_value(*spectrum)) {
+    const std::string file = value.contains("file") ? value["file"].get<std::string>() : "";
+    throw InputError(
+        fmt::format("{}{}: {}negative value {} at {} nm (spectra of lights, emission and "
+                    "reflectances must be >= 0 at every wavelength)",
+                    where, file.empty() ? "" : ".file", file.empty() ? "" : file + ": ", negative->value,
+                    negative->lambda_nm));
+  }
+  return spectrum;
 }
 
 }  // namespace
 
 SpectrumPtr parse_spectrum(const nlohmann::json& value, SpectrumRole role, const std::string& where,
                            const std::filesystem::path& scene_dir) {
-  if (value.is_number()) {
-    const double x = value.get<double>();
-    if (!std::isfinite(x) || x < 0)
-      throw InputError(fmt::format("{}: must be a finite number >= 0 (got {})", where, x));
-    return std::make_shared<ConstantSpectrum>(static_cast<float>(x));
-  }
+  if (value.is_number())
+    return std::make_shared<ConstantSpectrum>(static_cast<float>(json_number(value, where, 0.0)));
   if (value.is_array()) return from_rgb(value, role, where);
   if (value.is_object()) return from_object(value, where, scene_dir);
   throw InputError(

@@ -140,10 +140,8 @@ void check_refined_size(const ControlMesh& control, Sdc::SchemeType scheme, int 
   const double triangles = subdivided_triangle_count(control, scheme == Sdc::SCHEME_LOOP, level);
   const std::string what = fmt::format("{}: subdivision level {} of {} faces ({:.0f} triangles)",
                                        control.name, level, control.face_sizes.size(), triangles);
-  check_memory_estimate(triangles * kSubdividedTriangleBytes, what);
   // Vertices are fewer than triangles on a closed or open refined surface; 2^31 keeps int indices safe.
-  if (triangles >= 2147483648.0)
-    throw InputError(what + ": more than 2^31 triangles, beyond the renderer's 32-bit indices");
+  check_triangle_estimate(triangles, kSubdividedTriangleBytes, what);
 }
 
 }  // namespace

@@ -26,8 +26,10 @@
 #include "renderer/atomic_file.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mip_pyramid.h"
+#include "renderer/periodic_texture_coordinate.h"
 #include "spectra/color_space.h"
 #include "spectra/input_file.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -343,10 +345,14 @@ void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint
   const int fetched = replicate_grey ? 1 : std::clamp(texture.channels - first_channel, 0, nchannels);
   if (fetched == 0) return;
 
+  // NaN or infinite coordinates read nothing (0); huge ones wrap to 0 and an infinite footprint is the
+  // largest float, both without any float -> int conversion out of range (periodic_texture_coordinate.h).
+  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return;
+  const float s = periodic_texture_coordinate(uv.x), v = periodic_texture_coordinate(uv.y);
   // Isotropic filter footprint: ds/dx = dt/dy = footprint. t runs down the image, v up: t = 1 - v.
-  const float width = std::fabs(footprint);
+  const float width = finite_or_limit(std::fabs(footprint));
   if (texture.resident) {
-    texture.resident->lookup(uv.x, 1.0f - uv.y, width, first_channel, fetched, out);
+    texture.resident->lookup(s, 1.0f - v, width, first_channel, fetched, out);
     if (replicate_grey) std::fill(out + 1, out + nchannels, out[0]);
     return;
   }
@@ -360,8 +366,8 @@ void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint
   options.interpmode = OIIO::TextureOpt::InterpBilinear;
   OIIO::TextureSystem& system = *impl_->system;
   OIIO::TextureSystem::Perthread* thread_info = system.get_perthread_info();
-  if (!system.texture(texture.handle, thread_info, options, uv.x, 1.0f - uv.y, width, 0.0f, 0.0f, width,
-                      fetched, out)) {
+  if (!system.texture(texture.handle, thread_info, options, s, 1.0f - v, width, 0.0f, 0.0f, width, fetched,
+                      out)) {
     impl_->failed_lookups.fetch_add(1, std::memory_order_relaxed);
     (void)system.geterror();  // do not let errors pile up in OIIO's per-thread buffer
     std::fill(out, out + nchannels, 0.0f);

@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "materials/nodes/json_literal.h"
 #include "renderer/input_error.h"
+#include "renderer/json_fields.h"
 
 namespace ochre {
 
@@ -153,21 +155,12 @@ float Transform::determinant3() const {
 
 namespace {
 
-std::string brief_dump(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
-}
-
 [[noreturn]] void fail(const std::string& where, const std::string& what, const nlohmann::json& value) {
-  throw InputError(fmt::format("{}: {}, got {}", where, what, brief_dump(value)));
+  throw InputError(fmt::format("{}: {}, got {}", where, what, json_excerpt(value)));
 }
 
 float parse_finite(const nlohmann::json& value, const std::string& where) {
-  if (!value.is_number()) fail(where, "expected a number", value);
-  const double d = value.get<double>();
-  if (!std::isfinite(d) || std::fabs(d) > 3.4e38) fail(where, "expected a finite number", value);
-  return static_cast<float>(d);
+  return static_cast<float>(json_number(value, where));
 }
 
 Transform parse_matrix(const nlohmann::json& value, const std::string& where) {
@@ -192,8 +185,10 @@ Transform parse_rotate(const nlohmann::json& value, const std::string& where) {
   for (const auto& [key, unused] : value.items()) {
     if (key != "axis" && key != "angle") fail(where, fmt::format("unknown key \"{}\"", key), value);
   }
-  const Vec3 axis = parse_vec3(member(value, "axis", where), where + ".axis");
-  if (!(length(axis) > 0.0f)) fail(where + ".axis", "the rotation axis must not be zero", value["axis"]);
+  const Vec3 axis = json_vec3(member(value, "axis", where), where + ".axis");
+  // The length is squared on the way: [1e-30, 0, 0] is zero and [1e30, 0, 0] infinite in single precision.
+  if (!(length(axis) > 0.0f) || !std::isfinite(length(axis)))
+    fail(where + ".axis", "the rotation axis must be non-zero with a finite length", value["axis"]);
   return Transform::rotate(parse_finite(member(value, "angle", where), where + ".angle"), axis);
 }
 
@@ -203,9 +198,9 @@ Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
     if (key != "eye" && key != "target" && key != "up")
       fail(where, fmt::format("unknown key \"{}\"", key), value);
   }
-  const Vec3 eye = parse_vec3(member(value, "eye", where), where + ".eye");
-  const Vec3 target = parse_vec3(member(value, "target", where), where + ".target");
-  const Vec3 up = parse_vec3(member(value, "up", where), where + ".up");
+  const Vec3 eye = json_vec3(member(value, "eye", where), where + ".eye");
+  const Vec3 target = json_vec3(member(value, "target", where), where + ".target");
+  const Vec3 up = json_vec3(member(value, "up", where), where + ".up");
   try {
     return Transform::look_at(eye, target, up);
   } catch (const std::invalid_argument& e) {
@@ -215,7 +210,7 @@ Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
 
 Transform parse_scale(const nlohmann::json& value, const std::string& where) {
   const Vec3 factors =
-      value.is_number() ? Vec3(1, 1, 1) * parse_finite(value, where) : parse_vec3(value, where);
+      value.is_number() ? Vec3(1, 1, 1) * parse_finite(value, where) : json_vec3(value, where);
   if (factors.x == 0 || factors.y == 0 || factors.z == 0)
     fail(where, "scale factors must not be zero", value);
   return Transform::scale(factors);
@@ -228,7 +223,7 @@ Transform parse_operation(const nlohmann::json& op, const std::string& where) {
   const std::string key = op.begin().key();
   const nlohmann::json& value = op.begin().value();
   const std::string at = where + "." + key;
-  if (key == "translate") return Transform::translate(parse_vec3(value, at));
+  if (key == "translate") return Transform::translate(json_vec3(value, at));
   if (key == "scale") return parse_scale(value, at);
   if (key == "rotate") return parse_rotate(value, at);
   if (key == "matrix") return parse_matrix(value, at);
@@ -239,12 +234,6 @@ Transform parse_operation(const nlohmann::json& op, const std::string& where) {
 }
 
 }  // namespace
-
-Vec3 parse_vec3(const nlohmann::json& value, const std::string& where) {
-  if (!value.is_array() || value.size() != 3) fail(where, "expected an array of 3 numbers", value);
-  return {parse_finite(value[0], where + "[0]"), parse_finite(value[1], where + "[1]"),
-          parse_finite(value[2], where + "[2]")};
-}
 
 Transform parse_transform(const nlohmann::json& value, const std::string& where) {
   Transform result;
@@ -260,7 +249,8 @@ Transform parse_transform(const nlohmann::json& value, const std::string& where)
     fail(where, "expected a 16-number matrix, an operation object or an array of operations", value);
   }
   const float det = result.determinant3();
-  if (!(std::fabs(det) > 0.0f) || !std::isfinite(det)) fail(where, "the transform is singular", value);
+  if (!(std::fabs(det) > 0.0f) || !std::isfinite(det))
+    fail(where, "the transform is singular (or its scale over- or underflows single precision)", value);
   return result;
 }
 

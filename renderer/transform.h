@@ -61,7 +61,4 @@ struct Transform {
 // "scene.json: shapes[2].transform[1].rotate.axis: ...".
 Transform parse_transform(const nlohmann::json& value, const std::string& where);
 
-// An array of 3 finite numbers; otherwise InputError naming `where`.
-Vec3 parse_vec3(const nlohmann::json& value, const std::string& where);
-
 }  // namespace ochre

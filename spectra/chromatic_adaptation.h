@@ -12,8 +12,8 @@ namespace ochre {
 inline constexpr Mat3 kBradfordCone{
     {0.8951, 0.2664, -0.1614, -0.7502, 1.7135, 0.0367, 0.0389, -0.0685, 1.0296}};
 
-inline Mat3 bradford_adaptation(const Vec3d& source_white, const Vec3d& target_white) {
-  const Vec3d src = kBradfordCone * source_white, dst = kBradfordCone * target_white;
+inline Mat3 bradford_adaptation(const Array3d& source_white, const Array3d& target_white) {
+  const Array3d src = kBradfordCone * source_white, dst = kBradfordCone * target_white;
   return kBradfordCone.inverse() * Mat3::diagonal(dst[0] / src[0], dst[1] / src[1], dst[2] / src[2]) *
          kBradfordCone;
 }

@@ -21,18 +21,18 @@ struct SpaceMatrices {
   Mat3 rgb_to_xyz, xyz_to_rgb;
 };
 
-Vec3d d65_white() {
+Array3d d65_white() {
   const XYZ w = spectrum_to_xyz(*d65());
   return {w.x, w.y, w.z};
 }
 
 SpaceMatrices make_matrices(ColorSpace space) {
-  const Vec3d white = d65_white();
+  const Array3d white = d65_white();
   Mat3 to_xyz;
   if (space == ColorSpace::LinearRec709) {
     to_xyz = rgb_to_xyz_matrix(kRec709Primaries, white);
   } else {
-    const Vec3d aces_white = xy_to_xyz(kAcesWhiteXy);
+    const Array3d aces_white = xy_to_xyz(kAcesWhiteXy);
     // AP1 -> XYZ(ACES white) -> Bradford -> XYZ(our D65).
     to_xyz = bradford_adaptation(aces_white, white) * rgb_to_xyz_matrix(kAP1Primaries, aces_white);
   }
@@ -74,12 +74,12 @@ const Mat3& rgb_to_xyz_matrix(ColorSpace space) {
 }
 
 RGB xyz_to_rgb(const XYZ& xyz, ColorSpace space) {
-  const Vec3d v = xyz_to_rgb_matrix(space) * Vec3d{xyz.x, xyz.y, xyz.z};
+  const Array3d v = xyz_to_rgb_matrix(space) * Array3d{xyz.x, xyz.y, xyz.z};
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 
 XYZ rgb_to_xyz(const RGB& rgb, ColorSpace space) {
-  const Vec3d v = rgb_to_xyz_matrix(space) * Vec3d{rgb.r, rgb.g, rgb.b};
+  const Array3d v = rgb_to_xyz_matrix(space) * Array3d{rgb.r, rgb.g, rgb.b};
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
 }
 

@@ -11,7 +11,7 @@
 
 namespace ochre {
 
-using Vec3d = std::array<double, 3>;
+using Array3d = std::array<double, 3>;
 
 struct Mat3 {
   std::array<double, 9> m{};
@@ -28,7 +28,7 @@ struct Mat3 {
       for (int j = 0; j < 3; ++j) r(i, j) = a(i, 0) * b(0, j) + a(i, 1) * b(1, j) + a(i, 2) * b(2, j);
     return r;
   }
-  friend constexpr Vec3d operator*(const Mat3& a, const Vec3d& v) {
+  friend constexpr Array3d operator*(const Mat3& a, const Array3d& v) {
     return {a(0, 0) * v[0] + a(0, 1) * v[1] + a(0, 2) * v[2],
             a(1, 0) * v[0] + a(1, 1) * v[1] + a(1, 2) * v[2],
             a(2, 0) * v[0] + a(2, 1) * v[1] + a(2, 2) * v[2]};

@@ -27,14 +27,14 @@ inline constexpr RGBPrimaries kAP1Primaries{{0.713, 0.293}, {0.165, 0.830}, {0.1
 // ACES white point (approximately D60), Academy S-2014-004.
 inline constexpr Chromaticity kAcesWhiteXy{0.32168, 0.33767};
 
-inline constexpr Vec3d xy_to_xyz(Chromaticity c, double luminance = 1.0) {
+inline constexpr Array3d xy_to_xyz(Chromaticity c, double luminance = 1.0) {
   return {c.x / c.y * luminance, luminance, (1.0 - c.x - c.y) / c.y * luminance};
 }
 
-inline Mat3 rgb_to_xyz_matrix(const RGBPrimaries& p, const Vec3d& white_xyz) {
-  const Vec3d r = xy_to_xyz(p.red), g = xy_to_xyz(p.green), b = xy_to_xyz(p.blue);
+inline Mat3 rgb_to_xyz_matrix(const RGBPrimaries& p, const Array3d& white_xyz) {
+  const Array3d r = xy_to_xyz(p.red), g = xy_to_xyz(p.green), b = xy_to_xyz(p.blue);
   const Mat3 unscaled{{r[0], g[0], b[0], r[1], g[1], b[1], r[2], g[2], b[2]}};
-  const Vec3d s = unscaled.inverse() * white_xyz;
+  const Array3d s = unscaled.inverse() * white_xyz;
   return unscaled * Mat3::diagonal(s[0], s[1], s[2]);
 }
 

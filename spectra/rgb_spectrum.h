@@ -15,6 +15,16 @@
 
 namespace ochre {
 
+// pbrt-v4's decomposition of an unbounded colour: rgb = scale * (the bounded colour rgb / scale) with
+// scale = 2 max(rgb), which puts the largest component at 0.5, the middle of the sigmoid's range, where
+// the fit is smoothest (a grey rgb gives the constant 0.5 exactly). Negative and NaN components count as
+// 0, +inf as the largest float; the scale is at most the largest float (every value stays finite).
+struct UnboundedRGB {
+  float scale = 0.0f;
+  RGBSigmoidPolynomial poly;
+};
+UnboundedRGB decompose_unbounded(RGB rgb);
+
 class RGBAlbedoSpectrum final : public Spectrum {
  public:
   explicit RGBAlbedoSpectrum(RGB rgb);

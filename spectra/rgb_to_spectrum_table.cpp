@@ -8,6 +8,8 @@
 #include <span>
 #include <stdexcept>
 
+#include "spectra/non_finite.h"
+
 namespace ochre {
 
 namespace detail {
@@ -53,7 +55,8 @@ const float* RGBToSpectrumTable::cell(int l, int k, int j, int i) const {
 }
 
 RGBSigmoidPolynomial RGBToSpectrumTable::lookup(RGB rgb) const {
-  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c], 0.0f, 1.0f);  // also maps NaN to 0
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = nan_safe_clamp(rgb[c], 0.0f, 1.0f);  // NaN -> 0: x, y, z index the table
   if (rgb.r == rgb.g && rgb.g == rgb.b) return RGBSigmoidPolynomial::constant(rgb.r);
 
   // Largest component and the two others as ratios (first maximum on ties).

@@ -5,8 +5,8 @@
 //
 //   RGBToSpectrumTable::srgb().lookup(RGB) -> RGBSigmoidPolynomial
 //     The reflectance S(c0 l^2 + c1 l + c2) under D65 has (up to the table's interpolation) the
-//     colour rgb. Components are clamped to [0, 1]. Grey inputs (r == g == b) give an exactly
-//     constant spectrum (c0 = c1 = 0). Elsewhere: trilinear interpolation of the coefficients.
+//     colour rgb. Components are clamped to [0, 1] (NaN counts as 0). Grey inputs (r == g == b) give an
+//     exactly constant spectrum (c0 = c1 = 0). Elsewhere: trilinear interpolation of the coefficients.
 //
 // Layout of the table: for largest component l, z = rgb[l], x = rgb[l+1]/z, y = rgb[l+2]/z
 // (indices mod 3); x, y uniform over res points in [0, 1], z at the res points scale[k].

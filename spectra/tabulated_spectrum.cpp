@@ -40,12 +40,26 @@ std::vector<float> to_float(const std::vector<double>& v) {
 
 }  // namespace
 
-TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values)
+std::optional<TableExtrapolation> table_extrapolation_from_name(std::string_view name) {
+  if (name == "clamp") return TableExtrapolation::kClamp;
+  if (name == "zero") return TableExtrapolation::kZero;
+  return std::nullopt;
+}
+
+TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values,
+                                     TableExtrapolation extrapolation)
     : lambda_(std::move(lambda_nm)), values_(std::move(values)) {
   validate(lambda_, values_);
+  const bool clamp = extrapolation == TableExtrapolation::kClamp;
+  below_ = clamp ? values_.front() : 0.0f;
+  above_ = clamp ? values_.back() : 0.0f;
   uniform_step_ = uniform_step(lambda_);
   inverse_step_ = uniform_step_ > 0.0f ? 1.0f / uniform_step_ : 0.0f;
-  is_constant_ = std::all_of(values_.begin(), values_.end(), [&](float v) { return v == values_.front(); });
+  // Constant over [360, 830] nm: equal values, and the same value wherever the range leaves the table.
+  const float first = values_.front();
+  is_constant_ = std::all_of(values_.begin(), values_.end(), [&](float v) { return v == first; }) &&
+                 (lambda_.front() <= kLambdaMin || below_ == first) &&
+                 (lambda_.back() >= kLambdaMax || above_ == first);
   // Piecewise linear: the maximum over [360, 830] is at a knot inside the range or at an end.
   max_value_ = std::max(eval(kLambdaMin), eval(kLambdaMax));
   for (std::size_t i = 0; i < lambda_.size(); ++i)
@@ -53,8 +67,9 @@ TabulatedSpectrum::TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<f
 }
 
 float TabulatedSpectrum::eval(float lambda_nm) const {
-  if (!(lambda_nm > lambda_.front())) return values_.front();  // also maps NaN to a finite value
-  if (lambda_nm >= lambda_.back()) return values_.back();
+  // Outside or at the ends (a rare branch); NaN takes the first one and gets a finite value.
+  if (!(lambda_nm > lambda_.front())) return lambda_nm == lambda_.front() ? values_.front() : below_;
+  if (lambda_nm >= lambda_.back()) return lambda_nm == lambda_.back() ? values_.back() : above_;
   if (uniform_step_ > 0.0f) return eval_uniform(lambda_nm);
   const std::size_t i = static_cast<std::size_t>(std::upper_bound(lambda_.begin(), lambda_.end(), lambda_nm) -
                                                  lambda_.begin()) -
@@ -78,26 +93,30 @@ SampledSpectrum TabulatedSpectrum::sample(const SampledWavelengths& lambda) cons
   return s;
 }
 
-SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column) {
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::size_t column, TableExtrapolation extrapolation) {
   if (column == 0)
     throw std::runtime_error(table.source() + ": column 0 holds the wavelengths, not spectrum values");
-  return std::make_shared<TabulatedSpectrum>(to_float(table.wavelengths()), to_float(table.column(column)));
+  return std::make_shared<TabulatedSpectrum>(to_float(table.wavelengths()), to_float(table.column(column)),
+                                             extrapolation);
 }
 
-SpectrumPtr tabulated_spectrum(const CsvTable& table, std::string_view column) {
-  return tabulated_spectrum(table, table.column_index(column));
+SpectrumPtr tabulated_spectrum(const CsvTable& table, std::string_view column,
+                               TableExtrapolation extrapolation) {
+  return tabulated_spectrum(table, table.column_index(column), extrapolation);
 }
 
 SpectrumPtr load_spectrum_csv(const std::filesystem::path& path) {
   return load_spectrum_csv(path, std::size_t{1});
 }
 
-SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::string_view column) {
-  return tabulated_spectrum(CsvTable::load(path), column);
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::string_view column,
+                              TableExtrapolation extrapolation) {
+  return tabulated_spectrum(CsvTable::load(path), column, extrapolation);
 }
 
-SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::size_t column) {
-  return tabulated_spectrum(CsvTable::load(path), column);
+SpectrumPtr load_spectrum_csv(const std::filesystem::path& path, std::size_t column,
+                              TableExtrapolation extrapolation) {
+  return tabulated_spectrum(CsvTable::load(path), column, extrapolation);
 }
 
 }  // namespace ochre

@@ -20,18 +20,20 @@
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "renderer/film.h"
 #include "renderer/polarization_mode.h"
 #include "renderer/raw_embree_benchmark.h"
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/tool_files.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// The target of DESIGN.md / docs/performance.md: the renderer keeps at least half of raw Embree's rate.
+// The goal of docs/performance.md: the renderer keeps at least half of raw Embree's rate.
 constexpr double kGoalRatio = 0.5;
 
 struct BenchCommand {
@@ -44,22 +46,18 @@ struct BenchCommand {
   int repeat = 3;
 };
 
-// scenes/default and scenes/cornell-box of the source tree: beside the executable (build/bin/../..),
-// else the source directory this tool was built from.
+// An example scene of scenes/ (installed with the tools, else in the source tree; tools/tool_files.h).
+std::string example_scene(const fs::path& relative) {
+  return ochre::tool_file("scenes" / relative, "scenes" / relative).string();
+}
+
 std::vector<std::string> default_scenes() {
-  fs::path root = OCHRE_SOURCE_DIR;
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error && fs::exists(exe.parent_path() / ".." / ".." / "scenes" / "default" / "default.json"))
-    root = exe.parent_path() / ".." / "..";
-  return {(root / "scenes" / "default" / "default.json").lexically_normal().string(),
-          (root / "scenes" / "cornell-box" / "cornell-box.json").lexically_normal().string()};
+  return {example_scene("default/default.json"), example_scene("cornell-box/cornell-box.json")};
 }
 
 // The scene the mode costs are measured on: the Cornell box with a gold and a glass sphere.
 std::string polarized_scene() {
-  const fs::path cornell = fs::path(default_scenes()[1]).parent_path();
-  return (cornell / "cornell-box-polarized.json").string();
+  return example_scene("cornell-box/cornell-box-polarized.json");
 }
 
 std::string rate(double per_second) {
@@ -205,6 +203,7 @@ void bench_modes(const BenchCommand& cmd, const std::string& file) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-bench: renderer rays/s against raw Embree rays/s on the same geometry"};
+  app.set_version_flag("--version", "ochre-bench " OCHRE_VERSION);
   BenchCommand cmd;
   uint32_t spp = 0;
   app.add_option("scenes", cmd.scenes, "Scenes (JSON; default scenes/default and scenes/cornell-box)");

@@ -11,6 +11,7 @@
 #include <exception>
 #include <new>
 
+#include "ochre/version.h"
 #include "renderer/signal_cleanup.h"
 #include "tools/brdf/brdf_commands.h"
 
@@ -25,6 +26,7 @@ void add_material_options(CLI::App& command, ochre::MaterialArgs& material) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-brdf: evaluate, integrate, plot and check the sampling of any material"};
+  app.set_version_flag("--version", "ochre-brdf " OCHRE_VERSION);
   app.require_subcommand(1);
 
   ochre::EvalArgs eval;

@@ -11,15 +11,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <memory>
 #include <new>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
 #include "renderer/film.h"
@@ -31,6 +31,8 @@
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/python_script.h"
+#include "tools/unsigned_option.h"
 
 namespace {
 
@@ -69,11 +71,15 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     try {
       size_t used = 0;
       const long long v = std::stoll(value, &used);
-      if (used != value.size() || v < 0) throw std::invalid_argument(value);
-      target = static_cast<std::decay_t<decltype(*target)>>(v);
+      using Target = std::decay_t<decltype(*target)>;
+      // Checked before the conversion: 4294967297 must not wrap to 1.
+      if (used != value.size() || v < 0 ||
+          static_cast<unsigned long long>(v) > std::numeric_limits<Target>::max())
+        throw std::invalid_argument(value);
+      target = static_cast<Target>(v);
     } catch (const std::logic_error&) {
-      throw InputError(
-          fmt::format("--variant '{}': {} must be a non-negative integer, not '{}'", spec, key, value));
+      throw InputError(fmt::format("--variant '{}': {} must be a non-negative integer in range, not '{}'",
+                                   spec, key, value));
     }
   };
   if (key == "sampler")
@@ -180,13 +186,12 @@ std::vector<Row> run_variant(const ConvergeCommand& cmd, const Variant& variant,
   return rows;
 }
 
-void write_csv(ochre::AtomicOutput& output, const std::vector<Row>& rows) {
-  std::ofstream out(output.temp_path());
-  out << "variant,spp,seconds,relmse,rmse,relmse_x_seconds\n";
+void write_csv(const ochre::AtomicOutput& output, const std::vector<Row>& rows) {
+  std::string csv = "variant,spp,seconds,relmse,rmse,relmse_x_seconds\n";
   for (const Row& r : rows)
-    out << fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.variant, r.spp, r.seconds, r.relmse, r.rmse,
+    csv += fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.variant, r.spp, r.seconds, r.relmse, r.rmse,
                        r.relmse * r.seconds);
-  if (!out.flush()) throw InputError(fmt::format("cannot write {}", output.final_path().string()));
+  ochre::write_text_file(output, csv);
 }
 
 // log(relMSE) at log(seconds), linear between the variant's rows sorted by time; nullopt outside.
@@ -228,32 +233,11 @@ void print_equal_time_ratios(const std::vector<std::vector<Row>>& by_variant) {
   }
 }
 
-// tools/plot_convergence.py beside the executable's source tree (build/bin/../../tools), else in the
-// source directory this tool was built from.
-fs::path plot_script() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const fs::path beside = exe.parent_path() / ".." / ".." / "tools" / "plot_convergence.py";
-    if (fs::exists(beside)) return beside;
-  }
-  return fs::path(OCHRE_SOURCE_DIR) / "tools" / "plot_convergence.py";
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // Runs the plotting script on the CSV's temporary into the PNG's; a missing Python or matplotlib is a
 // warning (the CSV is still written). Returns whether the plot was made.
 bool plot(const ochre::AtomicOutput& csv, const ochre::AtomicOutput& png) {
-  const fs::path script = plot_script();
-  const std::string command =
-      fmt::format("/usr/bin/python3 {} {} {}", shell_quote(script.string()),
-                  shell_quote(csv.temp_path().string()), shell_quote(png.temp_path().string()));
-  if (std::system(command.c_str()) == 0) return true;
+  const fs::path script = ochre::tool_script("plot_convergence.py");
+  if (ochre::run_python(script, {csv.temp_path().string(), png.temp_path().string()})) return true;
   fmt::print(stderr,
              "ochre-converge: warning: plot {} not written ({} failed; is matplotlib installed?); "
              "the CSV {} is kept\n",
@@ -325,6 +309,7 @@ int run_converge(ConvergeCommand cmd) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-converge: relative MSE against render time, per variant of a scene's settings"};
+  app.set_version_flag("--version", "ochre-converge " OCHRE_VERSION);
   ConvergeCommand cmd;
   int threads = 0, width = 0, height = 0;
   uint64_t seed = 0;
@@ -340,7 +325,8 @@ int main(int argc, char** argv) {
   app.add_option("--plot", cmd.plot,
                  "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
   auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)");
-  auto* seed_opt = app.add_option("--seed", seed, "Seed (default: the scene's)");
+  auto* seed_opt =
+      app.add_option("--seed", seed, "Seed (default: the scene's)")->check(ochre::unsigned_64_check());
   auto* width_opt =
       app.add_option("--width", width, "Film width (default: the scene's)")->check(CLI::PositiveNumber);
   auto* height_opt =

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
 #include "renderer/image_error.h"
@@ -122,6 +123,7 @@ int run_diff(const DiffCommand& cmd) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-diff: compare a linear EXR with a reference EXR (R, G, B channels)"};
+  app.set_version_flag("--version", "ochre-diff " OCHRE_VERSION);
   DiffCommand cmd;
   double rmse = 0, relmse = 0, max_error = 0, max_de = 0, heatmap_scale = 0;
   std::string ocio, display, view;

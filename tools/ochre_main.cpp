@@ -3,8 +3,10 @@
 #include <iostream>
 #include <regex>
 
+#include "ochre/version.h"
 #include "spectra/byte_size.h"
 #include "tools/render_command.h"
+#include "tools/unsigned_option.h"
 
 namespace {
 
@@ -22,7 +24,7 @@ bool parse_resolution(const std::string& text, int& width, int& height) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre: spectral path tracer with Mueller-matrix polarization"};
-  app.set_version_flag("--version", "ochre 0.1.0");
+  app.set_version_flag("--version", "ochre " OCHRE_VERSION);
   app.require_subcommand(1);
 
   ochre::RenderCommand cmd;
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
   auto* threads_opt =
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
-  auto* seed_opt = render->add_option("--seed", seed, "Random seed");
+  auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
   auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
@@ -52,7 +54,8 @@ int main(int argc, char** argv) {
   auto* view_opt = render->add_option("--view", view, "OCIO view (default: the display's)");
   auto* cs_opt = render->add_option("--colorspace", colorspace, "EXR working space: rec709 | acescg")
                      ->check(CLI::IsMember({"rec709", "acescg"}));
-  auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops");
+  auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops")
+                           ->check(CLI::Range(-64.0, 64.0));  // as output.exposure
   render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
   render
       ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")

@@ -9,16 +9,15 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <new>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
-#include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/output_files.h"
 #include "renderer/output_transaction.h"
@@ -207,26 +206,21 @@ void write_junit(const fs::path& path, const std::vector<SceneOutcome>& outcomes
     failures += o.passed ? 0 : 1;
     total += o.seconds;
   }
-  ochre::AtomicOutput output(path);
-  {
-    std::ofstream xml(output.temp_path());
-    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    xml << fmt::format(
-        "<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-        outcomes.size(), failures, total);
-    for (const auto& o : outcomes) {
-      xml << fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\" time=\"{:.3f}\"",
-                         xml_escape(o.name), o.seconds);
-      if (o.passed) {
-        xml << "/>\n";
-      } else {
-        xml << fmt::format(">\n    <failure message=\"{}\"/>\n  </testcase>\n", xml_escape(o.message));
-      }
+  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  xml += fmt::format(
+      "<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
+      outcomes.size(), failures, total);
+  for (const auto& o : outcomes) {
+    xml += fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\" time=\"{:.3f}\"",
+                       xml_escape(o.name), o.seconds);
+    if (o.passed) {
+      xml += "/>\n";
+    } else {
+      xml += fmt::format(">\n    <failure message=\"{}\"/>\n  </testcase>\n", xml_escape(o.message));
     }
-    xml << "</testsuite>\n";
-    if (!xml) throw ochre::ImageError("cannot write " + path.string());
   }
-  output.commit();
+  xml += "</testsuite>\n";
+  ochre::write_text_file(path, xml);
 }
 
 int run(const RegressCommand& cmd) {
@@ -267,6 +261,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "ochre-regress: noise-aware image regression tests (per-pixel luminance z-test, Sidak "
       "correction)"};
+  app.set_version_flag("--version", "ochre-regress " OCHRE_VERSION);
   RegressCommand cmd;
   app.add_option("dir", cmd.dir, "Folder of *.json scenes with references/<name>.exr")->required();
   app.add_flag("--update", cmd.update,

@@ -22,7 +22,7 @@ namespace ochre {
 
 namespace {
 
-// "auto" models only what the scene needs (DESIGN.md): off when nothing polarizes.
+// "auto" models only what the scene needs (docs/architecture.md, 'Design rules'): off when nothing polarizes.
 std::string polarization_mode(const Scene& scene) {
   const PolarizationChoice choice = polarization_for(scene);
   return fmt::format("{} ({})", polarization_mode_name(choice.mode), choice.reason);
@@ -47,9 +47,9 @@ void print_stats(const RenderStats& stats) {
   std::cerr << fmt::format(
       "ochre: rendered in {:.2f} s on {} threads: {:.3f} M samples/s, {:.3f} M rays/s ({} rays, {} shadow "
       "rays), "
-      "{} discarded NaN/Inf samples\n",
+      "{} discarded NaN/Inf samples, {} NaN/Inf shading values made finite\n",
       stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6,
-      stats.rays, stats.shadow_rays, stats.discarded);
+      stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
 }
 
 // What the command was doing, for an out-of-memory report.
@@ -75,10 +75,10 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   if (!command.polarization_png.empty()) out.polarization_png = command.polarization_png;
   if (!out.polarization_png.empty()) out.stokes = true;  // DoLP / AoLP need S1, S2
   if (out.stokes && scene.settings.polarization != "auto" && scene.settings.polarization != "stokes")
-    throw InputError(
-        fmt::format("Stokes output (--stokes, output.stokes or a polarization PNG) needs "
-                    "polarization mode stokes or auto, not '{}'",
-                    scene.settings.polarization));
+    throw InputError(fmt::format(
+        "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
+        "needs polarization mode stokes or auto, not '{}'",
+        command.scene, scene.settings.polarization));
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);

@@ -10,7 +10,7 @@ struct Frame {
 
   // Basis around a unit normal (Duff et al. 2017, "Building an orthonormal basis, revisited").
   // The basis is continuous except across n.z = 0's sign flip; polarization frames must not
-  // rely on it (see ../shared/notes/polarization.md, "discontinuous reference frames").
+  // rely on it (see docs/polarization.md, 'Discontinuous reference frames').
   static Frame from_normal(const Vec3& n) {
     const float sign = std::copysign(1.0f, n.z);
     const float a = -1.0f / (sign + n.z);

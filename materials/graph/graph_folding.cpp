@@ -1,17 +1,19 @@
 #include "materials/graph/graph_folding.h"
 
-#include <sstream>
-
 #include "materials/graph/frame_layout.h"
+#include "materials/nodes/json_literal.h"
+#include "spectra/negative_value.h"
 
 namespace ochre {
 
 namespace {
 
-std::string number(float x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
+// " (-0.5 at 400 nm)": where a spectrum constant is negative (for a CSV, its first negative entry).
+std::string negative_wavelength(const NodeValue& v) {
+  if (v.type != SocketType::kSpectrum) return "";
+  const auto negative = first_negative_value(*v.spectrum);
+  if (!negative) return "";
+  return " (" + number_text(negative->value) + " at " + number_text(negative->lambda_nm) + " nm)";
 }
 
 class Folder {
@@ -100,14 +102,14 @@ class Folder {
     if (!below && !above) return;
     std::string what;
     if (s.min && s.max)
-      what =
-          "value " + v.describe() + origin + " is outside [" + number(*s.min) + ", " + number(*s.max) + "]";
+      what = "value " + v.describe() + origin + " is outside [" + number_text(*s.min) + ", " +
+             number_text(*s.max) + "]";
     else if (below && *s.min == 0.0f)
-      what = "negative value " + v.describe() + origin + " is not allowed";
+      what = "negative value " + v.describe() + origin + negative_wavelength(v) + " is not allowed";
     else if (below)
-      what = "value " + v.describe() + origin + " is below the minimum " + number(*s.min);
+      what = "value " + v.describe() + origin + " is below the minimum " + number_text(*s.min);
     else
-      what = "value " + v.describe() + origin + " is above the maximum " + number(*s.max);
+      what = "value " + v.describe() + origin + " is above the maximum " + number_text(*s.max);
     g_.fail(n, s.name, what);
   }
 
@@ -174,6 +176,10 @@ class Folder {
     const SampledWavelengths lambda = SampledWavelengths::fixed(SampledSpectrum(550.0f));
     ShadingContext ctx;
     ctx.lambda = &lambda;
+    // A NaN or an overflow here stays in the folded constant: the input it reaches rejects it by name.
+    NonFiniteTally keep_non_finite;
+    keep_non_finite.keep_values = true;
+    ctx.nonfinite = &keep_non_finite;
     LobeArena arena(64);
     Closure closure;
     fn(NodeArgs{ctx, frame.data(), in.data(), out.data(), node.prepared.payload.get(), ~0u, arena, closure});

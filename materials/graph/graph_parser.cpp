@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
+#include "materials/core/single_precision.h"
 #include "materials/graph/resource_resolver.h"
 #include "materials/nodes/json_literal.h"
 #include "materials/nodes/spectrum_source.h"
@@ -19,13 +21,6 @@ std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
   return out.empty() ? "none" : out;
-}
-
-std::string number_text(double x) {
-  std::string s = std::to_string(x);
-  while (s.size() > 1 && s.back() == '0') s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
 }
 
 class Parser {
@@ -223,16 +218,23 @@ class Parser {
           g_.fail(node, p.name, "'" + s + "' is not one of: " + join(p.choices));
         return j;
       }
-      case ParamKind::kInt:
+      case ParamKind::kInt: {
         if (!j.is_number() || j.get<double>() != std::floor(j.get<double>()))
           g_.fail(node, p.name, "expected an integer, got " + json_excerpt(j));
-        check_range(node, p, j.get<double>());
-        return json(j.get<int>());
-      case ParamKind::kFloat:
-        if (!j.is_number() || !std::isfinite(j.get<double>()))
-          g_.fail(node, p.name, "expected a finite number, got " + json_excerpt(j));
+        // Range-checked as a double: converting first would wrap (4294967297 -> 1).
+        const double x = j.get<double>();
+        check_range(node, p, x);
+        if (x < std::numeric_limits<int>::min() || x > std::numeric_limits<int>::max())
+          g_.fail(node, p.name, "value " + json_excerpt(j) + " is outside the range of a 32-bit integer");
+        return json(static_cast<int>(x));
+      }
+      case ParamKind::kFloat: {
+        if (!j.is_number()) g_.fail(node, p.name, "expected a finite number, got " + json_excerpt(j));
+        if (const std::string problem = single_precision_problem(j.get<double>()); !problem.empty())
+          g_.fail(node, p.name, "expected a finite number, got " + json_excerpt(j) + " (" + problem + ")");
         check_range(node, p, j.get<double>());
         return j;
+      }
       case ParamKind::kValue:
         try {
           if (literal_value(j)) return j;

@@ -155,7 +155,7 @@ class Builder {
       if (!node.def->closure_traits) continue;
       std::vector<InputView> views;
       for (const Operand& op : f_.inputs[n]) views.push_back({op.type, op.constant ? &op.value : nullptr});
-      const ClosureTraits traits = node.def->closure_traits(views);
+      const ClosureTraits traits = node.def->closure_traits(views, node.prepared.payload.get());
       lobe_flags |= traits.lobe_flags;
       if (traits.lobe_flags != 0) max_lobes += traits.max_lobes;
       facts_.is_emissive = facts_.is_emissive || traits.emits;

@@ -6,6 +6,7 @@
 
 #include "materials/lobes/cosine_lobe_sampling.h"
 #include "materials/numerics/h_function.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -37,7 +38,7 @@ const HTable& table() {
 
 ChandrasekharConstants chandrasekhar_constants(float c) {
   ChandrasekharConstants k;
-  k.c = std::clamp(c, 0.0f, 1.0f);
+  k.c = nan_safe_clamp(c, 0.0f, 1.0f);  // NaN -> 0: c gives the index
   const float f = std::sqrt(1.0f - k.c) * float(kSNodes - 1);
   k.s_index = std::min(int(f), kSNodes - 2);
   k.s_weight = std::clamp(f - float(k.s_index), 0.0f, 1.0f);
@@ -46,7 +47,7 @@ ChandrasekharConstants chandrasekhar_constants(float c) {
 
 float chandrasekhar_h(const ChandrasekharConstants& k, float mu) {
   const std::vector<float>& h = table().h;
-  const float f = std::sqrt(std::clamp(mu, 0.0f, 1.0f)) * float(kXNodes - 1);
+  const float f = std::sqrt(nan_safe_clamp(mu, 0.0f, 1.0f)) * float(kXNodes - 1);
   const int x = std::min(int(f), kXNodes - 2);
   const float t = f - float(x);
   const float* lo = &h[k.s_index * kXNodes + x];

@@ -18,6 +18,7 @@ void Closure::scale(const SampledSpectrum& s) {
 void Closure::append(const Closure& other) {
   for (int i = 0; i < other.count_; ++i) add_lobe(other.lobes_[i].lobe, other.lobes_[i].weight);
   emission_ += other.emission_;
+  if (!has_tangent_ && other.has_tangent_) set_tangent(other.tangent_);
 }
 
 bool Closure::has_non_delta_lobes() const {

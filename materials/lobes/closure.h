@@ -22,10 +22,22 @@ class Closure {
   // Adds a lobe with its weight; lobes with zero weight are dropped, equal lobes are not merged.
   void add_lobe(const Lobe* lobe, const SampledSpectrum& weight);
   void add_emission(const SampledSpectrum& radiance) { emission_ += radiance; }
+  void set_emission(const SampledSpectrum& radiance) { emission_ = radiance; }
   // Multiplies every lobe weight and the emission (closure scale).
   void scale(const SampledSpectrum& s);
   // this = this + other (closure add).
   void append(const Closure& other);
+
+  // Anisotropic lobes (V-grooves) are defined relative to a tangent direction: the first such closure
+  // sets it (world space) and its lobe's axis is local x; the renderer takes the x axis of the shading
+  // frame from it (the tangent projected onto the tangent plane). Later anisotropic closures express
+  // their own axis relative to this one.
+  void set_tangent(const Vec3& world_tangent) {
+    tangent_ = world_tangent;
+    has_tangent_ = true;
+  }
+  bool has_tangent() const { return has_tangent_; }
+  const Vec3& tangent() const { return tangent_; }
 
   int lobe_count() const { return count_; }
   const WeightedLobe& lobe(int i) const { return lobes_[i]; }
@@ -60,6 +72,8 @@ class Closure {
   std::array<WeightedLobe, kMaxLobes> lobes_{};
   int count_ = 0;
   SampledSpectrum emission_;
+  Vec3 tangent_;
+  bool has_tangent_ = false;
 };
 
 }  // namespace ochre

@@ -30,6 +30,18 @@ FresnelAmplitudes<T> amplitudes(T cos_i, std::complex<T> eta, bool real_index) {
     a.cos_t = cos_i;
     return a;
   }
+  if (std::norm(eta) < T(1e-30)) {  // |eta| < 1e-15
+    // The limit eta -> 0 (n = k = 0, or NaN inputs made 0): 1 / eta^2 would overflow. eta cos_t -> -i sin_i
+    // (the branch above), so r_s -> (cos_i + i sin_i) / (cos_i - i sin_i) and r_p -> -1: everything is
+    // reflected and nothing crosses.
+    const std::complex<T> e_i(cos_i, std::sqrt(std::max(T(0), T(1) - cos_i * cos_i)));
+    a.r_s = e_i / std::conj(e_i);
+    a.r_p = T(-1);
+    a.t_s = a.t_p = 0;
+    a.cos_t = 0;
+    a.total_internal_reflection = real_index;
+    return a;
+  }
   a.cos_t = transmitted_cosine(cos_i, eta);
   a.r_s = (cos_i - eta * a.cos_t) / (cos_i + eta * a.cos_t);
   a.r_p = (eta * cos_i - a.cos_t) / (eta * cos_i + a.cos_t);

@@ -2,7 +2,7 @@
 // Fresnel equations: complex amplitude coefficients, scalar reflectances and the Mueller matrices of
 // a specular reflection and refraction (docs/polarization.md, "Fresnel and Mueller matrices").
 //
-// Conventions (those of ../shared/notes/polarization.md, i.e. Mitsuba 3's):
+// Conventions (docs/polarization.md, 'Conventions'; they are Mitsuba 3's):
 // - eta is the RELATIVE index n_transmitted / n_incident. cos_i >= 0 is the incidence cosine on the
 //   incident side. The dielectric functions also accept cos_i < 0, meaning "incident from the other
 //   side": they use |cos_i| and 1 / eta (pbrt's and Mitsuba's convention).

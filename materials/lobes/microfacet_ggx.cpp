@@ -4,10 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "spectra/non_finite.h"
+
 namespace ochre {
 
 GgxDistribution::GgxDistribution(float alpha_x, float alpha_y)
-    : ax_(std::max(alpha_x, kMinAlpha)), ay_(std::max(alpha_y, kMinAlpha)) {}
+    : ax_(nan_safe_clamp(alpha_x, kMinAlpha, kMaxAlpha)),
+      ay_(nan_safe_clamp(alpha_y, kMinAlpha, kMaxAlpha)) {}
 
 float GgxDistribution::d(const Vec3& m) const {
   if (m.z <= 0.0f) return 0.0f;

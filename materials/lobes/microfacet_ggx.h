@@ -15,8 +15,10 @@ namespace ochre {
 
 class GgxDistribution {
  public:
-  // Roughnesses below kMinAlpha are raised to it (a numerically safe, visually smooth lobe).
+  // Roughnesses below kMinAlpha are raised to it (a numerically safe, visually smooth lobe); NaN counts as
+  // kMinAlpha. Above kMaxAlpha alpha^2 would overflow in the sampling: such roughnesses are lowered to it.
   static constexpr float kMinAlpha = 1e-4f;
+  static constexpr float kMaxAlpha = 1e15f;
 
   GgxDistribution(float alpha_x, float alpha_y);
   explicit GgxDistribution(float alpha) : GgxDistribution(alpha, alpha) {}

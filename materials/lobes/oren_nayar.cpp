@@ -4,10 +4,14 @@
 #include <cmath>
 
 #include "materials/lobes/cosine_lobe_sampling.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
-OrenNayarLobe::OrenNayarLobe(float sigma) {
+OrenNayarLobe::OrenNayarLobe(float sigma_radians) {
+  // Beyond 1e18 A and B have reached their limits 1/2 and 0.45 in float; s^2 must stay finite (inf / inf
+  // is NaN), and NaN counts as 0.
+  const float sigma = nan_safe_clamp(std::fabs(sigma_radians), 0.0f, 1e18f);
   const float s2 = sigma * sigma;
   a_ = 1.0f - 0.5f * s2 / (s2 + 0.33f);
   b_ = 0.45f * s2 / (s2 + 0.09f);

@@ -1,7 +1,10 @@
 #include "materials/nodes/json_literal.h"
 
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
+
+#include "materials/core/single_precision.h"
 
 namespace ochre {
 
@@ -11,8 +14,11 @@ float finite_number(const nlohmann::json& j, const char* what) {
   if (!j.is_number())
     throw std::invalid_argument(std::string(what) + " must be numbers, got " + json_excerpt(j));
   const double x = j.get<double>();
-  if (!std::isfinite(x) || !std::isfinite(static_cast<float>(x)))
-    throw std::invalid_argument("NaN or infinite value " + json_excerpt(j));
+  if (!std::isfinite(static_cast<float>(x)))
+    throw std::invalid_argument("NaN or infinite value " + json_excerpt(j) +
+                                (std::isfinite(x) ? " (infinite in single precision)" : ""));
+  if (const std::string problem = single_precision_problem(x); !problem.empty())
+    throw std::invalid_argument("value " + json_excerpt(j) + " underflows (" + problem + ")");
   return static_cast<float>(x);
 }
 
@@ -43,6 +49,23 @@ std::string json_excerpt(const nlohmann::json& j) {
   constexpr size_t kMax = 60;
   if (text.size() > kMax) text = text.substr(0, kMax - 3) + "...";
   return text;
+}
+
+namespace {
+template <class Number>
+std::string shortest_text(Number x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof(text), x).ptr;
+  return std::string(text, end);
+}
+}  // namespace
+
+std::string number_text(double x) {
+  return shortest_text(x);
+}
+
+std::string number_text(float x) {
+  return shortest_text(x);
 }
 
 }  // namespace ochre

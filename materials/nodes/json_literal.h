@@ -18,5 +18,8 @@ std::optional<NodeValue> literal_value(const nlohmann::json& j);
 
 // The scene text of a JSON value, shortened for messages.
 std::string json_excerpt(const nlohmann::json& j);
+// The shortest text that reads back as `x` ("1e-50", "0.1", "179"), for messages.
+std::string number_text(double x);
+std::string number_text(float x);
 
 }  // namespace ochre

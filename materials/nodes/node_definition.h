@@ -141,8 +141,9 @@ struct NodeDefinition {
   // Run-time function: `eval`, or for polymorphic nodes the one select() picks.
   NodeFn eval = nullptr;
   NodeFn (*select)(const TypeResolution& types) = nullptr;
-  // Closure leaves: what they can produce given their (possibly constant) inputs.
-  ClosureTraits (*closure_traits)(std::span<const InputView> inputs) = nullptr;
+  // Closure leaves: what they can produce given their (possibly constant) inputs and their prepared
+  // payload (parameters such as a polarization model).
+  ClosureTraits (*closure_traits)(std::span<const InputView> inputs, const void* payload) = nullptr;
 
   int input_index(std::string_view socket) const;   // -1 when absent
   int output_index(std::string_view socket) const;  // -1 when absent

@@ -4,13 +4,14 @@
 #include <algorithm>
 
 #include "materials/nodes/math_node_types.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
 namespace {
 
 float clamped_factor(const NodeArgs& a) {
-  return std::clamp(a.in_float(2), 0.0f, 1.0f);
+  return nan_safe_clamp(a.in_float(2), 0.0f, 1.0f);
 }
 
 void mix_float(const NodeArgs& a) {

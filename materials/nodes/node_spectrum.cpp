@@ -1,5 +1,5 @@
-// spectrum(file | name, column, scale): a tabulated or named spectrum, built once at compile time
-// (the node is always folded: its consumers sample the pre-built spectrum).
+// spectrum(file | name, column, extrapolate, scale): a tabulated or named spectrum, built once at compile
+// time (the node is always folded: its consumers sample the pre-built spectrum).
 
 #include <memory>
 
@@ -16,7 +16,11 @@ SpectrumPtr load(const PrepareArgs& args, bool from_file) {
     if (!from_file) return spectrum_by_name(args.params.at("name").get<std::string>());
     const std::string column =
         args.params.contains("column") ? args.params.at("column").get<std::string>() : "";
-    return spectrum_from_file(args.params.at("file").get<std::string>(), column, args.resolver);
+    const TableExtrapolation extrapolation = args.params.contains("extrapolate")
+                                                 ? table_extrapolation(args.params.at("extrapolate"))
+                                                 : TableExtrapolation::kClamp;
+    return spectrum_from_file(args.params.at("file").get<std::string>(), column, args.resolver,
+                              extrapolation);
   } catch (const std::runtime_error& e) {
     throw NodeError(from_file ? "file" : "name", e.what());
   }
@@ -25,8 +29,9 @@ SpectrumPtr load(const PrepareArgs& args, bool from_file) {
 Prepared prepare_spectrum(const PrepareArgs& args) {
   const bool has_file = args.params.contains("file"), has_name = args.params.contains("name");
   if (has_file == has_name) throw NodeError(has_file ? "name" : "", "give exactly one of 'file' and 'name'");
-  if (has_name && args.params.contains("column"))
-    throw NodeError("column", "'column' applies to 'file' only");
+  for (const char* file_only : {"column", "extrapolate"})
+    if (has_name && args.params.contains(file_only))
+      throw NodeError(file_only, std::string("'") + file_only + "' applies to 'file' only");
 
   SpectrumPtr s = load(args, has_file);
   const float scale = args.params.contains("scale") ? args.params.at("scale").get<float>() : 1.0f;
@@ -42,6 +47,15 @@ ParamDef string_param(const char* name, const char* doc) {
   p.name = name;
   p.kind = ParamKind::kString;
   p.doc = doc;
+  return p;
+}
+
+// Outside the CSV table: hold the end values or give 0 (docs/scene-format.md, 'Spectra').
+ParamDef extrapolate_param() {
+  ParamDef p = string_param(
+      "extrapolate",
+      "outside the CSV table: \"clamp\" (default) holds the end values, \"zero\" gives 0 (file only)");
+  p.choices = {"clamp", "zero"};
   return p;
 }
 
@@ -64,7 +78,7 @@ NodeDefinition spectrum_node() {
               string_param("column",
                            "value column of the CSV file, by header name (default: the first after "
                            "the wavelength)"),
-              scale};
+              extrapolate_param(), scale};
   d.outputs = {{"spectrum", SocketType::kSpectrum, false, "the spectrum"}};
   d.prepare = prepare_spectrum;
   return d;

@@ -1,9 +1,12 @@
 #include "materials/nodes/spectrum_source.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
+#include "materials/core/single_precision.h"
 #include "materials/graph/resource_resolver.h"
+#include "materials/nodes/json_literal.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"
 #include "spectra/named_spectra.h"
@@ -21,19 +24,32 @@ SpectrumPtr spectrum_by_name(const std::string& name) {
 }
 
 SpectrumPtr spectrum_from_file(const std::string& file, const std::string& column,
-                               const ResourceResolver& resolver) {
+                               const ResourceResolver& resolver, TableExtrapolation extrapolation) {
   const std::filesystem::path path = resolver.resolve(file);
   try {
-    return column.empty() ? load_spectrum_csv(path) : load_spectrum_csv(path, std::string_view(column));
+    return column.empty() ? load_spectrum_csv(path, std::size_t{1}, extrapolation)
+                          : load_spectrum_csv(path, std::string_view(column), extrapolation);
   } catch (const std::exception& e) {
     // The loaders name the file already, but say which one the scene meant in every case.
     throw std::runtime_error("cannot load spectrum file '" + path.string() + "': " + e.what());
   }
 }
 
+TableExtrapolation table_extrapolation(const nlohmann::json& value) {
+  const std::optional<TableExtrapolation> e =
+      value.is_string() ? table_extrapolation_from_name(value.get<std::string>()) : std::nullopt;
+  if (!e) throw std::runtime_error("'extrapolate' must be \"clamp\" or \"zero\", got " + value.dump());
+  return *e;
+}
+
 SpectrumPtr blackbody_unit_luminance(double kelvin) {
   auto planck = std::make_shared<BlackbodySpectrum>(static_cast<float>(kelvin));
-  return std::make_shared<ScaledSpectrum>(planck, 1.0f / spectrum_to_xyz(*planck).y);
+  const float luminance = spectrum_to_xyz(*planck).y;
+  // Below a few hundred kelvin the visible part of Planck's law underflows single precision.
+  if (!(luminance > 0.0f) || !std::isfinite(1.0f / luminance))
+    throw std::invalid_argument("a blackbody at " + number_text(kelvin) +
+                                " K emits no visible light in single precision");
+  return std::make_shared<ScaledSpectrum>(planck, 1.0f / luminance);
 }
 
 bool is_spectrum_object(const nlohmann::json& j) {
@@ -49,8 +65,11 @@ std::string string_field(const nlohmann::json& j, const char* key) {
 
 double number_field(const nlohmann::json& j, const char* key) {
   const nlohmann::json& v = j.at(key);
-  if (!v.is_number() || !std::isfinite(v.get<double>()))
-    throw SpectrumObjectError(key, std::string("'") + key + "' must be a finite number, got " + v.dump());
+  if (!v.is_number())
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be a number, got " + json_excerpt(v));
+  if (const std::string problem = single_precision_problem(v.get<double>()); !problem.empty())
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be a finite number (got " +
+                                       json_excerpt(v) + ", " + problem + ")");
   return v.get<double>();
 }
 
@@ -61,14 +80,17 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   if (kinds != 1)
     throw SpectrumObjectError(
         "",
-        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...]} "
-        "or {\"blackbody\": kelvin}, with an optional \"scale\"");
+        "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...][, "
+        "\"extrapolate\": \"clamp\"|\"zero\"]} or {\"blackbody\": kelvin}, with an optional \"scale\"");
   for (const auto& [key, value] : j.items())
-    if (key != "name" && key != "file" && key != "column" && key != "blackbody" && key != "scale")
+    if (key != "name" && key != "file" && key != "column" && key != "extrapolate" && key != "blackbody" &&
+        key != "scale")
       throw SpectrumObjectError(
-          key, "unknown key '" + key + "' in a spectrum (known: name, file, column, blackbody, scale)");
-  if (j.contains("column") && !j.contains("file"))
-    throw SpectrumObjectError("column", "'column' needs 'file'");
+          key, "unknown key '" + key +
+                   "' in a spectrum (known: name, file, column, extrapolate, blackbody, scale)");
+  for (const char* file_only : {"column", "extrapolate"})
+    if (j.contains(file_only) && !j.contains("file"))
+      throw SpectrumObjectError(file_only, std::string("'") + file_only + "' needs 'file'");
 
   SpectrumPtr base;
   if (j.contains("name")) {
@@ -82,12 +104,25 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   } else if (j.contains("blackbody")) {
     const double kelvin = number_field(j, "blackbody");
     if (!(kelvin > 0.0) || kelvin > 1e6)
-      throw SpectrumObjectError("blackbody", "temperature must be in (0, 1e6] K");
-    base = blackbody_unit_luminance(kelvin);
+      throw SpectrumObjectError("blackbody",
+                                "temperature must be in (0, 1e6] K (got " + number_text(kelvin) + ")");
+    try {
+      base = blackbody_unit_luminance(kelvin);
+    } catch (const std::invalid_argument& e) {
+      throw SpectrumObjectError("blackbody", e.what());
+    }
   } else {
     const std::string column = j.contains("column") ? string_field(j, "column") : "";
+    TableExtrapolation extrapolation = TableExtrapolation::kClamp;
+    if (j.contains("extrapolate")) {
+      try {
+        extrapolation = table_extrapolation(j.at("extrapolate"));
+      } catch (const std::runtime_error& e) {
+        throw SpectrumObjectError("extrapolate", e.what());
+      }
+    }
     try {
-      base = spectrum_from_file(string_field(j, "file"), column, resolver);
+      base = spectrum_from_file(string_field(j, "file"), column, resolver, extrapolation);
     } catch (const SpectrumObjectError&) {
       throw;
     } catch (const std::exception& e) {
@@ -96,7 +131,8 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
   }
   if (!j.contains("scale")) return base;
   const double scale = number_field(j, "scale");
-  if (scale < 0.0) throw SpectrumObjectError("scale", "'scale' must be >= 0");
+  if (scale < 0.0)
+    throw SpectrumObjectError("scale", "'scale' must be >= 0 (got " + number_text(scale) + ")");
   return std::make_shared<ScaledSpectrum>(base, static_cast<float>(scale));
 }
 

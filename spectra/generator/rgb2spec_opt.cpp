@@ -44,7 +44,7 @@
 namespace {
 
 using ochre::Mat3;
-using ochre::Vec3d;
+using ochre::Array3d;
 
 constexpr double kLambdaMin = 360.0, kLambdaMax = 830.0;
 constexpr int kSamples = 471;  // 1 nm steps
@@ -59,7 +59,7 @@ constexpr double kLabTolerance = 1e-6;
 struct Observer {
   std::array<double, kSamples> t{};               // (lambda - 360) / 470
   std::array<double, kSamples> wx{}, wy{}, wz{};  // cmf(lambda) D65(lambda) / sum(D65 ybar)
-  Vec3d white{};                                  // XYZ of a perfect white, Y = 1
+  Array3d white{};                                  // XYZ of a perfect white, Y = 1
   Mat3 rgb_to_xyz;
 };
 
@@ -111,7 +111,7 @@ double lab_f_prime(double r) {
 }
 
 // Lab of an XYZ and, when wanted, d(Lab)/d(XYZ).
-Vec3d xyz_to_lab(const Vec3d& xyz, const Vec3d& white, Mat3* jacobian = nullptr) {
+Array3d xyz_to_lab(const Array3d& xyz, const Array3d& white, Mat3* jacobian = nullptr) {
   const double fx = lab_f(xyz[0] / white[0]), fy = lab_f(xyz[1] / white[1]), fz = lab_f(xyz[2] / white[2]);
   if (jacobian) {
     const double dx = lab_f_prime(xyz[0] / white[0]) / white[0],
@@ -124,13 +124,13 @@ Vec3d xyz_to_lab(const Vec3d& xyz, const Vec3d& white, Mat3* jacobian = nullptr)
 
 // ------------------------------------------------------------------ one cell
 struct Evaluation {
-  Vec3d lab;
+  Array3d lab;
   Mat3 jacobian;  // d(Lab) / d(c0, c1, c2)
 };
 
 // Lab of the sigmoid spectrum with coefficients c (normalized wavelength) and its derivatives:
 // dS/dp = 1 / (2 (1 + p^2)^(3/2)), dp/dc = (t^2, t, 1).
-Evaluation evaluate(const Observer& o, const Vec3d& c) {
+Evaluation evaluate(const Observer& o, const Array3d& c) {
   double x = 0, y = 0, z = 0;
   std::array<double, 3> dx{}, dy{}, dz{};
   for (int i = 0; i < kSamples; ++i) {
@@ -149,12 +149,12 @@ Evaluation evaluate(const Observer& o, const Vec3d& c) {
   return e;
 }
 
-double distance(const Vec3d& a, const Vec3d& b) {
+double distance(const Array3d& a, const Array3d& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                    (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-Vec3d limit_magnitude(Vec3d c) {
+Array3d limit_magnitude(Array3d c) {
   const double m = std::max({std::abs(c[0]), std::abs(c[1]), std::abs(c[2])});
   if (m > kMaxCoefficient)
     for (double& v : c) v *= kMaxCoefficient / m;
@@ -162,16 +162,16 @@ Vec3d limit_magnitude(Vec3d c) {
 }
 
 // Newton iterations from c towards the colour `target_lab`; returns the final CIE76 error.
-double solve_cell(const Observer& o, const Vec3d& target_lab, Vec3d& c) {
+double solve_cell(const Observer& o, const Array3d& target_lab, Array3d& c) {
   Evaluation e = evaluate(o, c);
   double error = distance(e.lab, target_lab);
   for (int it = 0; it < kMaxIterations && error > kLabTolerance; ++it) {
     if (std::abs(e.jacobian.determinant()) < 1e-300) break;
-    const Vec3d r{target_lab[0] - e.lab[0], target_lab[1] - e.lab[1], target_lab[2] - e.lab[2]};
-    const Vec3d step = e.jacobian.inverse() * r;
+    const Array3d r{target_lab[0] - e.lab[0], target_lab[1] - e.lab[1], target_lab[2] - e.lab[2]};
+    const Array3d step = e.jacobian.inverse() * r;
     bool improved = false;
     for (double alpha = 1.0; alpha > 1e-4 && !improved; alpha *= 0.5) {
-      const Vec3d trial =
+      const Array3d trial =
           limit_magnitude({c[0] + alpha * step[0], c[1] + alpha * step[1], c[2] + alpha * step[2]});
       const Evaluation et = evaluate(o, trial);
       const double et_error = distance(et.lab, target_lab);
@@ -211,9 +211,9 @@ class Generator {
   Table run(int threads) {
     const int res = table_.res;
     // Seeds along the grey edge x = 1, for each y, at k_start: walking from the grey corner.
-    seeds_.assign(std::size_t(3) * res, Vec3d{});
+    seeds_.assign(std::size_t(3) * res, Array3d{});
     for (int l = 0; l < 3; ++l) {
-      Vec3d c{0, 0, 0};
+      Array3d c{0, 0, 0};
       for (int j = res - 1; j >= 0; --j) {
         solve_at(l, k_start_, j, res - 1, c);
         seeds_[std::size_t(l) * res + j] = c;
@@ -230,15 +230,15 @@ class Generator {
   }
 
  private:
-  Vec3d rgb_of(int l, int k, int j, int i) const {
+  Array3d rgb_of(int l, int k, int j, int i) const {
     const double z = table_.scale[k], x = i / double(table_.res - 1), y = j / double(table_.res - 1);
-    Vec3d rgb;
+    Array3d rgb;
     rgb[l] = z, rgb[(l + 1) % 3] = x * z, rgb[(l + 2) % 3] = y * z;
     return rgb;
   }
 
-  void solve_at(int l, int k, int j, int i, Vec3d& c) {
-    const Vec3d target = xyz_to_lab(o_.rgb_to_xyz * rgb_of(l, k, j, i), o_.white);
+  void solve_at(int l, int k, int j, int i, Array3d& c) {
+    const Array3d target = xyz_to_lab(o_.rgb_to_xyz * rgb_of(l, k, j, i), o_.white);
     const double error = solve_cell(o_, target, c);
     store(l, k, j, i, c, error);
   }
@@ -246,10 +246,10 @@ class Generator {
   // All cells of one (l, y) row: along x from the seed, then along z from each x's start cell.
   void solve_row(int l, int j) {
     const int res = table_.res;
-    Vec3d along_x = seeds_[std::size_t(l) * res + j];
+    Array3d along_x = seeds_[std::size_t(l) * res + j];
     for (int i = res - 1; i >= 0; --i) {
       solve_at(l, k_start_, j, i, along_x);
-      Vec3d c = along_x;
+      Array3d c = along_x;
       for (int k = k_start_ + 1; k < res; ++k) solve_at(l, k, j, i, c);
       c = along_x;
       for (int k = k_start_ - 1; k >= 0; --k) solve_at(l, k, j, i, c);
@@ -257,7 +257,7 @@ class Generator {
   }
 
   // Converts t-coefficients to lambda-in-nm coefficients: t = (lambda - 360) / 470.
-  void store(int l, int k, int j, int i, const Vec3d& c, double error) {
+  void store(int l, int k, int j, int i, const Array3d& c, double error) {
     const double w = kLambdaMax - kLambdaMin, a = kLambdaMin;
     const double c0 = c[0] / (w * w), c1 = c[1] / w - 2 * c[0] * a / (w * w),
                  c2 = c[0] * a * a / (w * w) - c[1] * a / w + c[2];
@@ -270,7 +270,7 @@ class Generator {
   const Observer& o_;
   Table table_;
   int k_start_ = 0;
-  std::vector<Vec3d> seeds_;
+  std::vector<Array3d> seeds_;
 };
 
 void write_table(const Table& t, const std::filesystem::path& output) {

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "support/text_files.h"  // write_text for the tests' scenes
+
 namespace ochre::test {
 
 struct CommandResult {
@@ -21,8 +23,5 @@ CommandResult run_tool(const std::string& tool, const std::string& args,
 inline CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {}) {
   return run_tool("ochre", args, working_dir);
 }
-
-// Writes `text` to `path` (creating directories).
-void write_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace ochre::test

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
@@ -16,36 +17,6 @@ namespace {
 
 const char* kGoodMaterials = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
 const char* kGoodShapes = R"("shapes": [{"type": "plane", "material": "grey"}])";
-
-std::string scene_text(const std::string& materials, const std::string& shapes,
-                       const std::string& extra = "") {
-  return fmt::format(R"({{"film": {{"resolution": [8, 8]}}, "integrator": {{"spp": 1}}, {}{}, {}, )"
-                     R"("lights": [{{"type": "environment", "radiance": 1}}]}})",
-                     extra, materials, shapes);
-}
-
-struct BadCase {
-  std::string name;
-  std::string scene;
-  std::vector<std::string> expected;  // substrings of the error message
-};
-
-void expect_rejected(const BadCase& c) {
-  const auto dir = scratch_dir();
-  write_text(dir / "scene.json", c.scene);
-  const CommandResult r = run_ochre("render scene.json -o out.exr --png out.png", dir);
-  EXPECT_EQ(r.exit_code, 2) << c.name << "\n" << r.output;
-  EXPECT_NE(r.output.find("scene.json"), std::string::npos) << c.name << ": message must name the file\n"
-                                                            << r.output;
-  for (const std::string& s : c.expected)
-    EXPECT_NE(r.output.find(s), std::string::npos) << c.name << ": message must contain '" << s << "'\n"
-                                                   << r.output;
-  EXPECT_FALSE(std::filesystem::exists(dir / "out.exr")) << c.name;
-  EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << c.name;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
-        << "temporary file left behind";
-}
 
 TEST(BadInput, MalformedJson) {
   expect_rejected(

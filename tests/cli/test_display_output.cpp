@@ -1,5 +1,6 @@
 // Display output through OpenColorIO from the command line: the built-in config, the no-OCIO
-// fallback, and the ACES cg config of ../shared (skipped when ../shared is absent).
+// fallback, and the ACES cg config of the optional external assets folder (docs/validation.md; skipped
+// when the folder is absent).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

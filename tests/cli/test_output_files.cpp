@@ -207,5 +207,73 @@ TEST(OutputFiles, JunitReportOfOchreRegressThatIsAScene) {
   EXPECT_TRUE(snapshot(dir / "suite" / "plane.json") == scene);
 }
 
+// ochre-vgroove reads no file: its outputs are checked for links, devices, FIFOs and each other.
+TEST(OutputFiles, OutputsOfOchreVGroove) {
+  const fs::path dir = scratch_dir();
+  write_old_file(dir / "target.png", "keep me");
+  fs::create_symlink("target.png", dir / "link.png");
+  make_fifo(dir / "pipe.png");
+  const FileSnapshot target = snapshot(dir / "target.png");
+  const std::string maps = "maps --material glass --alpha 45 --size 8 ";
+  const std::string profile = "profile --material Si --alpha 45 --step 10 ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {maps + "-o m.png --counts ./m.png", "cannot write ./m.png: it is also given as output m.png"},
+      {maps + "-o link.png", "cannot write link.png: it is a symbolic link to target.png"},
+      {maps + "-o m.png --counts pipe.png", "cannot write pipe.png: it is a FIFO, not a regular file"},
+      {maps + "-o /dev/null", "cannot write /dev/null: it is a character device, not a regular file"},
+      {profile + "-o p.csv --png p.csv", "cannot write p.csv: it is also given as output p.csv"},
+      {profile + "-o link.png", "cannot write link.png: it is a symbolic link to target.png"},
+  };
+  for (const auto& [args, why] : cases) {
+    const CommandResult r = run_tool("ochre-vgroove", args, dir, false, kTimeout);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, why)) << args << ": message must say '" << why << "'\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir / "m.png")) << args;
+    EXPECT_FALSE(fs::exists(dir / "p.csv")) << args;
+    EXPECT_TRUE(temporaries_in(dir).empty()) << args;
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "link.png"));
+  EXPECT_TRUE(snapshot(dir / "target.png") == target);
+  EXPECT_EQ(fs::status(dir / "pipe.png").type(), fs::file_type::fifo);
+}
+
+// A copy of ochre-vgroove in an installed tree whose plot script fails (the tools look in
+// share/ochre/scripts first, tools/tool_files.h): the plot fails after the other outputs were written.
+fs::path vgroove_with_failing_plot(const fs::path& root) {
+  fs::create_directories(root / "bin");
+  fs::copy_file(bin_dir() / "ochre-vgroove", root / "bin" / "ochre-vgroove");
+  fs::permissions(root / "bin" / "ochre-vgroove", fs::perms::owner_all);
+  write_text(root / "share" / "ochre" / "scripts" / "plot_vgroove.py", "import sys\nsys.exit(1)\n");
+  return root / "bin" / "ochre-vgroove";  // absolute: run_tool's bin_dir() / tool is then this path
+}
+
+TEST(OutputFiles, OchreVGrooveWritesItsOutputsAllOrNothing) {
+  const fs::path dir = scratch_dir();
+  write_old_file(dir / "m.png", "old map");
+  write_old_file(dir / "c.png", "old counts");
+  CommandResult r =
+      run_tool("ochre-vgroove", "maps --material glass --alpha 45 --size 8 -o m.png --counts c.png", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(snapshot(dir / "m.png").bytes, "old map");
+  EXPECT_NE(snapshot(dir / "c.png").bytes, "old counts");
+
+  const fs::path tool = vgroove_with_failing_plot(dir / "tree");
+  write_old_file(dir / "p.csv", "old profile");
+  const FileSnapshot csv = snapshot(dir / "p.csv");
+  r = run_tool(tool.string(), "profile --material Si --alpha 45 --step 10 -o p.csv --png p.png", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_TRUE(contains(r.output, "p.csv and p.png not written")) << r.output;
+  EXPECT_TRUE(snapshot(dir / "p.csv") == csv) << "the CSV is replaced only with its plot";
+  EXPECT_FALSE(fs::exists(dir / "p.png"));
+
+  const FileSnapshot map = snapshot(dir / "m.png"), counts = snapshot(dir / "c.png");
+  r = run_tool(tool.string(), "maps --material glass,Au --alpha 45 --size 8 -o m.png --counts c.png", dir);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_TRUE(snapshot(dir / "m.png") == map);
+  EXPECT_TRUE(snapshot(dir / "c.png") == counts);
+  EXPECT_TRUE(temporaries_in(dir).empty()) << "no temporary and no panel directory is left";
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 4) << "m, c, p.csv, tree";
+}
+
 }  // namespace
 }  // namespace ochre::test

@@ -1,4 +1,4 @@
-// Rendered polarization (issue 4): filters on lights and on the camera, Malus's law, the camera's Stokes
+// Rendered polarization: filters on lights and on the camera, Malus's law, the camera's Stokes
 // frame, depolarizing surfaces between crossed polarizers, and the consistency of the modes.
 
 #include <fmt/format.h>
@@ -308,8 +308,9 @@ std::string json(const V3& v) {
 // A 90-degree V-groove of two smooth silicon facets (n = 4.073, k = 0.028) along the x axis, seen at
 // theta from the normal looking along the groove under a constant white environment: every ray is
 // reflected exactly twice and its middle segment is horizontal. `degrees` turns the whole scene (camera
-// included) about a generic axis. ../shared/notes/polarization.md: the exact reflectance is 0.1242 at
-// theta = 30 deg and 0.0188 at 63 deg (Mitsuba 3 renders 0.1624 and 0.1488 here, from a basis flip).
+// included) about a generic axis. The exact reflectance is 0.1242 at theta = 30 deg and 0.0188 at 63 deg
+// (Mitsuba 3 renders 0.1624 and 0.1488 here, from a basis flip: docs/polarization.md, 'Discontinuous
+// reference frames').
 std::string groove_scene(double theta_degrees, double degrees) {
   const V3 axis{0.267261242, 0.534522484, 0.801783726};  // (1, 2, 3) / sqrt(14)
   const double t = theta_degrees * kPi / 180.0;

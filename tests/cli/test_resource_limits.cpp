@@ -103,15 +103,34 @@ TEST(ResourceLimits, SubdivisionWithinAndBeyondTheMemoryLimit) {
   EXPECT_EQ(render(dir, "--memory-limit 1G").exit_code, 0);
 }
 
-TEST(ResourceLimits, SphereTessellationBeyondTheMemoryLimit) {
+// Renders a scene of the one shape `shape` (JSON) under --memory-limit `limit`, expecting the refusal.
+void expect_shape_refused(const std::string& shape, const std::string& limit, const std::string& message) {
   const fs::path dir = scratch_dir();
-  write_text(
-      dir / "scene.json",
-      minimal_scene("", R"("shapes": [{"type": "sphere", "subdivisions": 4096, "material": "grey"}])"));
-  expect_refused(
-      dir, "--memory-limit 1G",
-      {"scene.json: shapes[0].subdivisions: a sphere of 67092480 triangles needs 9.4 GiB; the memory "
-       "limit (--memory-limit) is 1 GiB"});
+  write_text(dir / "scene.json", minimal_scene("", R"("shapes": [)" + shape + "]"));
+  expect_refused(dir, "--memory-limit " + limit, {message});
+}
+
+TEST(ResourceLimits, SphereTessellationBeyondTheMemoryLimit) {
+  expect_shape_refused(
+      R"({"type": "sphere", "subdivisions": 4096, "material": "grey"})", "1G",
+      "scene.json: shapes[0].subdivisions: a sphere of 67092480 triangles needs 9.4 GiB; the "
+      "memory limit (--memory-limit) is 1 GiB");
+}
+
+// Groove shapes: estimated like the sphere; a grooved cylinder of 2^33 triangles is refused for its 32-bit
+// indices even when the memory limit would admit it (its groove count, 2^21, is computed, never wrapped).
+TEST(ResourceLimits, GrooveShapesBeyondTheMemoryLimitOrTheIndexRange) {
+  expect_shape_refused(R"({"type": "groove_plate", "count": 4194304, "material": "grey"})", "1G",
+                       "scene.json: shapes[0].count: a groove plate of 16777216 triangles needs 2.3 GiB; the "
+                       "memory limit (--memory-limit) is 1 GiB");
+  expect_shape_refused(R"({"type": "cylinder", "segments": 1048576, "material": "grey"})", "100M",
+                       "scene.json: shapes[0].segments: a cylinder of 2097152 triangles needs 300 MiB");
+  const std::string grooved =
+      R"({"type": "grooved_cylinder", "height": 2097152, "pitch": 1, "segments": 1024, "material": "grey"})";
+  expect_shape_refused(grooved, "1G",
+                       "scene.json: shapes[0]: a grooved cylinder of 2097152 grooves x 1024 segments "
+                       "(8589934592 triangles) needs 1.2 TiB; the memory limit (--memory-limit) is 1 GiB");
+  expect_shape_refused(grooved, "2000T", "(8589934592 triangles): more than 2^31 triangles");
 }
 
 TEST(ResourceLimits, TextureBeyondTheMemoryLimit) {

@@ -1,5 +1,5 @@
-// Fresnel amplitudes, reflectances and Mueller matrices against ../shared/notes/polarization.md
-// (values from Mitsuba 3's test suite, reproduced independently) and analytic limits.
+// Fresnel amplitudes, reflectances and Mueller matrices against the check values of
+// docs/polarization.md (those of Mitsuba 3's test suite) and analytic limits.
 
 #include "materials/lobes/fresnel.h"
 
@@ -168,6 +168,25 @@ TEST(Fresnel, ConductorWithZeroKIsTheDielectric) {
       expect_mueller(specular_reflection(c, std::complex<float>(eta, 0.0f)), specular_reflection(c, eta),
                      1e-6f);
     }
+}
+
+// n = k = 0 (a constant of 0, or a NaN made 0) would divide by eta^2: the limit eta -> 0 reflects
+// everything, and the amplitudes there agree with a tiny index computed by the general formulas.
+TEST(Fresnel, VanishingConductorIndexReflectsEverything) {
+  for (float c : {0.0f, 1e-7f, 0.3f, 0.7f, 1.0f}) {
+    for (float tiny : {0.0f, 1e-20f, 1e-16f}) {
+      EXPECT_EQ(fresnel_conductor(c, tiny, 0.0f), 1.0f) << c << " " << tiny;
+      EXPECT_EQ(fresnel_conductor(c, 0.0f, tiny), 1.0f) << c << " " << tiny;
+    }
+    const auto limit = fresnel_amplitudes(double(c), std::complex<double>(0.0));
+    const auto near = fresnel_amplitudes(double(c), std::complex<double>(1e-7, 0.0));
+    EXPECT_NEAR(std::abs(limit.r_s - near.r_s), 0.0, 1e-6) << c;
+    EXPECT_NEAR(std::abs(limit.r_p - near.r_p), 0.0, 1e-6) << c;
+    const Mueller m = specular_reflection(c, std::complex<float>(0.0f));
+    for (int r = 0; r < 4; ++r)
+      for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isfinite(m(r, k)));
+    EXPECT_FLOAT_EQ(m(0, 0), 1.0f);
+  }
 }
 
 TEST(Fresnel, ReflectionPlusTransmissionIsOneOnBothSides) {

@@ -173,7 +173,7 @@ NodeRegistry registry_with_polarizer() {
   d.name = "test_polarizer";
   d.outputs = {{"closure", SocketType::kClosure, false, ""}};
   d.eval = [](const NodeArgs&) {};
-  d.closure_traits = [](std::span<const InputView>) {
+  d.closure_traits = [](std::span<const InputView>, const void*) {
     return ClosureTraits{kLobeReflection | kLobeDelta | kLobePolarizing, false};
   };
   r.add(d);

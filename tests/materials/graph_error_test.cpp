@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "material_test_support.h"
+#include "support/test_paths.h"
 
 namespace ochre::test {
 namespace {
@@ -231,6 +234,51 @@ TEST(GraphErrors, BadParameterValues) {
   expect_error_at(error_of(m, resolver), "t", "file", "missing required parameter");
 }
 
+// Integer parameters are range-checked as the JSON number, before any conversion could wrap them; a
+// boolean is not an integer.
+TEST(GraphErrors, IntegerParametersNeverWrap) {
+  StubResolver resolver;
+  resolver.add_texture("a.png", 3);
+  json m = json::parse(R"({"nodes": {"t": {"type": "texture", "file": "a.png"},
+                                     "d": {"type": "lambert", "color": {"link": "t.color"}}}, "output": "d"})");
+  for (const char* value : {"4294967297", "18446744073709551615", "1e300"}) {
+    m["nodes"]["t"]["channel"] = json::parse(value);
+    expect_error_at(error_of(m, resolver), "t", "channel", "32-bit integer");
+  }
+  m["nodes"]["t"]["channel"] = -1;
+  expect_error_at(error_of(m, resolver), "t", "channel", "below the minimum 0");
+  m["nodes"]["t"]["channel"] = true;
+  expect_error_at(error_of(m, resolver), "t", "channel", "expected an integer, got true");
+  expect_error_at(error_of(R"({"type": "dielectric", "opaque": true})"), "", "opaque", "expected an integer");
+  expect_error_at(error_of(R"({"type": "dielectric", "opaque": 4294967297})"), "", "opaque",
+                  "above the maximum 1");
+}
+
+// Numbers that are finite doubles but infinite or zero as floats.
+TEST(GraphErrors, NumbersOutsideSinglePrecision) {
+  expect_error_at(error_of(R"({"type": "lambert", "color": 1e-50})"), "", "color", "0 in single precision");
+  expect_error_at(error_of(R"({"type": "lambert", "color": [0.5, 1e-39, 0.5]})"), "", "color",
+                  "smallest normal");
+  expect_error_at(error_of(R"({"type": "emission", "strength": 1e39})"), "", "strength",
+                  "infinite in single precision");
+  expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "name": "D65", "scale": 1e39},
+                                         "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})"),
+                  "s", "scale", "infinite in single precision");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"name": "D65", "scale": 1e-50}})"), "", "color",
+                  "0 in single precision");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"blackbody": 1e-50}})"), "", "color",
+                  "0 in single precision");
+}
+
+// The first negative entry of a CSV named by its wavelength, in an emission colour.
+TEST(GraphErrors, NegativeEmissionSpectrumNamesTheWavelength) {
+  const auto dir = scratch_dir();
+  StubResolver resolver(dir);
+  std::ofstream(dir / "cross.csv") << "nm,value\n400,1\n480,0.2\n520,-0.1\n700,1\n";
+  expect_error_at(error_of(json::parse(R"({"type": "emission", "color": {"file": "cross.csv"}})"), resolver),
+                  "", "color", "-0.1 at 520 nm");
+}
+
 TEST(GraphErrors, MissingSpectrumFileNamesThePath) {
   StubResolver resolver("/data/scenes");
   expect_error_at(error_of(json::parse(R"({"type": "lambert", "color": {"file": "red.csv"}})"), resolver), "",
@@ -238,6 +286,23 @@ TEST(GraphErrors, MissingSpectrumFileNamesThePath) {
   const json m = json::parse(R"({"nodes": {"s": {"type": "spectrum", "file": "spd/lamp.csv"},
                                            "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})");
   expect_error_at(error_of(m, resolver), "s", "file", "/data/scenes/spd/lamp.csv");
+}
+
+TEST(GraphErrors, BadSpectrumExtrapolation) {
+  // Node parameter: one of the two names, and only with a file.
+  expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "file": "x.csv", "extrapolate": "none"},
+                                         "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})"),
+                  "s", "extrapolate", "'none' is not one of: clamp, zero");
+  expect_error_at(error_of(R"({"nodes": {"s": {"type": "spectrum", "name": "D65", "extrapolate": "zero"},
+                                         "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})"),
+                  "s", "extrapolate", "'extrapolate' applies to 'file' only");
+  // Spectrum literal: the same rules, named by the input.
+  expect_error_at(error_of(R"({"type": "emission", "color": {"file": "x.csv", "extrapolate": "none"}})"), "",
+                  "color", "'extrapolate' must be \"clamp\" or \"zero\", got \"none\"");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"file": "x.csv", "extrapolate": 0}})"), "",
+                  "color", "'extrapolate' must be \"clamp\" or \"zero\", got 0");
+  expect_error_at(error_of(R"({"type": "emission", "color": {"name": "D65", "extrapolate": "zero"}})"), "",
+                  "color", "'extrapolate' needs 'file'");
 }
 
 TEST(GraphErrors, UnknownSpectrumName) {

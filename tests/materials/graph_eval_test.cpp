@@ -290,6 +290,28 @@ TEST_F(GraphEval, SpectrumFromCsvFile) {
   EXPECT_FLOAT_EQ(d.lobe(0).weight[0], 0.1f);
 }
 
+// A table over 450-650 nm seen at 400, 500, 600 and 700 nm: the outer two are outside it.
+TEST_F(GraphEval, SpectrumFileExtrapolation) {
+  std::ofstream(resolver.resolve("lamp.csv")) << "nm,e\n450,2\n550,4\n650,6\n";
+  const SampledSpectrum held(2.0f, 3.0f, 5.0f, 6.0f), zero(0.0f, 3.0f, 5.0f, 0.0f);
+  for (const char* node : {R"({"type": "spectrum", "file": "lamp.csv"})",
+                           R"({"type": "spectrum", "file": "lamp.csv", "extrapolate": "clamp"})"}) {
+    const Closure& c = evaluate(R"({"nodes": {"s": )" + std::string(node) +
+                                R"(, "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})");
+    expect_spectrum_eq(c.emission(), held, 1e-6f);
+  }
+  const Closure& node = evaluate(R"({"nodes": {
+      "s": {"type": "spectrum", "file": "lamp.csv", "extrapolate": "zero"},
+      "e": {"type": "emission", "color": {"link": "s"}}}, "output": "e"})");
+  expect_spectrum_eq(node.emission(), zero, 1e-6f);
+  // The same choice on a spectrum literal.
+  const Closure& literal =
+      evaluate(R"({"type": "emission", "color": {"file": "lamp.csv", "extrapolate": "zero", "scale": 2}})");
+  expect_spectrum_eq(literal.emission(), 2.0f * zero, 1e-6f);
+  expect_spectrum_eq(evaluate(R"({"type": "emission", "color": {"file": "lamp.csv"}})").emission(), held,
+                     1e-6f);
+}
+
 TEST_F(GraphEval, ExampleGraphFromTheDocs) {
   std::ofstream(resolver.resolve("red.csv")) << "nm,r\n360,0.5\n830,0.5\n";
   resolver.add_texture("rock.jpg", 3);

@@ -1,5 +1,5 @@
-// Mueller algebra and elements: the check values of ../shared/notes/polarization.md ("Mueller
-// algebra", polarizer, retarders) and the frame-change rotator stokes_basis_rotation().
+// Mueller algebra and elements: the check values of docs/polarization.md (rotator, Malus,
+// depolarizer, polarizers, retarders) and the frame-change rotator stokes_basis_rotation().
 
 #include "materials/core/mueller.h"
 

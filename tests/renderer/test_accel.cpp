@@ -204,10 +204,10 @@ TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
       // Outward: a convex polyhedron cannot be hit again.
       Vec3 out = random.direction();
       if (dot(out, sp.ng) < 0) out = -out;
-      if (accel.occluded({offset_ray_origin(sp.p, sp.ng, out), out})) ++blocked_outward;
+      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, out), out})) ++blocked_outward;
       // Inward: must hit another triangle on the far side.
       const Vec3 in = -out;
-      const auto next = accel.intersect({offset_ray_origin(sp.p, sp.ng, in), in});
+      const auto next = accel.intersect({offset_ray_origin(sp.p, sp.p_error, sp.ng, in), in});
       if (!next) {
         ++escaped_inward;
       } else if (next->triangle == hit->triangle) {
@@ -222,12 +222,73 @@ TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
 
 TEST(Accel, OffsetIsTinyAndOnTheSideOfTheDirection) {
   const Vec3 p{100, -0.01f, 2};
-  const Vec3 up = offset_ray_origin(p, {0, 0, 3}, {0.2f, 0, 1});
-  const Vec3 down = offset_ray_origin(p, {0, 0, 3}, {0.2f, 0, -1});
-  EXPECT_GT(up.z, p.z);
-  EXPECT_LT(down.z, p.z);
+  const Vec3 error{3e-5f, 1e-8f, 1e-6f};
+  const Vec3 up = offset_ray_origin(p, error, {0, 0, 3}, {0.2f, 0, 1});
+  const Vec3 down = offset_ray_origin(p, error, {0, 0, 3}, {0.2f, 0, -1});
+  EXPECT_GT(up.z, p.z + 1e-6f * 0.99f);
+  EXPECT_LT(down.z, p.z - 1e-6f * 0.99f);
   EXPECT_EQ(up.x, p.x);  // no offset along axes where the normal is zero
-  EXPECT_LT(up.z - p.z, 1e-3f);
+  EXPECT_EQ(up.y, p.y);
+  EXPECT_LT(up.z - p.z, 1e-5f);
+}
+
+// A triangle in a coordinate plane has exact points (error bound 0 across the plane): the origin must
+// still leave the plane, or Embree finds the triangle again at t = 0.
+TEST(Accel, OffsetOriginsLeaveAxisAlignedPlanesThroughTheOrigin) {
+  for (float z : {0.0f, 5.0f}) {
+    Mesh plane;
+    plane.positions = {{-20, -20, z}, {20, -20, z}, {20, 20, z}, {-20, 20, z}};
+    plane.indices = {0, 1, 2, 0, 2, 3};
+    std::vector<Mesh> meshes{plane};
+    const Accel accel(meshes);
+    Random random;
+    int self_hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3 target{(random.uniform() - 0.5f) * 30, (random.uniform() - 0.5f) * 30, z};
+      const Ray ray{target + Vec3(16, 28, 38), Vec3(-16, -28, -38)};
+      const auto hit = accel.intersect(ray);
+      ASSERT_TRUE(hit);
+      const SurfacePoint sp = surface_point(meshes, *hit, ray);
+      const Vec3 mirrored{ray.dir.x, ray.dir.y, -ray.dir.z};
+      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, mirrored), mirrored})) ++self_hits;
+    }
+    EXPECT_EQ(self_hits, 0) << "z " << z;
+  }
+}
+
+// A huge tilted mirror: a point near the world origin interpolated from corners 400 units away is as
+// uncertain as the corners; rays reflected there must never hit the plane again, and rays through it must
+// never hit it twice.
+TEST(Accel, OffsetOriginsOnHugeTiltedTrianglesAvoidSelfIntersection) {
+  const Transform tilt =
+      Transform::rotate(37, {1, 0, 0}) * Transform::rotate(23, {0, 0, 1}) * Transform::rotate(11, {0, 1, 0});
+  for (float half : {400.0f, 4000.0f}) {
+    Mesh plane;
+    plane.positions = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
+    plane.indices = {0, 1, 2, 0, 2, 3};
+    plane.transform(tilt * Transform::translate({3.1f, -7.3f, 0.6f}));
+    std::vector<Mesh> meshes{plane};
+    const Accel accel(meshes);
+    Random random;
+    int self_hits = 0;
+    for (int i = 0; i < 50000; ++i) {
+      // Aim at points spread over the middle of the plane, from far away.
+      const Vec3 target =
+          tilt.point(Vec3((random.uniform() - 0.5f) * half, (random.uniform() - 0.5f) * half, 0));
+      const Vec3 origin =
+          target + tilt.vector(Vec3(0, 0, 1)) * (0.5f * half) + random.direction() * (0.1f * half);
+      const Ray ray{origin, target - origin};
+      const auto hit = accel.intersect(ray);
+      if (!hit) continue;
+      const SurfacePoint sp = surface_point(meshes, *hit, ray);
+      const Vec3 n = dot(sp.ng, ray.dir) < 0 ? sp.ng : -sp.ng;
+      const Vec3 d = normalize(ray.dir);
+      const Vec3 mirrored = d - n * (2 * dot(d, n));
+      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, mirrored), mirrored})) ++self_hits;
+      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, d), d})) ++self_hits;
+    }
+    EXPECT_EQ(self_hits, 0) << "half size " << half;
+  }
 }
 
 TEST(Accel, SurfacePointInterpolatesColoursAndNormals) {

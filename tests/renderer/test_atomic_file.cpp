@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::read_text_file;
-using test::write_text_file;
+using test::write_text;
 
 size_t count_entries(const fs::path& dir) {
   return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
@@ -38,7 +38,7 @@ TEST(AtomicOutput, CommitMovesTheTempFileToTheFinalName) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
   AtomicOutput output(final_path);
-  write_text_file(output.temp_path(), "new");
+  write_text(output.temp_path(), "new");
   EXPECT_FALSE(fs::exists(final_path));
   output.commit();
   EXPECT_EQ(read_text_file(final_path), "new");
@@ -48,9 +48,9 @@ TEST(AtomicOutput, CommitMovesTheTempFileToTheFinalName) {
 TEST(AtomicOutput, CommitReplacesAnExistingFile) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
-  write_text_file(final_path, "old");
+  write_text(final_path, "old");
   AtomicOutput output(final_path);
-  write_text_file(output.temp_path(), "new");
+  write_text(output.temp_path(), "new");
   EXPECT_EQ(read_text_file(final_path), "old");  // untouched until the new file is complete
   output.commit();
   EXPECT_EQ(read_text_file(final_path), "new");
@@ -60,11 +60,11 @@ TEST(AtomicOutput, CommitReplacesAnExistingFile) {
 TEST(AtomicOutput, FailureBeforeCommitKeepsTheOldFileAndRemovesTheTemp) {
   const fs::path dir = test::scratch_dir();
   const fs::path final_path = dir / "out.txt";
-  write_text_file(final_path, "old");
+  write_text(final_path, "old");
   EXPECT_THROW(
       {
         AtomicOutput output(final_path);
-        write_text_file(output.temp_path(), "half-written");
+        write_text(output.temp_path(), "half-written");
         throw std::runtime_error("simulated crash of the writer");
       },
       std::runtime_error);
@@ -87,7 +87,7 @@ TEST(AtomicOutput, CommitWithoutATempFileThrowsNamingTheFile) {
 TEST(CheckOutputWritable, AcceptsAWritableDirectoryAndAnExistingFile) {
   const fs::path dir = test::scratch_dir();
   EXPECT_NO_THROW(check_output_writable(dir / "new.png"));
-  write_text_file(dir / "old.png", "x");
+  write_text(dir / "old.png", "x");
   EXPECT_NO_THROW(check_output_writable(dir / "old.png"));
 }
 
@@ -105,7 +105,7 @@ TEST(CheckOutputWritable, MissingDirectoryIsNamed) {
 
 TEST(CheckOutputWritable, ParentThatIsAFileOrOutputThatIsADirectoryIsRejected) {
   const fs::path dir = test::scratch_dir();
-  write_text_file(dir / "file", "x");
+  write_text(dir / "file", "x");
   EXPECT_THROW(check_output_writable(dir / "file" / "image.exr"), ImageError);
   fs::create_directory(dir / "sub");
   EXPECT_THROW(check_output_writable(dir / "sub"), ImageError);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "renderer/mip_pyramid.h"
+#include "support/awkward_floats.h"
 
 namespace ochre {
 namespace {
@@ -73,6 +74,31 @@ TEST(MipPyramid, ChannelsAndSizesAreChecked) {
   EXPECT_EQ(p.memory_bytes(), 6 * sizeof(float));
   EXPECT_THROW(MipPyramid(levels, 2), std::invalid_argument);
   EXPECT_THROW(MipPyramid({}, 1), std::invalid_argument);
+}
+
+// NaN, infinities and huge coordinates (docs/nodes.md, "Non-finite values").
+TEST(MipPyramid, AnyCoordinateAndFootprintIsSafe) {
+  const MipPyramid p = ramp_pyramid();
+  for (float s : test::awkward_floats())
+    for (float t : test::awkward_floats())
+      for (float footprint : {test::kNaN, test::kInf, 1e30f, 0.0f, 0.3f}) {
+        const float v = at(p, s, t, footprint);
+        EXPECT_TRUE(std::isfinite(v)) << s << ", " << t << ", " << footprint;
+        if (!std::isfinite(s) || !std::isfinite(t)) {
+          EXPECT_EQ(v, 0.0f);
+        }
+      }
+}
+
+TEST(MipPyramid, HugeCoordinatesWrapToZero) {
+  const MipPyramid p = ramp_pyramid();
+  // s * width overflows to infinity for s near the largest float: a float -> int conversion of that is
+  // undefined. Every float from 2^23 on is an integer: under a period of 1 it is the place 0.
+  for (float huge : {1e30f, test::kLargest, -test::kLargest, 8388608.0f, 3e38f}) {
+    EXPECT_EQ(at(p, huge, 0.25f, 0.0f), at(p, 0.0f, 0.25f, 0.0f)) << huge;
+    EXPECT_EQ(at(p, 0.625f, huge, 0.0f), at(p, 0.625f, 0.0f, 0.0f)) << huge;
+  }
+  EXPECT_EQ(at(p, 1.625f, 0.25f, 0.0f), at(p, 0.625f, 0.25f, 0.0f));  // ordinary wrap kept
 }
 
 }  // namespace

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using test::read_text_file;
-using test::write_text_file;
+using test::write_text;
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -29,11 +29,11 @@ std::vector<std::string> entries(const fs::path& dir) {
 
 TEST(OutputTransaction, NothingIsReplacedBeforeCommit) {
   const fs::path dir = test::scratch_dir();
-  write_text_file(dir / "a.txt", "old a");
+  write_text(dir / "a.txt", "old a");
   {
     OutputTransaction outputs;
-    write_text_file(outputs.add(dir / "a.txt").temp_path(), "new a");
-    write_text_file(outputs.add(dir / "b.txt").temp_path(), "new b");
+    write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
+    write_text(outputs.add(dir / "b.txt").temp_path(), "new b");
     EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
     outputs.commit();
   }
@@ -44,14 +44,14 @@ TEST(OutputTransaction, NothingIsReplacedBeforeCommit) {
 
 TEST(OutputTransaction, AFailingWriterLeavesEveryExistingFileAsItWas) {
   const fs::path dir = test::scratch_dir();
-  write_text_file(dir / "a.txt", "old a");
-  write_text_file(dir / "c.txt", "old c");
+  write_text(dir / "a.txt", "old a");
+  write_text(dir / "c.txt", "old c");
   struct stat before {};
   ASSERT_EQ(::stat((dir / "a.txt").c_str(), &before), 0);
   try {
     OutputTransaction outputs;
-    write_text_file(outputs.add(dir / "a.txt").temp_path(), "new a");
-    write_text_file(outputs.add(dir / "b.txt").temp_path(), "new b");
+    write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
+    write_text(outputs.add(dir / "b.txt").temp_path(), "new b");
     outputs.add(dir / "c.txt");
     throw std::runtime_error("the third writer fails");  // before commit
   } catch (const std::runtime_error&) {
@@ -67,9 +67,9 @@ TEST(OutputTransaction, AFailingWriterLeavesEveryExistingFileAsItWas) {
 
 TEST(OutputTransaction, AMissingTemporaryFailsTheCommitBeforeAnyRename) {
   const fs::path dir = test::scratch_dir();
-  write_text_file(dir / "a.txt", "old a");
+  write_text(dir / "a.txt", "old a");
   OutputTransaction outputs;
-  write_text_file(outputs.add(dir / "a.txt").temp_path(), "new a");
+  write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
   outputs.add(dir / "b.txt");  // its writer produced nothing
   EXPECT_THROW(outputs.commit(), ImageError);
   EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
@@ -77,15 +77,15 @@ TEST(OutputTransaction, AMissingTemporaryFailsTheCommitBeforeAnyRename) {
 
 TEST(OutputTransaction, AFailedRenamePutsBackTheFilesAlreadyReplaced) {
   const fs::path dir = test::scratch_dir();
-  write_text_file(dir / "a.txt", "old a");
+  write_text(dir / "a.txt", "old a");
   {
     OutputTransaction outputs;
-    write_text_file(outputs.add(dir / "a.txt").temp_path(), "new a");
-    write_text_file(outputs.add(dir / "new.txt").temp_path(), "new file");
-    write_text_file(outputs.add(dir / "c").temp_path(), "new c");
+    write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
+    write_text(outputs.add(dir / "new.txt").temp_path(), "new file");
+    write_text(outputs.add(dir / "c").temp_path(), "new c");
     // A directory appears where the third output goes: its rename fails after the first two.
     fs::create_directory(dir / "c");
-    write_text_file(dir / "c" / "inside", "x");
+    write_text(dir / "c" / "inside", "x");
     EXPECT_THROW(outputs.commit(), ImageError);
   }
   EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");

@@ -63,6 +63,31 @@ TEST(SignalCleanup, SigtermRemovesTemporariesAndEndsTheProcessBySigterm) {
   expect_temporary_removed_on(SIGTERM);
 }
 
+// A scratch directory (the panels of ochre-vgroove's grids) is emptied and removed; a temporary file
+// registered inside it after the directory goes too, and the user's files beside it stay.
+TEST(SignalCleanup, ScratchDirectoryIsEmptiedAndRemoved) {
+  const fs::path dir = test::scratch_dir();
+  std::ofstream(dir / "keep.png") << "the user's";
+  const int status = run_in_child([&] {
+    install_signal_cleanup();
+    const fs::path scratch = dir / "grid.png.panels.tmp-1";
+    fs::create_directory(scratch);
+    const TemporaryFileRegistration registration(scratch, TemporaryKind::kDirectory);
+    for (int i = 0; i < 300; ++i)  // more entries than one read of the directory returns
+      std::ofstream(scratch / ("colour_with_a_long_name_to_fill_the_buffer_" + std::to_string(i) + ".png"))
+          << i;
+    AtomicOutput panel(scratch / "panels.csv");
+    std::ofstream(panel.temp_path()) << "half-written";
+    ::raise(SIGTERM);
+    ::_exit(3);  // not reached
+  });
+  ASSERT_TRUE(WIFSIGNALED(status)) << status;
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_FALSE(fs::exists(dir / "grid.png.panels.tmp-1"));
+  EXPECT_EQ(entry_count(dir), 1u);
+  EXPECT_TRUE(fs::exists(dir / "keep.png"));
+}
+
 TEST(SignalCleanup, SignalDuringTheRenamesActsWhenTheSetIsComplete) {
   const fs::path dir = test::scratch_dir();
   const int status = run_in_child([&] {

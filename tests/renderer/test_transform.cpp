@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/input_error.h"
+#include "renderer/json_fields.h"
 #include "renderer/transform.h"
 
 namespace ochre {
@@ -133,13 +134,13 @@ TEST(TransformParse, ErrorsNameThePosition) {
             std::string::npos);
 }
 
-TEST(TransformParse, Vec3RejectsNonFiniteAndWrongShapes) {
-  expect_near(parse_vec3(nlohmann::json::parse("[1, -2.5, 3e2]"), "v"), {1, -2.5f, 300});
-  EXPECT_THROW(parse_vec3(nlohmann::json::parse("[1, 2]"), "v"), InputError);
-  EXPECT_THROW(parse_vec3(nlohmann::json::parse("[1, 2, 1e39]"), "v"), InputError);  // overflows float
-  EXPECT_THROW(parse_vec3(nlohmann::json::parse("{\"x\": 1}"), "v"), InputError);
+TEST(JsonVec3, RejectsNonFiniteAndWrongShapes) {
+  expect_near(json_vec3(nlohmann::json::parse("[1, -2.5, 3e2]"), "v"), {1, -2.5f, 300});
+  EXPECT_THROW(json_vec3(nlohmann::json::parse("[1, 2]"), "v"), InputError);
+  EXPECT_THROW(json_vec3(nlohmann::json::parse("[1, 2, 1e39]"), "v"), InputError);  // overflows float
+  EXPECT_THROW(json_vec3(nlohmann::json::parse("{\"x\": 1}"), "v"), InputError);
   try {
-    parse_vec3(nlohmann::json::parse("[1, null, 3]"), "materials[0].colour");
+    json_vec3(nlohmann::json::parse("[1, null, 3]"), "materials[0].colour");
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("materials[0].colour[1]: expected a number, got null"),

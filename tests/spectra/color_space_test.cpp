@@ -76,8 +76,8 @@ TEST(ColorSpace, AcescgOfRec709MatchesTheAcesReference) {
 }
 
 TEST(ColorSpace, BradfordMapsWhiteToWhite) {
-  const Vec3d d65 = xy_to_xyz({0.3127, 0.3290}), d50 = xy_to_xyz({0.3457, 0.3585});
-  const Vec3d mapped = bradford_adaptation(d65, d50) * d65;
+  const Array3d d65 = xy_to_xyz({0.3127, 0.3290}), d50 = xy_to_xyz({0.3457, 0.3585});
+  const Array3d mapped = bradford_adaptation(d65, d50) * d65;
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(mapped[i], d50[i], 1e-12);
   // Lindbloom's D65 -> D50 Bradford matrix, first row: 1.0478112 0.0228866 -0.0501270.
   const Mat3 m = bradford_adaptation(xy_to_xyz({0.31271, 0.32902}), xy_to_xyz({0.34567, 0.35850}));

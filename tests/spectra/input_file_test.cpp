@@ -12,6 +12,7 @@
 
 #include "spectra/csv_table.h"
 #include "spectra/input_error.h"
+#include "support/input_error_of.h"
 #include "support/test_paths.h"
 
 namespace ochre {
@@ -21,16 +22,7 @@ namespace fs = std::filesystem;
 
 constexpr InputKind kTiny{"test file", 16};
 
-// The message of the InputError thrown by f (empty when nothing is thrown).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
+using test::input_error_of;
 
 fs::path make_fifo(const fs::path& dir) {
   const fs::path fifo = dir / "pipe.json";
@@ -41,27 +33,27 @@ fs::path make_fifo(const fs::path& dir) {
 TEST(InputFile, FifoIsRefusedByEveryEntryPointWithoutBlocking) {
   const fs::path fifo = make_fifo(test::scratch_dir());
   const std::string expected = fifo.string() + ": the scene file is a FIFO, not a regular file";
-  EXPECT_EQ(error_of([&] { check_regular_input(fifo, kSceneFileInput); }), expected);
-  EXPECT_EQ(error_of([&] { InputFile::open(fifo, kSceneFileInput); }), expected);
-  EXPECT_EQ(error_of([&] { read_input_file(fifo, kSceneFileInput); }), expected);
+  EXPECT_EQ(input_error_of([&] { check_regular_input(fifo, kSceneFileInput); }), expected);
+  EXPECT_EQ(input_error_of([&] { InputFile::open(fifo, kSceneFileInput); }), expected);
+  EXPECT_EQ(input_error_of([&] { read_input_file(fifo, kSceneFileInput); }), expected);
 }
 
 TEST(InputFile, DevicesAreRefused) {
-  EXPECT_EQ(error_of([] { read_input_file("/dev/zero", kCsvFileInput); }),
+  EXPECT_EQ(input_error_of([] { read_input_file("/dev/zero", kCsvFileInput); }),
             "/dev/zero: the CSV file is a character device, not a regular file");
-  EXPECT_EQ(error_of([] { read_input_file("/dev/urandom", kMeshFileInput); }),
+  EXPECT_EQ(input_error_of([] { read_input_file("/dev/urandom", kMeshFileInput); }),
             "/dev/urandom: the mesh file is a character device, not a regular file");
 }
 
 TEST(InputFile, DirectoryIsRefused) {
   const fs::path dir = test::scratch_dir();
-  EXPECT_EQ(error_of([&] { read_input_file(dir, kSceneFileInput); }),
+  EXPECT_EQ(input_error_of([&] { read_input_file(dir, kSceneFileInput); }),
             dir.string() + ": the scene file is a directory, not a regular file");
 }
 
 TEST(InputFile, MissingFileIsNamed) {
   const fs::path missing = test::scratch_dir() / "missing.json";
-  EXPECT_EQ(error_of([&] { read_input_file(missing, kSceneFileInput); }),
+  EXPECT_EQ(input_error_of([&] { read_input_file(missing, kSceneFileInput); }),
             missing.string() + ": the scene file does not exist");
 }
 
@@ -70,7 +62,7 @@ TEST(InputFile, FileAboveTheLimitIsRefusedWithItsSize) {
   const fs::path big = test::scratch_dir() / "big.json";
   std::ofstream(big).close();
   ASSERT_EQ(::truncate(big.c_str(), 3 * static_cast<off_t>(kGiB)), 0);
-  EXPECT_EQ(error_of([&] { read_input_file(big, kSceneFileInput); }),
+  EXPECT_EQ(input_error_of([&] { read_input_file(big, kSceneFileInput); }),
             big.string() + ": the scene file is 3 GiB, larger than the 256 MiB limit for a scene file");
   fs::remove(big);
 }
@@ -80,7 +72,7 @@ TEST(InputFile, LimitIsInclusive) {
   std::ofstream(file) << std::string(16, 'x');
   EXPECT_EQ(read_input_file(file, kTiny), std::string(16, 'x'));
   std::ofstream(file) << std::string(17, 'x');
-  EXPECT_EQ(error_of([&] { read_input_file(file, kTiny); }),
+  EXPECT_EQ(input_error_of([&] { read_input_file(file, kTiny); }),
             file.string() + ": the test file is 17 bytes, larger than the 16 bytes limit for a test file");
 }
 
@@ -127,10 +119,10 @@ TEST(InputFileLog, RecordsCheckedFilesOnlyWhileRecording) {
 }
 
 TEST(InputFile, CsvTableRefusesDevicesAndFifos) {
-  EXPECT_EQ(error_of([] { CsvTable::load("/dev/zero"); }),
+  EXPECT_EQ(input_error_of([] { CsvTable::load("/dev/zero"); }),
             "/dev/zero: the CSV file is a character device, not a regular file");
   const fs::path fifo = make_fifo(test::scratch_dir());
-  EXPECT_NE(error_of([&] { CsvTable::load(fifo); }).find("is a FIFO"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { CsvTable::load(fifo); }).find("is a FIFO"), std::string::npos);
 }
 
 }  // namespace

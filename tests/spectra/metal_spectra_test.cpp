@@ -1,5 +1,6 @@
 // Optical constants of Au, Ag, Cu, Al, Si carried into spectra/data and registered as named spectra
-// ("metal-Au-eta", "metal-Au-k", ...): equal to ../shared/data/ior, and physically plausible.
+// ("metal-Au-eta", "metal-Au-k", ...): equal to the refractiveindex.info tables of the optional external
+// assets folder when it is present (docs/validation.md), and physically plausible.
 
 #include <gtest/gtest.h>
 

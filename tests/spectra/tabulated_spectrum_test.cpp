@@ -1,10 +1,13 @@
-// Tabulated (piecewise-linear, clamped), constant, scaled and product spectra, and CSV loading.
+// Tabulated (piecewise-linear; clamped or zero outside), constant, scaled and product spectra, and CSV
+// loading.
 
 #include "spectra/tabulated_spectrum.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <random>
 #include <stdexcept>
@@ -40,6 +43,70 @@ TEST(TabulatedSpectrum, InterpolatesLinearlyAndClampsOutside) {
   EXPECT_FALSE(s.is_constant());
   const auto sampled = s.sample(SampledWavelengths::fixed({380.0f, 450.0f, 600.0f, 800.0f}));
   EXPECT_EQ(sampled, SampledSpectrum(0.2f, s.eval(450.0f), s.eval(600.0f), 0.4f));
+}
+
+// Wavelengths just outside a table's ends: the nearest floats below the first and above the last.
+float just_below(float x) {
+  return std::nextafter(x, -std::numeric_limits<float>::infinity());
+}
+float just_above(float x) {
+  return std::nextafter(x, std::numeric_limits<float>::infinity());
+}
+
+// Both extrapolations on an equally spaced table (the direct-index path) and an irregular one (the search).
+const std::vector<std::vector<float>> kTableWavelengths = {{400.0f, 550.0f, 700.0f},
+                                                           {400.0f, 500.0f, 700.0f}};
+const std::vector<float> kTableValues = {0.2f, 0.6f, 0.4f};
+
+// The values of a spectrum over the 400-700 nm table above at its ends (the table's), just outside, far
+// outside and at NaN (the value below the table: finite).
+void expect_ends_and_outside(const TabulatedSpectrum& s, float below, float above) {
+  EXPECT_EQ(s.eval(400.0f), 0.2f);
+  EXPECT_EQ(s.eval(700.0f), 0.4f);
+  for (float x : {just_below(400.0f), 399.0f, 360.0f, -1e6f, float(NAN)}) EXPECT_EQ(s.eval(x), below) << x;
+  for (float x : {just_above(700.0f), 701.0f, 830.0f, 1e6f}) EXPECT_EQ(s.eval(x), above) << x;
+  EXPECT_EQ(s.max_value(), 0.6f);
+}
+
+TEST(TabulatedSpectrum, ClampHoldsTheEndValuesOutsideTheTable) {
+  for (const auto& l : kTableWavelengths) {
+    const TabulatedSpectrum s(l, kTableValues, TableExtrapolation::kClamp);
+    expect_ends_and_outside(s, 0.2f, 0.4f);
+    EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
+              SampledSpectrum(0.2f, 0.2f, 0.4f, 0.4f));
+  }
+  // The default is clamp, as before the choice existed.
+  EXPECT_EQ(TabulatedSpectrum({400.0f, 700.0f}, {0.2f, 0.4f}).eval(800.0f), 0.4f);
+}
+
+TEST(TabulatedSpectrum, ZeroVanishesOutsideTheTableOnly) {
+  for (const auto& l : kTableWavelengths) {
+    const TabulatedSpectrum s(l, kTableValues, TableExtrapolation::kZero);
+    expect_ends_and_outside(s, 0.0f, 0.0f);
+    // Just inside, the table's interpolation, as with clamp.
+    EXPECT_EQ(s.eval(just_above(400.0f)), TabulatedSpectrum(l, kTableValues).eval(just_above(400.0f)));
+    EXPECT_EQ(s.eval(just_below(700.0f)), TabulatedSpectrum(l, kTableValues).eval(just_below(700.0f)));
+    EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
+              SampledSpectrum(0.0f, 0.2f, 0.4f, 0.0f));
+  }
+}
+
+TEST(TabulatedSpectrum, ExtrapolationDecidesWhetherAFlatTableIsConstant) {
+  // Flat over 400-500 nm: constant over [360, 830] only when held beyond the table.
+  EXPECT_TRUE(TabulatedSpectrum({400.0f, 500.0f}, {0.3f, 0.3f}, TableExtrapolation::kClamp).is_constant());
+  EXPECT_FALSE(TabulatedSpectrum({400.0f, 500.0f}, {0.3f, 0.3f}, TableExtrapolation::kZero).is_constant());
+  // A flat table covering the whole range is constant either way; a flat zero table too.
+  EXPECT_TRUE(TabulatedSpectrum({300.0f, 900.0f}, {0.3f, 0.3f}, TableExtrapolation::kZero).is_constant());
+  EXPECT_TRUE(TabulatedSpectrum({400.0f, 500.0f}, {0.0f, 0.0f}, TableExtrapolation::kZero).is_constant());
+  // The peak of a zero-extrapolated table that starts inside the range is found.
+  EXPECT_EQ(TabulatedSpectrum({400.0f, 500.0f}, {2.0f, 1.0f}, TableExtrapolation::kZero).max_value(), 2.0f);
+}
+
+TEST(TabulatedSpectrum, ExtrapolationNames) {
+  EXPECT_EQ(table_extrapolation_from_name("clamp"), TableExtrapolation::kClamp);
+  EXPECT_EQ(table_extrapolation_from_name("zero"), TableExtrapolation::kZero);
+  EXPECT_EQ(table_extrapolation_from_name("Zero"), std::nullopt);
+  EXPECT_EQ(table_extrapolation_from_name(""), std::nullopt);
 }
 
 TEST(TabulatedSpectrum, UniformFastPathMatchesSearch) {
@@ -78,6 +145,10 @@ TEST(TabulatedSpectrum, LoadsCsvColumns) {
   EXPECT_FLOAT_EQ(load_spectrum_csv(path)->eval(500.0f), 1.6f);  // first value column
   EXPECT_FLOAT_EQ(load_spectrum_csv(path, "k")->eval(500.0f), 3.5f);
   EXPECT_FLOAT_EQ(load_spectrum_csv(path, std::size_t{2})->eval(600.0f), 4.0f);
+  // Outside the table: clamped by default, or zero on request.
+  EXPECT_FLOAT_EQ(load_spectrum_csv(path, "k")->eval(800.0f), 4.0f);
+  EXPECT_EQ(load_spectrum_csv(path, "k", TableExtrapolation::kZero)->eval(800.0f), 0.0f);
+  EXPECT_EQ(load_spectrum_csv(path, std::size_t{2}, TableExtrapolation::kZero)->eval(800.0f), 0.0f);
   try {
     load_spectrum_csv(path, "eta");
     FAIL() << "no exception";

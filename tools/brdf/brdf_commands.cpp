@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 
@@ -20,6 +18,7 @@
 #include "tools/brdf/direction_pairs.h"
 #include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
+#include "tools/python_script.h"
 
 namespace ochre {
 
@@ -53,12 +52,6 @@ void check_lambda(float lambda_nm) {
                                  kLambdaMin, kLambdaMax));
 }
 
-void write_text(const AtomicOutput& out, const std::string& text) {
-  std::ofstream file(out.temp_path(), std::ios::binary);
-  file << text;
-  if (!file.flush()) throw InputError(fmt::format("cannot write {}", out.final_path().string()));
-}
-
 // Writes `text` to `path` atomically, or to standard output when path is empty.
 void write_output(const std::string& path, const std::string& text, const InputFileLog& inputs) {
   if (path.empty()) {
@@ -66,27 +59,7 @@ void write_output(const std::string& path, const std::string& text, const InputF
     return;
   }
   check_output_files({path}, inputs);
-  AtomicOutput out{fs::path(path)};
-  write_text(out, text);
-  out.commit();
-}
-
-// tools/plot_brdf.py beside the executable's source tree (build/bin/../../tools), else in the source
-// directory this tool was built from.
-fs::path plot_script() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const fs::path beside = exe.parent_path() / ".." / ".." / "tools" / "plot_brdf.py";
-    if (fs::exists(beside)) return beside;
-  }
-  return fs::path(OCHRE_SOURCE_DIR) / "tools" / "plot_brdf.py";
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+  write_text_file(fs::path(path), text);
 }
 
 // The closure's BRDF on a (theta_o, phi_o) grid for each incidence (wi at phi = 0, so phi_o = 0 is the
@@ -166,14 +139,12 @@ int run_plot(const PlotArgs& args) {
   AtomicOutput& png = transaction.add(args.output);
   AtomicOutput values_only(args.output + ".values.csv");  // never committed: removed when done
   AtomicOutput& values = args.csv.empty() ? values_only : transaction.add(args.csv);
-  write_text(values, csv);
+  write_text_file(values, csv);
   const std::string title = fmt::format("{} ({} nm)", probe.name(), number(args.lambda_nm));
-  const std::string command = fmt::format("/usr/bin/python3 {} {} {} {}", shell_quote(plot_script().string()),
-                                          shell_quote(values.temp_path().string()),
-                                          shell_quote(png.temp_path().string()), shell_quote(title));
-  if (std::system(command.c_str()) != 0) {
+  const fs::path script = tool_script("plot_brdf.py");
+  if (!run_python(script, {values.temp_path().string(), png.temp_path().string(), title})) {
     std::cerr << fmt::format("ochre-brdf: error: plot {} not written ({} failed; is matplotlib installed?)\n",
-                             args.output, plot_script().string());
+                             args.output, script.string());
     return 1;
   }
   transaction.commit();

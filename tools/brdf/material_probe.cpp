@@ -72,7 +72,12 @@ MaterialProbe::MaterialProbe(const std::filesystem::path& file, const std::strin
   const auto [json, name] = select_material(read_json_file(file, "material file"), file, material_name);
   name_ = name;
   ProbeResources resources(std::filesystem::absolute(file).parent_path(), textures_);
-  material_ = compile_material(json, name_, file.string(), resources);
+  try {
+    material_ = compile_material(json, name_, file.string(), resources);
+  } catch (const nlohmann::json::exception& e) {
+    // A read that escaped the graph parser's checks: still bad input in this file.
+    throw InputError(fmt::format("{}: material '{}': {}", file.string(), name_, e.what()));
+  }
 }
 
 MaterialProbe::~MaterialProbe() = default;

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "ochre/version.h"
 #include "tools/halfspace/halfspace_mc.h"
 
 namespace {
@@ -129,6 +130,7 @@ int run(const HalfspaceCommand& cmd, const std::string& command_line) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-halfspace: Monte-Carlo reference BRDF of a half-space of Lambertian spheres"};
+  app.set_version_flag("--version", "ochre-halfspace " OCHRE_VERSION);
   HalfspaceCommand cmd;
   app.add_option("--c", cmd.c, "Single-scattering albedos")->delimiter(',')->capture_default_str();
   app.add_option("--mu", cmd.mu, "Cosines used for both mu_i and mu_o")

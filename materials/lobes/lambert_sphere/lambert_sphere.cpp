@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "materials/numerics/gauss_legendre.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -71,7 +72,7 @@ BondAlbedoInverse::BondAlbedoInverse(const std::function<double(double c)>& bond
 }
 
 float BondAlbedoInverse::c(float kd_in) const {
-  const double kd = std::clamp(double(kd_in), 0.0, 1.0);
+  const double kd = nan_safe_clamp(double(kd_in), 0.0, 1.0);
   if (kd >= kd_[0]) return 1.0f;
   if (kd <= kd_[kNodes - 1]) return 0.0f;
   // Binary search for kd_[lo] > kd >= kd_[hi], then linear interpolation in s.

@@ -26,6 +26,7 @@
 #include <functional>
 
 #include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -44,14 +45,14 @@ struct LambertSphereConstants {
 // Eq 47: particle albedo c -> bond (spherical) albedo kd. Safe for c in [0, 1] (clamped).
 template <class T>
 T lambert_sphere_kd_from_c_eq47(T c) {
-  const T s = std::sqrt(std::max(T(0), T(1) - std::clamp(c, T(0), T(1))));
+  const T s = std::sqrt(std::max(T(0), T(1) - nan_safe_clamp(c, T(0), T(1))));
   return std::clamp((T(1) - T(0.453029) * s * s - T(0.544162) * s) / (T(1.42931) * s + T(1)), T(0), T(1));
 }
 
 // Eq 46: kd -> c. kd and the result are clamped to [0, 1] (Eq 46 exceeds 1 for kd in [0.9988, 1)).
 template <class T>
 T lambert_sphere_c_from_kd_eq46(T kd) {
-  const T q = T(1) - std::clamp(kd, T(0), T(1));
+  const T q = T(1) - nan_safe_clamp(kd, T(0), T(1));
   return std::clamp((T(1) - std::pow(q, T(2.73556))) / (T(1) - T(0.184096) * std::pow(q, T(2.48423))), T(0),
                     T(1));
 }
@@ -60,7 +61,7 @@ T lambert_sphere_c_from_kd_eq46(T kd) {
 template <class T>
 LambertSphereConstants<T> lambert_sphere_constants(T c_in) {
   LambertSphereConstants<T> k;
-  const T c = std::clamp(c_in, T(0), T(1));
+  const T c = nan_safe_clamp(c_in, T(0), T(1));
   const T one_minus_c = T(1) - c, s = std::sqrt(one_minus_c), s3 = one_minus_c * s;
   k.c = c;
   // Eq 37 constants; 1/H0(inf) = sqrt(K0(0)) = sqrt((16 - c)(1 - c)(4c + 9)) / 12, finite at c = 1.

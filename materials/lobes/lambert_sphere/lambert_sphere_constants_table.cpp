@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "spectra/non_finite.h"
+
 namespace ochre {
 
 namespace {
@@ -45,7 +47,7 @@ float lerp(float a, float b, float t) {
 }  // namespace
 
 LambertSphereConstants<float> lambert_sphere_constants_interpolated(float c_in) {
-  const float c = std::clamp(c_in, 0.0f, 1.0f);
+  const float c = nan_safe_clamp(c_in, 0.0f, 1.0f);  // NaN -> 0: c gives the index
   const float x = std::sqrt(1.0f - c) * kCells;
   const int i = std::min(static_cast<int>(x), kCells - 1);
   const float t = x - static_cast<float>(i);

@@ -5,6 +5,7 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/numerics/halfspace_doubling.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -61,7 +62,7 @@ std::vector<float> compute_lambert_sphere_exact_table(const LambertSphereExactGr
 LambertSphereExactConstants lambert_sphere_exact_constants(float c) {
   const LambertSphereExactGrid& grid = lambert_sphere_exact_grid();
   LambertSphereExactConstants k;
-  k.c = std::clamp(c, 0.0f, 1.0f);
+  k.c = nan_safe_clamp(c, 0.0f, 1.0f);  // NaN -> 0: c gives the index
   const float f = std::sqrt(1.0f - k.c) * float(grid.s_nodes - 1);
   k.s_index = std::min(int(f), grid.s_nodes - 2);
   k.s_weight = std::clamp(f - float(k.s_index), 0.0f, 1.0f);

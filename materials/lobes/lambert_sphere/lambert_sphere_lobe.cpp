@@ -2,13 +2,14 @@
 
 #include "materials/lobes/cosine_lobe_sampling.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_constants_table.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
 LambertSphereLobe::LambertSphereLobe(LambertSphereVariant variant, const SampledSpectrum& particle_albedo)
     : variant_(variant) {
   for (int k = 0; k < kSpectrumSamples; ++k) {
-    const float c = std::clamp(particle_albedo[k], 0.0f, 1.0f);
+    const float c = nan_safe_clamp(particle_albedo[k], 0.0f, 1.0f);
     if (variant == LambertSphereVariant::kExact)
       exact_[k] = lambert_sphere_exact_constants(c);
     else

@@ -11,10 +11,10 @@ namespace {
 void emit_chandrasekhar(const NodeArgs& a) {
   const SampledSpectrum w = a.weight();
   if (w.is_black()) return;
-  a.closure.add_lobe(a.arena.make<ChandrasekharLobe>(a.in_spectrum(0)), w);
+  a.add_lobe(a.arena.make<ChandrasekharLobe>(a.in_spectrum(0)), w);
 }
 
-ClosureTraits chandrasekhar_traits(std::span<const InputView> in) {
+ClosureTraits chandrasekhar_traits(std::span<const InputView> in, const void*) {
   if (in[0].is_constant() && is_zero(*in[0].value)) return {};
   return {kLobeReflection | kLobeDiffuse, false};
 }

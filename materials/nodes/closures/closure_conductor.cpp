@@ -11,6 +11,7 @@
 #include "materials/lobes/conductor.h"
 #include "materials/nodes/node_definition.h"
 #include "spectra/named_spectra.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -38,14 +39,14 @@ void emit_conductor(const NodeArgs& a) {
     eta = metal.eta->sample(a.lambda());
     k = metal.k->sample(a.lambda());
   }
-  const float alpha = std::clamp(a.in_float(2), 0.0f, 1.0f);
+  const float alpha = nan_safe_clamp(a.in_float(2), 0.0f, 1.0f);
   if (alpha > 0.0f)
-    a.closure.add_lobe(a.arena.make<RoughConductorLobe>(eta, k, alpha), w);
+    a.add_lobe(a.arena.make<RoughConductorLobe>(eta, k, alpha), w);
   else
-    a.closure.add_lobe(a.arena.make<SmoothConductorLobe>(eta, k), w);
+    a.add_lobe(a.arena.make<SmoothConductorLobe>(eta, k), w);
 }
 
-ClosureTraits conductor_traits(std::span<const InputView> in) {
+ClosureTraits conductor_traits(std::span<const InputView> in, const void*) {
   const uint32_t base = kLobeReflection | kLobePolarizing;
   if (!in[2].is_constant()) return {base | kLobeDelta | kLobeGlossy, false};
   return {base | (in[2].value->f > 0.0f ? kLobeGlossy : kLobeDelta), false};

@@ -8,6 +8,7 @@
 
 #include "materials/lobes/dielectric.h"
 #include "materials/nodes/node_definition.h"
+#include "spectra/non_finite.h"
 
 namespace ochre {
 
@@ -31,14 +32,14 @@ void emit_dielectric(const NodeArgs& a) {
   const SampledSpectrum w = a.weight();
   if (w.is_black()) return;
   const float eta = std::max(a.in_float(0), kMinIor);
-  const float alpha = std::clamp(a.in_float(1), 0.0f, 1.0f);
+  const float alpha = nan_safe_clamp(a.in_float(1), 0.0f, 1.0f);
   if (alpha > 0.0f)
-    a.closure.add_lobe(a.arena.make<RoughDielectricLobe>(eta, alpha), w);
+    a.add_lobe(a.arena.make<RoughDielectricLobe>(eta, alpha), w);
   else
-    a.closure.add_lobe(a.arena.make<SmoothDielectricLobe>(eta, a.data<DielectricOptions>().opaque), w);
+    a.add_lobe(a.arena.make<SmoothDielectricLobe>(eta, a.data<DielectricOptions>().opaque), w);
 }
 
-ClosureTraits dielectric_traits(std::span<const InputView> in) {
+ClosureTraits dielectric_traits(std::span<const InputView> in, const void*) {
   // The traits cannot see the `opaque` parameter: transmission is declared whenever a smooth lobe
   // may be made (a superset of the flags, which is what the facts need).
   const uint32_t base = kLobeReflection | kLobePolarizing;

@@ -9,12 +9,14 @@ namespace ochre {
 
 namespace {
 
+// Constant inputs are checked >= 0 when the material compiles; a value that varies (a texture, a product
+// with one) can still be negative somewhere and counts as 0 there: a light never emits negative radiance.
 void emit_emission(const NodeArgs& a) {
   const float strength = std::max(a.in_float(1), 0.0f);
-  a.closure.add_emission(a.weight() * a.in_spectrum(0) * strength);
+  a.add_emission(clamp_zero(a.weight() * a.in_spectrum(0) * strength));
 }
 
-ClosureTraits emission_traits(std::span<const InputView> in) {
+ClosureTraits emission_traits(std::span<const InputView> in, const void*) {
   for (const InputView& v : in)
     if (v.is_constant() && is_zero(*v.value)) return {};
   return {0, true};
@@ -32,7 +34,10 @@ NodeDefinition emission_node() {
   color.default_value = NodeValue::of_colour({1.0f, 1.0f, 1.0f});
   color.role = SpectralRole::kIlluminant;
   color.min = 0.0f;
-  color.doc = "emitted spectral radiance per unit strength; a colour is upsampled as an illuminant";
+  color.clamped = true;
+  color.doc =
+      "emitted spectral radiance per unit strength; a colour is upsampled as an illuminant; negative "
+      "constants are errors, a negative linked value (e.g. a texel) counts as 0";
   SocketDef strength;
   strength.name = "strength";
   strength.type = SocketType::kFloat;

@@ -11,10 +11,10 @@ namespace {
 void emit_lambert(const NodeArgs& a) {
   const SampledSpectrum w = a.weight() * a.in_spectrum(0);
   if (w.is_black()) return;
-  a.closure.add_lobe(a.arena.make<LambertLobe>(), w);
+  a.add_lobe(a.arena.make<LambertLobe>(), w);
 }
 
-ClosureTraits lambert_traits(std::span<const InputView> in) {
+ClosureTraits lambert_traits(std::span<const InputView> in, const void*) {
   if (in[0].is_constant() && is_zero(*in[0].value)) return {};
   return {LambertLobe().flags(), false};
 }

@@ -63,10 +63,10 @@ void emit_lambert_sphere(const NodeArgs& a) {
       w[k] *= inverse.weight_scale(kd[k]);
     }
   }
-  a.closure.add_lobe(a.arena.make<LambertSphereLobe>(s.variant, c), w);
+  a.add_lobe(a.arena.make<LambertSphereLobe>(s.variant, c), w);
 }
 
-ClosureTraits lambert_sphere_traits(std::span<const InputView>) {
+ClosureTraits lambert_sphere_traits(std::span<const InputView>, const void*) {
   return {kLobeReflection | kLobeDiffuse, false};
 }
 

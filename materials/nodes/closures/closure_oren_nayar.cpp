@@ -11,10 +11,10 @@ namespace {
 void emit_oren_nayar(const NodeArgs& a) {
   const SampledSpectrum w = a.weight() * a.in_spectrum(0);
   if (w.is_black()) return;
-  a.closure.add_lobe(a.arena.make<OrenNayarLobe>(std::max(0.0f, a.in_float(1))), w);
+  a.add_lobe(a.arena.make<OrenNayarLobe>(std::max(0.0f, a.in_float(1))), w);
 }
 
-ClosureTraits oren_nayar_traits(std::span<const InputView> in) {
+ClosureTraits oren_nayar_traits(std::span<const InputView> in, const void*) {
   if (in[0].is_constant() && is_zero(*in[0].value)) return {};
   return {kLobeReflection | kLobeDiffuse, false};
 }

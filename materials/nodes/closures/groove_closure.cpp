@@ -1,0 +1,163 @@
+#include "materials/nodes/closures/groove_closure.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "materials/core/frame.h"
+#include "spectra/named_spectra.h"
+
+namespace ochre {
+
+std::string string_param(const PrepareArgs& args, const char* name, const char* fallback) {
+  return args.params.contains(name) ? args.params.at(name).get<std::string>() : fallback;
+}
+
+namespace {
+
+ChainModel parse_model(const std::string& model) {
+  if (model == "unpolarized") return ChainModel::kUnpolarized;
+  if (model == "sp") return ChainModel::kSeparateSP;
+  if (model == "paper_literal") return ChainModel::kPaperLiteral;
+  return ChainModel::kRigorous;
+}
+
+// The reference direction in world space.
+Vec3 reference_direction(const NodeArgs& a, DirectionSpace space, int direction_input) {
+  if (space == DirectionSpace::kUV) return a.ctx.dpdu;
+  const Vec3 v = a.in_vector(direction_input);
+  if (space == DirectionSpace::kWorld || !a.ctx.object_axes) return v;
+  const Vec3* axes = a.ctx.object_axes;
+  return axes[0] * v.x + axes[1] * v.y + axes[2] * v.z;
+}
+
+// Unit vector of the tangent plane of n nearest to t (any tangent when t is along n).
+Vec3 tangent_of(const Vec3& n, const Vec3& t) {
+  const Vec3 projected = t - n * dot(n, t);
+  const float len = length(projected);
+  return len > 1e-6f ? projected / len : Frame::from_normal(n).s;
+}
+
+}  // namespace
+
+GrooveFacetSettings parse_groove_settings(const PrepareArgs& args) {
+  GrooveFacetSettings s;
+  const std::string metal = string_param(args, "metal", "");
+  if (metal == "mirror") {
+    s.mirror = true;
+  } else if (!metal.empty()) {
+    s.eta = named_spectrum("metal-" + metal + "-eta");
+    s.k = named_spectrum("metal-" + metal + "-k");
+  }
+  s.model = parse_model(string_param(args, "model", "rigorous"));
+  if (args.params.contains("max_reflections"))
+    s.reflection_limit = args.params.at("max_reflections").get<int>();
+  const std::string space = string_param(args, "direction_space", "uv");
+  s.space = space == "object" ? DirectionSpace::kObject
+                              : (space == "world" ? DirectionSpace::kWorld : DirectionSpace::kUV);
+  return s;
+}
+
+FacetSpectrum groove_facet(const NodeArgs& a, const GrooveFacetSettings& s, const GrooveInputs& in) {
+  FacetSpectrum facet;
+  facet.mirror = s.mirror;
+  facet.n = s.eta ? s.eta->sample(a.lambda()) : a.in_spectrum(in.eta);
+  facet.k = s.k ? s.k->sample(a.lambda()) : a.in_spectrum(in.k);
+  return facet;
+}
+
+Vec3 groove_local_axis(const NodeArgs& a, const GrooveFacetSettings& s, const GrooveInputs& in) {
+  const Vec3& n = a.ctx.n;
+  const float angle = a.in_float(in.angle) * (std::numbers::pi_v<float> / 180.0f);
+  const Vec3 reference = tangent_of(n, reference_direction(a, s.space, in.direction));
+  const Vec3 groove = reference * std::cos(angle) + cross(n, reference) * std::sin(angle);
+  if (!a.has_tangent()) {
+    a.set_tangent(groove);
+    return {1.0f, 0.0f, 0.0f};
+  }
+  const Vec3 x = tangent_of(n, a.tangent());
+  return {dot(groove, x), dot(groove, cross(n, x)), 0.0f};
+}
+
+ClosureTraits groove_traits(const GrooveFacetSettings& s) {
+  return {kLobeReflection | kLobeDelta | (groove_model_polarizes(s.model) ? kLobePolarizing : 0u), false};
+}
+
+SocketDef groove_float_input(const char* name, float fallback, std::optional<float> min,
+                             std::optional<float> max, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = SocketType::kFloat;
+  s.default_value = NodeValue::of_float(fallback);
+  s.min = min;
+  s.max = max;
+  s.clamped = min.has_value();
+  s.doc = doc;
+  return s;
+}
+
+namespace {
+
+SocketDef spectrum_input(const char* name, const char* named_default, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = SocketType::kSpectrum;
+  s.default_value = NodeValue::of_spectrum(named_spectrum(named_default));
+  s.role = SpectralRole::kNone;
+  s.min = 0.0f;
+  s.doc = doc;
+  return s;
+}
+
+}  // namespace
+
+std::vector<SocketDef> groove_facet_and_direction_inputs() {
+  SocketDef direction;
+  direction.name = "direction";
+  direction.type = SocketType::kVector;
+  direction.default_value = NodeValue::of_vector({1.0f, 0.0f, 0.0f});
+  direction.doc = "reference groove direction in object or world space (see direction_space); ignored for uv";
+  return {
+      spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
+      spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
+      groove_float_input("angle", 0.0f, std::nullopt, std::nullopt,
+                         "groove direction: degrees from the reference direction, counter-clockwise about "
+                         "the normal (may be textured)"),
+      direction};
+}
+
+ParamDef groove_choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
+                             const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kString;
+  p.default_value = fallback;
+  p.choices = std::move(choices);
+  p.doc = doc;
+  return p;
+}
+
+std::vector<ParamDef> groove_common_params() {
+  ParamDef metal = groove_choice_param("metal", "", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
+                                       "built-in optical constants of the facets (mirror: reflectance 1, no "
+                                       "retardance); when given, eta and k are ignored");
+  metal.default_value = nullptr;  // absent: the eta and k inputs
+  ParamDef max_reflections;
+  max_reflections.name = "max_reflections";
+  max_reflections.kind = ParamKind::kInt;
+  max_reflections.default_value = 0;
+  max_reflections.min = 0;
+  max_reflections.max = 100000;
+  max_reflections.doc = "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit";
+  return {
+      metal,
+      groove_choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
+                          "polarization treatment: rigorous Mueller chain; unpolarized (product of "
+                          "unpolarized reflectances); sp (s and p reflected separately, averaged); "
+                          "paper_literal (the printed Eq 33, for comparison only)"),
+      max_reflections,
+      groove_choice_param("direction_space", "uv", {"uv", "object", "world"},
+                          "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
+                          "or world space")};
+}
+
+}  // namespace ochre

@@ -1,0 +1,63 @@
+# `cmake --install` into a scratch prefix, then the installed tools run from there with nothing of the
+# source or build tree: every tool prints the project's version, and the installed ochre renders a copy of
+# the installed Cornell box in a scratch directory.
+#   cmake -DBUILD_DIR=<build> -DPREFIX=<scratch prefix> -DWORK_DIR=<scratch dir> -DVERSION=<x.y.z>
+#         -DSOURCE_DIR=<source> -P install_test.cmake
+
+function(fail)
+  string(JOIN "" message ${ARGN})
+  message(FATAL_ERROR "${message}")
+endfunction()
+
+# Runs a command, fails with its output unless it exits 0; OUT receives its stdout.
+function(run out)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr
+                  WORKING_DIRECTORY ${WORK_DIR})
+  if(NOT code EQUAL 0)
+    fail("`${ARGN}` exited with ${code}:\n${stdout}${stderr}")
+  endif()
+  set(${out} "${stdout}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${PREFIX} ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+run(ignored ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
+
+set(tools ochre ochre-diff ochre-regress ochre-converge ochre-bench ochre-brdf ochre-halfspace ochre-vgroove)
+set(expected_files
+    share/ochre/scripts/plot_brdf.py share/ochre/scripts/plot_convergence.py
+    share/ochre/scenes/default/default.json share/ochre/scenes/cornell-box/cornell-box.json
+    share/doc/ochre/LICENSE share/doc/ochre/README.md share/doc/ochre/cli.md share/doc/ochre/scene-format.md)
+foreach(tool IN LISTS tools)
+  list(APPEND expected_files bin/${tool})
+endforeach()
+foreach(file IN LISTS expected_files)
+  if(NOT EXISTS ${PREFIX}/${file})
+    fail("not installed: ${PREFIX}/${file}")
+  endif()
+endforeach()
+
+foreach(tool IN LISTS tools)
+  run(printed ${PREFIX}/bin/${tool} --version)
+  if(NOT printed STREQUAL "${tool} ${VERSION}\n")
+    fail("${tool} --version printed '${printed}', expected '${tool} ${VERSION}' (project(VERSION) of CMakeLists.txt)")
+  endif()
+endforeach()
+
+# The installed ochre names no directory of the source tree, so it cannot depend on it at run time.
+file(STRINGS ${PREFIX}/bin/ochre source_paths REGEX "${SOURCE_DIR}/")
+if(source_paths)
+  fail("the installed ochre refers to the source tree: ${source_paths}")
+endif()
+
+# A scene with its assets (meshes, spectra), copied away from both trees, rendered by the installed ochre.
+file(COPY ${PREFIX}/share/ochre/scenes/cornell-box DESTINATION ${WORK_DIR})
+unset(ENV{OCIO})
+run(ignored ${PREFIX}/bin/ochre render ${WORK_DIR}/cornell-box/cornell-box.json -o ${WORK_DIR}/out.exr
+    --png ${WORK_DIR}/out.png --resolution 16x16 --spp 2 -q)
+foreach(file out.exr out.png)
+  if(NOT EXISTS ${WORK_DIR}/${file})
+    fail("the installed ochre did not write ${WORK_DIR}/${file}")
+  endif()
+endforeach()
+message(STATUS "installed into ${PREFIX}; every tool prints ${VERSION}; the installed ochre rendered ${WORK_DIR}/out.exr")

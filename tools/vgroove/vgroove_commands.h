@@ -1,0 +1,60 @@
+#pragma once
+// The subcommands of ochre-vgroove (docs/tools.md): the V-groove model of Saint-Pierre, Chavel,
+// Simonot and Hebert 2019 (materials/lobes/vgroove/) as numbers, tables and figures. Each returns the
+// exit code (0 done, 1 a plot script failed); bad input throws InputError (the caller prints it and
+// exits with 2). Output files follow docs/cli.md, "Output files": checked before any work
+// (renderer/output_files.h), written under temporary names and renamed together when all are complete
+// (renderer/output_transaction.h).
+
+#include <string>
+
+namespace ochre {
+
+struct MaterialOption {
+  std::string name;  // --material (maps: a comma list)
+  std::string ior;   // --ior n,k
+};
+
+struct BihemisphericalArgs {
+  MaterialOption material;
+  std::string wavelengths = "550", alphas, models = "rigorous";
+  int max_reflections = 0;  // 0 = no limit
+  int quadrature = 96;
+  bool csv = false;
+};
+
+struct DirectionalArgs {
+  MaterialOption material;
+  std::string wavelength = "550", alpha, thetas, phis, model = "rigorous";
+  int max_reflections = 0;
+  bool csv = false;
+};
+
+struct TablesArgs {
+  int quadrature = 96;           // Tables 1 and 3
+  int spectral_quadrature = 32;  // Table 2 (36 wavelengths x 4 materials x 3 models)
+  bool csv = false;
+};
+
+struct MapsArgs {
+  MaterialOption material;
+  std::string alphas, models = "rigorous";
+  int size = 256;
+  std::string output, counts;
+  bool grid = false;  // a labelled figure (tools/plot_vgroove.py); implied by several panels
+};
+
+struct ProfileArgs {
+  MaterialOption material;
+  std::string alpha, models = "rigorous,unpolarized,sp";
+  double step = 0.5;  // degrees of theta
+  std::string output, png;
+};
+
+int run_bihemispherical(const BihemisphericalArgs& args);
+int run_directional(const DirectionalArgs& args);
+int run_tables(const TablesArgs& args);
+int run_maps(const MapsArgs& args);
+int run_profile(const ProfileArgs& args);
+
+}  // namespace ochre
