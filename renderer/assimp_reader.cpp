@@ -64,8 +64,8 @@ std::string ply_header_line_fault(const std::vector<std::string>& w, bool& forma
   return "unknown keyword '" + w[0] + "'";
 }
 
-// Assimp's PLY reader hangs on some malformed headers, so a file that is a PLY by its name or its first
-// bytes must have a well-formed header, up to its end_header line.
+}  // namespace
+
 void check_ply_header(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::string line;
@@ -85,7 +85,7 @@ void check_ply_header(const std::filesystem::path& file) {
   throw InputError(fmt::format("{}: malformed PLY header: no end_header line", where));
 }
 
-void check_faces(const aiScene& scene, const std::string& where) {
+void check_mesh_faces(const aiScene& scene, const std::string& where) {
   for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
     const aiMesh& mesh = *scene.mMeshes[m];
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -98,22 +98,6 @@ void check_faces(const aiScene& scene, const std::string& where) {
                                        where, mesh.mName.C_Str(), f, face.mIndices[i], mesh.mNumVertices));
     }
   }
-}
-
-}  // namespace
-
-const aiScene& read_with_assimp(Assimp::Importer& importer, const std::filesystem::path& file,
-                                unsigned flags) {
-  const std::string where = file.string();
-  check_ply_header(file);
-  const aiScene* scene = importer.ReadFile(where, 0);
-  if (scene == nullptr)
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
-  check_faces(*scene, where);
-  scene = importer.ApplyPostProcessing(flags);
-  if (scene == nullptr)
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
-  return *scene;
 }
 
 }  // namespace ochre

@@ -1,22 +1,21 @@
 #pragma once
-// Reads a mesh file with Assimp for mesh_import and control_mesh, guarded against the inputs that hang or
-// abort Assimp 5.2 (found by fuzzing, docs/validation.md "Fuzzing"):
-// - a PLY file (by its extension, or its first bytes "ply") whose header is malformed (no end_header
-//   line, a misspelt keyword, an unknown type, ...): Assimp's PLY reader loops forever on some;
-// - a face without vertices or with a vertex index out of range (a PLY whose vertex count is smaller
-//   than its vertex lines): Assimp's post-processing asserts (abort) or reads out of bounds.
-// The file is read without post-processing, checked, and only then post-processed.
+// Checks that keep Assimp 5.2 from hanging or aborting on malformed mesh files (found by fuzzing,
+// docs/validation.md "Fuzzing"); renderer/mesh_file_reader.h runs them around its import.
 
 #include <assimp/scene.h>
 
-#include <assimp/Importer.hpp>
 #include <filesystem>
+#include <string>
 
 namespace ochre {
 
-// The scene of `file` after the post-processing steps `flags` (aiProcess_*). Throws InputError starting
-// with the file path when Assimp cannot read it or it fails the checks above.
-const aiScene& read_with_assimp(Assimp::Importer& importer, const std::filesystem::path& file,
-                                unsigned flags);
+// A file that is a PLY by its extension or its first bytes ("ply") must have a well-formed header up to its
+// end_header line (P. Bourke, "PLY - Polygon File Format"): Assimp's PLY reader loops forever on some
+// malformed ones (no end_header, a misspelt keyword, an unknown type). Throws InputError naming the line.
+void check_ply_header(const std::filesystem::path& file);
+
+// Every face of a scene read without post-processing has vertices, all of them in range (a PLY whose vertex
+// count is smaller than its vertex lines): Assimp's post-processing asserts (abort) or reads out of bounds.
+void check_mesh_faces(const aiScene& scene, const std::string& where);
 
 }  // namespace ochre
