@@ -50,11 +50,10 @@ Footprint footprint(const CompareView& v) {
   return {on_plane(right, e), on_plane(cross(right, e), e)};
 }
 
-// The pitch that puts whole periods in each pixel along the image axis that crosses the grooves
-// fastest (one period per pixel): the image is periodic across the grooves, so every pixel's expected
-// value is R and the pixels are independent estimates of it. Few periods keep the plate's coordinates
-// few pitches long: a spawned ray's offset grows with them (renderer/accel.cpp), and near a valley it can
-// put the ray behind the other facet (docs/materials/vgroove.md measures that leak).
+// The pitch that puts one groove period in each pixel along the image axis that crosses the grooves
+// fastest: the image is periodic across the grooves, so every pixel's expected value is R and the pixels
+// are independent estimates of it. Few periods also keep the plate's coordinates few pitches long, which
+// keeps the ray-spawning bias small (kTileLength below).
 double groove_pitch(const CompareView& v) {
   const Footprint f = footprint(v);
   return std::max(std::abs(f.right.y), std::abs(f.up.y)) * kFrame / v.resolution;

@@ -8,9 +8,9 @@
 //   kMicrogroove  a `plane` with the `microgroove` material (profile v).
 // The grooves run along x (the plane's dp/du), phi is measured from y, as in vgroove_reference.h.
 //
-// The image mean is R exactly (in expectation), not only for fine grooves: the pitch is chosen so that
-// the frame holds a whole number of groove periods along one image axis (the image of a plate is
-// periodic across the grooves), and the plate reaches far beyond the frame.
+// The image mean is R exactly (in expectation), not only for fine grooves: the pitch puts one groove
+// period in each pixel along the image axis that crosses the grooves fastest (the image of a plate is
+// periodic across the grooves), and the plate reaches beyond the frame's footprint.
 
 #include <string>
 
