@@ -252,8 +252,6 @@ bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, 
 
 namespace {
 
-// Position, normal and doubled area from the triangle's corners (shared by the two functions below, which
-// load the corners once).
 // The error of a point interpolated in float arithmetic from barycentrics (pbrt-v4 Eq 6.28: gamma(7) times
 // the sum of |b_i p_i|), which also covers the rounding of b0 = 1 - b1 - b2.
 constexpr float kGamma7 = 7.0f * 0x1p-24f / (1.0f - 7.0f * 0x1p-24f);
@@ -267,15 +265,18 @@ float max_abs_component(const Vec3& v) {
   return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
 }
 
+// Position, error bound, normal and doubled area from the triangle's corners (shared by the two functions
+// below, which load the corners once).
 TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   TrianglePoint t;
   const float b0 = 1.0f - b1 - b2;
   t.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
-  const float reach = std::max(max_abs_component(p[0] - t.p),
-                               std::max(max_abs_component(p[1] - t.p), max_abs_component(p[2] - t.p)));
+  const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  // A point of the triangle is no farther from a corner than the longest edge.
+  const float reach = std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
   t.p_error =
       (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
-  const Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+  const Vec3 n = cross(e1, e2);
   t.double_area = length(n);
   t.ng = t.double_area > 0.0f && std::isfinite(t.double_area) ? n / t.double_area : Vec3(0, 0, 0);
   return t;
@@ -343,11 +344,15 @@ Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& ng, const
   constexpr float kMinOffset = 1e-20f;
   const Vec3 offset = n * std::max(dot(abs(n), p_error), kMinOffset);
   Vec3 out = p + offset;
+  // Round away from p (the sum may have rounded back towards it): one step of the bit pattern, the
+  // library's nextafter without its call (out is finite).
   for (int axis = 0; axis < 3; ++axis) {
-    if (offset[axis] > 0.0f)
-      out[axis] = std::nextafter(out[axis], INFINITY);
-    else if (offset[axis] < 0.0f)
-      out[axis] = std::nextafter(out[axis], -INFINITY);
+    if (offset[axis] == 0.0f) continue;
+    const bool up = offset[axis] > 0.0f;
+    float v = out[axis];
+    if (v == 0.0f) v = up ? 0.0f : -0.0f;  // the step from +-0 goes to the smallest float on its side
+    const int32_t bits = std::bit_cast<int32_t>(v);
+    out[axis] = std::bit_cast<float>(bits + (!std::signbit(v) == up ? 1 : -1));
   }
   return out;
 }

@@ -22,7 +22,7 @@ std::string data_file(const char* name) {
 }
 
 // Every section with valid values: lights[0] environment, [1] point, [2] spot; shapes[0] sphere,
-// [1] plane, [2] disk, [3] mesh.
+// [1] plane, [2] disk, [3] mesh, [4] groove_plate, [5] cylinder, [6] grooved_cylinder.
 nlohmann::json base_scene() {
   auto scene = nlohmann::json::parse(R"({
     "description": "every section",
@@ -39,7 +39,12 @@ nlohmann::json base_scene() {
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "subdivisions": 16, "material": "grey"},
                {"type": "plane", "size": [4, 4], "material": "grey", "transform": {"translate": [0, 0, -1]}},
                {"type": "disk", "radius": 0.5, "segments": 16, "material": "grey", "name": "lid"},
-               {"type": "mesh", "smooth_normals": false, "flip_uv_v": false, "material": "grey"}]})");
+               {"type": "mesh", "smooth_normals": false, "flip_uv_v": false, "material": "grey"},
+               {"type": "groove_plate", "alpha": 60, "pitch": 0.1, "count": 4, "length": 1, "orientation": 10,
+                "material": "grey", "transform": {"translate": [0, 0, -2]}},
+               {"type": "cylinder", "radius": 0.2, "height": 0.5, "segments": 8, "material": "grey"},
+               {"type": "grooved_cylinder", "radius": 0.2, "height": 0.5, "alpha": 90, "pitch": 0.1,
+                "segments": 8, "material": "grey"}]})");
   scene["shapes"][3]["file"] = data_file("quad.obj");
   return scene;
 }
@@ -163,6 +168,15 @@ std::vector<FieldCase> cases() {
       {"/shapes/3", displaced(R"("file": "height.exr", "colorspace": 5)"),
        "shapes[3].displacement.colorspace"},
       {"/shapes/3", displaced(R"("file": 5)"), "shapes[3].displacement.file"},
+      {"/shapes/4/alpha", R"("60")", "shapes[4].alpha"},
+      {"/shapes/4/pitch", "true", "shapes[4].pitch"},
+      {"/shapes/4/count", "4.5", "shapes[4].count"},
+      {"/shapes/4/length", "[1]", "shapes[4].length"},
+      {"/shapes/4/orientation", R"("x")", "shapes[4].orientation"},
+      {"/shapes/5/height", R"("x")", "shapes[5].height"},
+      {"/shapes/5/segments", "8.5", "shapes[5].segments"},
+      {"/shapes/6/alpha", "180", "shapes[6].alpha"},
+      {"/shapes/6/pitch", "0", "shapes[6].pitch"},
   };
 }
 

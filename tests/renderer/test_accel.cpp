@@ -220,6 +220,20 @@ TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
   }
 }
 
+TEST(Accel, OffsetOriginsRoundAwayFromZeroCoordinates) {
+  // A point on the plane z = 0 with an exact z: the origin steps off to the side of the direction, by a
+  // tiny but non-zero amount, from +0 and from -0 alike.
+  for (float zero : {0.0f, -0.0f}) {
+    const Vec3 up = offset_ray_origin({1, 2, zero}, {0, 0, 0}, {0, 0, 1}, {0, 0, 1});
+    const Vec3 down = offset_ray_origin({1, 2, zero}, {0, 0, 0}, {0, 0, 1}, {0, 0, -1});
+    EXPECT_GT(up.z, 0.0f);
+    EXPECT_LT(up.z, 1e-19f);
+    EXPECT_LT(down.z, 0.0f);
+    EXPECT_GT(down.z, -1e-19f);
+    EXPECT_EQ(up.x, 1.0f);
+  }
+}
+
 TEST(Accel, OffsetIsTinyAndOnTheSideOfTheDirection) {
   const Vec3 p{100, -0.01f, 2};
   const Vec3 error{3e-5f, 1e-8f, 1e-6f};

@@ -4,9 +4,10 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
+#include <memory>
 
 #include "renderer/input_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -76,12 +77,15 @@ Vec3 unit_direction(double x, double y, double z, const char* name, const std::s
 }  // namespace
 
 DirectionPairTable read_direction_pairs(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot open input file", file.string()));
+  std::error_code error;
+  if (!std::filesystem::exists(file, error))
+    throw InputError(fmt::format("{}: cannot open input file", file.string()));
+  InputFile input = InputFile::open(file, kCsvFileInput);
+  const std::unique_ptr<std::istream> in = input.stream();
   DirectionPairTable table;
   std::array<size_t, kColumns.size()> positions{};
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  for (int number = 1; std::getline(*in, line); ++number) {
     const std::string content = trim(line);
     if (content.empty() || content[0] == '#') continue;
     const std::string where = fmt::format("{}: line {}", file.string(), number);

@@ -6,7 +6,8 @@
 namespace ochre {
 
 ScratchDir::ScratchDir(const std::filesystem::path& base)
-    : path_(base.string() + fmt::format(".tmp-{}", static_cast<long>(::getpid()))) {
+    : path_(base.string() + fmt::format(".tmp-{}", static_cast<long>(::getpid()))),
+      registration_(path_, TemporaryKind::kDirectory) {
   std::filesystem::create_directories(path_);
 }
 

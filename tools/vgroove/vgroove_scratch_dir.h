@@ -1,8 +1,11 @@
 #pragma once
 // A scratch directory of ochre-vgroove (panels of a map grid, scenes of a comparison): created on
-// construction, removed with everything in it when it goes out of scope.
+// construction, removed with everything in it when it goes out of scope, or by the signal handler
+// (renderer/signal_cleanup.h) when the tool is interrupted.
 
 #include <filesystem>
+
+#include "renderer/signal_cleanup.h"
 
 namespace ochre {
 
@@ -18,6 +21,7 @@ class ScratchDir {
 
  private:
   std::filesystem::path path_;
+  TemporaryFileRegistration registration_;
 };
 
 }  // namespace ochre
