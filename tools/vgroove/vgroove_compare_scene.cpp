@@ -53,7 +53,7 @@ Footprint footprint(const CompareView& v) {
 // The pitch that puts one groove period in each pixel along the image axis that crosses the grooves
 // fastest: the image is periodic across the grooves, so every pixel's expected value is R and the pixels
 // are independent estimates of it. Few periods also keep the plate's coordinates few pitches long, which
-// keeps the ray-spawning bias small (kTileLength below).
+// keeps the ray-spawning bias small (shape_json below).
 double groove_pitch(const CompareView& v) {
   const Footprint f = footprint(v);
   return std::max(std::abs(f.right.y), std::abs(f.up.y)) * kFrame / v.resolution;
@@ -102,30 +102,18 @@ std::string material_json(GrooveSurface surface, const CompareView& v) {
   return {};
 }
 
-// The explicit plate is a row of tiles kTileLength pitches long along the grooves (one plate-long strip per
-// facet would do): a spawned ray's origin is offset in proportion to the distance to its triangle's far
-// corner (renderer/accel.cpp), which shifts every path near a groove's edges by that much; with strips
-// as long as the plate that bias reached 1.3e-4 in R (docs/materials/vgroove.md), with tiles 8 pitches
-// long it is about 15 times smaller.
-constexpr double kTileLength = 8.0;
-
 std::string shape_json(GrooveSurface surface, const CompareView& v) {
   const double pitch = groove_pitch(v);
   const PlateSize size = plate_size(v, pitch);
   if (surface != GrooveSurface::kExplicit)  // the plane's size is [x, y]
     return fmt::format(R"({{"type": "plane", "size": [{}, {}], "material": "surface"}})", number(size.along),
                        number(size.across));
+  // One plate; its facets are cut into tiles 8 pitches long (the shape's default), which keeps the
+  // ray-spawning bias of long facets small (docs/materials/vgroove.md).
   const int count = static_cast<int>(std::ceil(size.across / pitch));
-  const int tiles = static_cast<int>(std::ceil(size.along / (kTileLength * pitch)));
-  const double tile = size.along / tiles;
-  std::string shapes;
-  for (int i = 0; i < tiles; ++i)
-    shapes += fmt::format(
-        R"({}{{"type": "groove_plate", "alpha": {}, "pitch": {}, "count": {}, "length": {}, "material": "surface",
-   "transform": [{{"translate": [{}, 0, 0]}}]}})",
-        i ? ",\n  " : "", number(v.alpha_deg), number(pitch), count, number(tile),
-        number(-0.5 * size.along + (i + 0.5) * tile));
-  return shapes;
+  return fmt::format(
+      R"({{"type": "groove_plate", "alpha": {}, "pitch": {}, "count": {}, "length": {}, "material": "surface"}})",
+      number(v.alpha_deg), number(pitch), count, number(size.along));
 }
 
 std::string settings_json(const CompareView& v, int max_depth) {

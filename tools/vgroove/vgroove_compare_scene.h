@@ -3,7 +3,7 @@
 // environment, seen from (theta, phi) by an orthographic camera, so that the mean of the image relative
 // to the environment alone is the surface's hemispherical-directional reflectance R(theta, phi)
 // (Saint-Pierre et al. 2019, Eq 36). Three descriptions of the same surface:
-//   kExplicit     `groove_plate` tiles of real triangles with a smooth conductor (or ideal mirror) material;
+//   kExplicit     a `groove_plate` of real triangles with a smooth conductor (or ideal mirror) material;
 //   kAnalytic     a `plane` with the `vgroove` material;
 //   kMicrogroove  a `plane` with the `microgroove` material (profile v).
 // The grooves run along x (the plane's dp/du), phi is measured from y, as in vgroove_reference.h.
