@@ -49,7 +49,8 @@ TEST(ExampleScenes, RenderAtLowResolution) {
        {"scenes/default/default.json", "scenes/cornell-box/cornell-box.json", "scenes/furnace/furnace.json",
         "scenes/cornell-box/cornell-box-polarized.json", "scenes/cross-polarization/parallel.json",
         "scenes/cross-polarization/crossed.json", "scenes/lambert-sphere/front.json",
-        "scenes/lambert-sphere/back.json"}) {
+        "scenes/lambert-sphere/back.json", "scenes/vgroove/grooved_vase.json",
+        "scenes/vgroove/silicon_models.json"}) {
     const auto dir = scratch_dir();
     const CommandResult r =
         run_ochre("render '" + (source_dir() / scene).string() + "' -o " + (dir / "out.exr").string() +
