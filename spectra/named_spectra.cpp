@@ -59,6 +59,13 @@ constexpr NamedSpectrum kRegistry[] = {
     {"metal-Al-k", [] { return embedded("ior_Al_5nm.csv", "k"); }},
     {"metal-Si-eta", [] { return embedded("ior_Si_5nm.csv", "n"); }},
     {"metal-Si-k", [] { return embedded("ior_Si_5nm.csv", "k"); }},
+    // Hematite (Querry 1985): randomly oriented grains (2 o + e) / 3, and the two rays.
+    {"pigment-hematite-n", [] { return embedded("ior_Fe2O3_5nm.csv", "n"); }},
+    {"pigment-hematite-k", [] { return embedded("ior_Fe2O3_5nm.csv", "k"); }},
+    {"pigment-hematite_o-n", [] { return embedded("ior_Fe2O3_5nm.csv", "n_o"); }},
+    {"pigment-hematite_o-k", [] { return embedded("ior_Fe2O3_5nm.csv", "k_o"); }},
+    {"pigment-hematite_e-n", [] { return embedded("ior_Fe2O3_5nm.csv", "n_e"); }},
+    {"pigment-hematite_e-k", [] { return embedded("ior_Fe2O3_5nm.csv", "k_e"); }},
 };
 
 }  // namespace

@@ -29,13 +29,14 @@ NodeDefinition oren_nayar_node();
 NodeDefinition chandrasekhar_node();
 NodeDefinition vgroove_node();
 NodeDefinition microgroove_node();
+NodeDefinition powder_node();
 
 const NodeRegistry& NodeRegistry::builtin() {
   static const NodeRegistry registry = [] {
     NodeRegistry r;
     for (auto make : {constant_node, spectrum_node, rgb_to_spectrum_node, texture_node, vertex_colour_node,
                       uv_node, add_node, multiply_node, mix_node, lambert_node, emission_node, conductor_node,
-                      dielectric_node, lambert_sphere_node, oren_nayar_node, chandrasekhar_node, vgroove_node, microgroove_node})
+                      dielectric_node, lambert_sphere_node, oren_nayar_node, chandrasekhar_node, vgroove_node, microgroove_node, powder_node})
       r.add(make());
     return r;
   }();
