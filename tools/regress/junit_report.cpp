@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -131,7 +132,8 @@ std::string junit_xml(const RunRecord& run) {
   double total = 0.0;
   for (const SceneRecord& scene : run.scenes) {
     failures += scene.passed ? 0 : 1;
-    total += scene.seconds.value_or(0.0);
+    // The sum of the times as written (milliseconds), so that a file read back and written again is the same.
+    total += std::round(scene.seconds.value_or(0.0) * 1000.0) / 1000.0;
   }
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   xml += fmt::format("<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{}\"",

@@ -1,5 +1,5 @@
-// The script of ochre-regress HTML reports (docs/tools.md, "HTML report"). A plain script, no modules
-// and no fetch(): pages work from a file:// URL. The index gets a "failed scenes only" filter; a scene
+// The script of ochre-regress HTML reports (docs/tools.md, "HTML report"). A plain script that requests
+// nothing (no modules, no network or file requests): pages work from a file:// URL. The index gets a "failed scenes only" filter; a scene
 // page gets the image viewer (side by side, slider, flip; zoom to single pixels; failing pixels marked),
 // the readout of the pixel under the cursor and its spectrum, from window.ochreSceneData (the scene's
 // <name>.data.js, tools/regress/scene_data.h).
