@@ -21,7 +21,7 @@ std::string run_label(const RunRecord& run, size_t index) {
 std::string thumbnail(const std::string& file, const std::string& alt, const SceneSummary& scene) {
   // Small images keep their aspect in a 96-pixel box, drawn with square pixels (report.css).
   const double scale = 96.0 / std::max(scene.width, scene.height);
-  return fmt::format("<img class=\"thumb\" src=\"{}\" alt=\"{}\" width=\"{}\" height=\"{}\" loading=\"lazy\">",
+  return fmt::format("<img class=\"thumb\" src=\"{}\" alt=\"{}\" width=\"{}\" height=\"{}\">",
                      xml_escape(file), xml_escape(alt), static_cast<int>(scene.width * scale + 0.5),
                      static_cast<int>(scene.height * scale + 0.5));
 }

@@ -444,7 +444,8 @@
       this.drawImage(ctx, 'new');
     }
     ctx.restore();
-    if (view.key === 'compare' && this.mode === 'slider') this.drawSplitLine(ctx, w * this.split, h);
+    if (view.key === 'compare' && this.mode === 'slider' && this.split > 0 && this.split < 1)
+      this.drawSplitLine(ctx, w * this.split, h);
     if (this.markFailing && (view.key === 'z' || view.key === 'compare')) this.drawFailing(ctx, s, ox, oy);
     const selected = this.pinned !== null ? this.pinned : this.hover;
     if (selected !== null) this.drawSelection(ctx, selected, s, ox, oy, this.pinned !== null);
