@@ -19,8 +19,8 @@ std::string run_label(const RunRecord& run, size_t index) {
 }
 
 std::string thumbnail(const std::string& file, const std::string& alt, const SceneSummary& scene) {
-  // Small images keep their aspect in a 96-pixel box, drawn with square pixels (report.css).
-  const double scale = 96.0 / std::max(scene.width, scene.height);
+  // Small images keep their aspect in a 72-pixel box, drawn with square pixels (report.css).
+  const double scale = 72.0 / std::max(scene.width, scene.height);
   return fmt::format("<img class=\"thumb\" src=\"{}\" alt=\"{}\" width=\"{}\" height=\"{}\">",
                      xml_escape(file), xml_escape(alt), static_cast<int>(scene.width * scale + 0.5),
                      static_cast<int>(scene.height * scale + 0.5));
@@ -90,7 +90,7 @@ std::string scene_row(const SceneSummary& s, const std::vector<RunRecord>& histo
                      format_significant(s.worst_p), s.failing, s.pixels);
   row += fmt::format("<td class=\"num\">{}</td>\n<td class=\"num\">{}</td>\n", format_significant(s.relmse),
                      fmt::format("{:.2f}", s.mean_de00));
-  row += fmt::format("<td class=\"num\">{}</td>\n", time_cell(s));
+  row += fmt::format("<td class=\"num time\">{}</td>\n", time_cell(s));
   row += fmt::format("<td class=\"thumbs\"><a href=\"{}\">{}{}</a></td>\n", xml_escape(s.page),
                      thumbnail(s.images.reference_thumbnail, "reference of " + s.name, s),
                      thumbnail(s.images.render_thumbnail, "new render of " + s.name, s));
@@ -155,13 +155,14 @@ std::string index_page(const ReportHeading& heading, const std::vector<SceneSumm
                       "correction at image level 1 %: a scene fails when any pixel does.</p>\n",
                       xml_escape(heading.version), xml_escape(heading.timestamp));
   html += "<p><label><input type=\"checkbox\" id=\"failed-only\"> Show failed scenes only</label></p>\n";
-  html += "</header>\n<main>\n<table class=\"scenes\" id=\"scenes\">\n<caption>One row per scene</caption>\n";
+  html += "</header>\n<main>\n<div class=\"scroll\">\n<table class=\"scenes\" id=\"scenes\">\n"
+          "<caption>One row per scene</caption>\n";
   html += "<thead><tr><th scope=\"col\">Result</th><th scope=\"col\">Scene</th><th scope=\"col\">Worst p</th>"
           "<th scope=\"col\">relMSE</th><th scope=\"col\">Mean &Delta;E<sub>00</sub></th>"
           "<th scope=\"col\">Render time</th><th scope=\"col\">Reference, new</th>"
           "<th scope=\"col\">History (oldest first)</th></tr></thead>\n<tbody>\n";
   for (const SceneSummary& scene : scenes) html += scene_row(scene, history, current);
-  html += "</tbody>\n</table>\n";
+  html += "</tbody>\n</table>\n</div>\n";
   html += runs_table(history, current);
   html += "</main>\n";
   return html + html_page_end("report.js");
