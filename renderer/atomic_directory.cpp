@@ -46,8 +46,8 @@ AtomicDirectory::AtomicDirectory(fs::path final_path)
       registration_(temp_path_, TemporaryKind::kDirectory) {
   std::error_code error;
   if (!fs::create_directory(temp_path_, error) || error)
-    fail(final_path_, fmt::format("cannot create {}: {}", temp_path_.string(),
-                                  error ? error.message() : "it exists"));
+    fail(final_path_,
+         fmt::format("cannot create {}: {}", temp_path_.string(), error ? error.message() : "it exists"));
 }
 
 AtomicDirectory::~AtomicDirectory() {
@@ -62,8 +62,7 @@ void AtomicDirectory::commit() {
   if (!fs::exists(fs::symlink_status(final_path_, error))) {
     fs::rename(temp_path_, final_path_, error);
     if (error) fail(final_path_, error.message());
-  } else if (::renameat2(AT_FDCWD, temp_path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) !=
-             0) {
+  } else if (::renameat2(AT_FDCWD, temp_path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) != 0) {
     if (errno != EINVAL && errno != ENOSYS) fail(final_path_, std::strerror(errno));
     replace_by_renames(temp_path_, final_path_);  // the filesystem cannot exchange
   }

@@ -158,7 +158,8 @@ void update_reference(const RegressCommand& cmd, const fs::path& file, const och
 
 // What the HTML report shows of a scene.
 ochre::SceneReport scene_report(const SceneOutcome& outcome, const RenderedScene& r,
-                                ochre::RegressionResult result, ochre::ExrImage reference, ochre::ExrImage render) {
+                                ochre::RegressionResult result, ochre::ExrImage reference,
+                                ochre::ExrImage render) {
   ochre::SceneReport report;
   report.name = outcome.name;
   report.description = r.description;
@@ -218,7 +219,9 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
         p_exr.string(), p_png.string());
   }
   outcome.seconds = seconds_since(start);  // the JUnit time: without writing the report
-  if (html) html->add_scene(scene_report(outcome, r, std::move(result), std::move(reference_image), rendered_image(r)));
+  if (html)
+    html->add_scene(
+        scene_report(outcome, r, std::move(result), std::move(reference_image), rendered_image(r)));
   return outcome;
 }
 
@@ -231,7 +234,8 @@ ochre::RunRecord run_record(const std::vector<SceneOutcome>& outcomes, const std
 
 // The HTML report of the run, or nullptr without --html. Its destination and the history are checked
 // before any rendering, so that a bad option fails at once and touches nothing.
-std::unique_ptr<ochre::HtmlReport> open_html_report(const RegressCommand& cmd, const std::vector<fs::path>& files,
+std::unique_ptr<ochre::HtmlReport> open_html_report(const RegressCommand& cmd,
+                                                    const std::vector<fs::path>& files,
                                                     const std::string& timestamp) {
   if (cmd.html.empty()) return nullptr;
   ochre::HtmlReport::check_destination(cmd.html, {cmd.junit, cmd.output_dir});
@@ -277,8 +281,8 @@ int run(const RegressCommand& cmd) {
   if (html) {
     const ochre::ReportStats stats = html->commit(run);
     fmt::print("HTML report: {} ({} files, {:.0f} KiB, written in {:.2f} s)\n",
-               (fs::path(cmd.html) / "index.html").string(), stats.files, static_cast<double>(stats.bytes) / 1024.0,
-               stats.seconds);
+               (fs::path(cmd.html) / "index.html").string(), stats.files,
+               static_cast<double>(stats.bytes) / 1024.0, stats.seconds);
   }
   return all_passed ? 0 : 1;
 }

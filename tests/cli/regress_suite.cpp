@@ -36,7 +36,8 @@ std::vector<std::string> suite_scenes() {
 
 void copy_suite_scene(const std::string& name, const fs::path& suite) {
   fs::create_directories(suite / "references");
-  fs::copy_file(suite_dir() / (name + ".json"), suite / (name + ".json"), fs::copy_options::overwrite_existing);
+  fs::copy_file(suite_dir() / (name + ".json"), suite / (name + ".json"),
+                fs::copy_options::overwrite_existing);
   fs::copy_file(suite_dir() / "references" / (name + ".exr"), suite / "references" / (name + ".exr"),
                 fs::copy_options::overwrite_existing);
 }

@@ -43,7 +43,8 @@ std::vector<std::string> external_references(const std::string& text) {
     if (text.find(pattern) != std::string::npos) found.emplace_back(pattern);
   }
   const std::regex attribute(R"re(\b(src|href|action|poster|srcset)\s*=\s*["']([^"']*)["'])re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), attribute); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), attribute); it != std::sregex_iterator();
+       ++it) {
     const std::string value = (*it)[2];
     const bool absolute = value.rfind("/", 0) == 0;  // "/x" and "//host/x"
     const bool scheme = std::regex_search(value, std::regex(R"(^[A-Za-z][A-Za-z0-9+.-]*:)"));
@@ -56,7 +57,8 @@ std::vector<std::string> external_references(const std::string& text) {
 std::set<std::string> linked_files(const std::string& html) {
   std::set<std::string> files;
   const std::regex attribute(R"re(\b(?:src|href)="([^"#?]+)[^"]*")re");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute); it != std::sregex_iterator();
+       ++it)
     files.insert((*it)[1]);
   return files;
 }
@@ -69,9 +71,9 @@ bool no_temporaries_beside(const fs::path& report) {
 
 TEST(OchreRegressHtml, ExternalReferenceScanFindsEachKind) {
   // The scan below must be able to fail.
-  for (const char* bad :
-       {"<script src=\"https://cdn.example/x.js\">", "<link href=\"//fonts.example/css\">", "<img src=\"/etc/x.png\">",
-        "@import 'x.css';", "src: url(font.woff2)", "fetch('data.json')", "<a href=\"file:///tmp/x\">"})
+  for (const char* bad : {"<script src=\"https://cdn.example/x.js\">", "<link href=\"//fonts.example/css\">",
+                          "<img src=\"/etc/x.png\">", "@import 'x.css';", "src: url(font.woff2)",
+                          "fetch('data.json')", "<a href=\"file:///tmp/x\">"})
     EXPECT_FALSE(external_references(bad).empty()) << bad;
   EXPECT_TRUE(external_references("<img src=\"scene-a.new.png\"> <a href=\"index.html#x\">").empty());
 }
@@ -93,16 +95,19 @@ TEST(OchreRegressHtml, ReportOfAFailingSuite) {
   const std::string index = read_text_file(report / "index.html");
   EXPECT_NE(index.find("1 of 2 scenes failed"), std::string::npos) << index;
   // Pass and fail as words, not only colours.
-  const std::regex fail_row(R"(<tr class="fail" data-scene="lambert_environment">\s*<td><span class="status fail"><svg[^>]*>.*?</svg><span class="word">FAIL</span>)");
+  const std::regex fail_row(
+      R"(<tr class="fail" data-scene="lambert_environment">\s*<td><span class="status fail"><svg[^>]*>.*?</svg><span class="word">FAIL</span>)");
   EXPECT_TRUE(std::regex_search(index, fail_row)) << index;
-  const std::regex pass_row(R"(<tr class="pass" data-scene="spot_light">\s*<td><span class="status pass"><svg[^>]*>.*?</svg><span class="word">PASS</span>)");
+  const std::regex pass_row(
+      R"(<tr class="pass" data-scene="spot_light">\s*<td><span class="status pass"><svg[^>]*>.*?</svg><span class="word">PASS</span>)");
   EXPECT_TRUE(std::regex_search(index, pass_row)) << index;
   // The committed reference records its render time: the index compares with it.
   EXPECT_NE(index.find("at 1024 spp"), std::string::npos) << index;
 
   // The scene page names the worst pixel that the command line reports.
   std::smatch worst;
-  ASSERT_TRUE(std::regex_search(r.output, worst, std::regex(R"(worst p = \S+ at (x=\d+ y=\d+) \(z = (-?[\d.]+)\))")))
+  ASSERT_TRUE(
+      std::regex_search(r.output, worst, std::regex(R"(worst p = \S+ at (x=\d+ y=\d+) \(z = (-?[\d.]+)\))")))
       << r.output;
   const std::string page = read_text_file(report / "scene-lambert_environment.html");
   EXPECT_NE(page.find(worst[1].str() + " (z = " + worst[2].str() + ")"), std::string::npos) << page;
@@ -220,13 +225,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadDestination{"NonReportDirectory", "--html notes",
                        "notes: cannot write the HTML report there: the directory is not empty and is not an "
                        "ochre-regress report"},
-        BadDestination{"RegularFile", "--html a-file", "a-file: cannot write the HTML report there: it exists and "
-                                                       "is not a directory"},
-        BadDestination{"SymbolicLink", "--html link", "link: cannot write the HTML report there: it is a symbolic link"},
+        BadDestination{"RegularFile", "--html a-file",
+                       "a-file: cannot write the HTML report there: it exists and "
+                       "is not a directory"},
+        BadDestination{"SymbolicLink", "--html link",
+                       "link: cannot write the HTML report there: it is a symbolic link"},
         BadDestination{"MissingParent", "--html missing/report", "does not exist"},
         BadDestination{"JUnitInside", "--html report --junit report/junit.xml",
                        "report/junit.xml lies inside it"},
-        BadDestination{"OutputDirInside", "--html report --output-dir report/out", "report/out lies inside it"},
+        BadDestination{"OutputDirInside", "--html report --output-dir report/out",
+                       "report/out lies inside it"},
         BadDestination{"HistoryWithoutHtml", "--history x.xml", "--history requires --html"}),
     [](const ::testing::TestParamInfo<BadDestination>& info) { return info.param.name; });
 
@@ -264,12 +272,14 @@ INSTANTIATE_TEST_SUITE_P(
                    "history.xml: no <testsuite> element (not a JUnit XML report)"},
         BadHistory{"TestcaseWithoutName", "<testsuite>\n<testcase time=\"1\"/></testsuite>", "history.xml",
                    "history.xml: line 2: <testcase> without a name"},
-        BadHistory{"TimeNotANumber", "<testsuite><testcase name=\"a\" time=\"fast\"/></testsuite>", "history.xml",
+        BadHistory{"TimeNotANumber", "<testsuite><testcase name=\"a\" time=\"fast\"/></testsuite>",
+                   "history.xml",
                    "history.xml: line 1: testcase 'a': time 'fast' is not a number of seconds"},
         BadHistory{"NegativeTime", "<testsuite><testcase name=\"a\" time=\"-1\"/></testsuite>", "history.xml",
                    "time '-1' is not a number of seconds"},
-        BadHistory{"DirectoryWithoutRuns", nullptr, "empty",
-                   "empty: --history: the directory holds no JUnit *.xml file and is not an ochre-regress report"},
+        BadHistory{
+            "DirectoryWithoutRuns", nullptr, "empty",
+            "empty: --history: the directory holds no JUnit *.xml file and is not an ochre-regress report"},
         BadHistory{"Device", nullptr, "/dev/null", "/dev/null: the JUnit file is a character device"}),
     [](const ::testing::TestParamInfo<BadHistory>& info) { return info.param.name; });
 

@@ -64,7 +64,8 @@ TEST(ReportImages, DivergingColoursAndFailureLevel) {
 TEST(JUnit, WrittenRunReadsBack) {
   RunRecord run;
   run.timestamp = "2024-05-01T12:00:00Z";
-  run.scenes = {{"a", true, false, 0.25, ""}, {"b<&>\"'", false, false, 1.5, "worst p = 1e-9 <at> x=1"},
+  run.scenes = {{"a", true, false, 0.25, ""},
+                {"b<&>\"'", false, false, 1.5, "worst p = 1e-9 <at> x=1"},
                 {"c", true, true, std::nullopt, ""}};
   const fs::path file = scratch_dir() / "run.xml";
   write_text(file, junit_xml(run));
@@ -87,12 +88,13 @@ TEST(JUnit, WrittenRunReadsBack) {
 TEST(JUnit, ReadsOtherToolsFiles) {
   // Several suites, errors count as failures, text content and comments, entities.
   const fs::path file = scratch_dir() / "other.xml";
-  write_text(file,
-             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- from another tool -->\n<testsuites>\n"
-             "<testsuite name=\"one\" timestamp=\"2023-01-01T00:00:00\"><properties/>"
-             "<testcase classname=\"k\" name=\"x &amp; y\" time=\"2\"><system-out>text</system-out></testcase>"
-             "</testsuite>\n<testsuite name=\"two\"><testcase name=\"z\"><error type=\"crash\"/></testcase>"
-             "</testsuite>\n</testsuites>\n");
+  write_text(
+      file,
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<!-- from another tool -->\n<testsuites>\n"
+      "<testsuite name=\"one\" timestamp=\"2023-01-01T00:00:00\"><properties/>"
+      "<testcase classname=\"k\" name=\"x &amp; y\" time=\"2\"><system-out>text</system-out></testcase>"
+      "</testsuite>\n<testsuite name=\"two\"><testcase name=\"z\"><error type=\"crash\"/></testcase>"
+      "</testsuite>\n</testsuites>\n");
   const RunRecord run = read_junit(file);
   EXPECT_EQ(run.timestamp, "2023-01-01T00:00:00");
   ASSERT_EQ(run.scenes.size(), 2u);
@@ -106,7 +108,8 @@ TEST(JUnit, ReadsOtherToolsFiles) {
 TEST(ReportHistory, SourcesInOrderAndOnlyTheLastRuns) {
   const fs::path dir = scratch_dir();
   const auto run_file = [&](const fs::path& path, int n) {
-    write_text(path, "<testsuite timestamp=\"t" + std::to_string(n) + "\"><testcase name=\"a\"/></testsuite>");
+    write_text(path,
+               "<testsuite timestamp=\"t" + std::to_string(n) + "\"><testcase name=\"a\"/></testsuite>");
   };
   // A report directory: its history, then its own run.
   run_file(dir / "report" / "history-01.xml", 1);

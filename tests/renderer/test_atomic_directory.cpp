@@ -59,7 +59,8 @@ TEST(AtomicDirectory, MissingParentIsAnError) {
     AtomicDirectory out(dir / "missing" / "report");
     FAIL() << "no error";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find((dir / "missing" / "report").string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find((dir / "missing" / "report").string()), std::string::npos)
+        << e.what();
   }
 }
 

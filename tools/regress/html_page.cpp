@@ -19,7 +19,8 @@ std::string html_page_start(const std::string& title, const std::string& body_cl
 
 std::string html_page_end(const std::string& first_script, const std::string& second_script) {
   std::string html = fmt::format("<script src=\"{}\"></script>\n", xml_escape(first_script));
-  if (!second_script.empty()) html += fmt::format("<script src=\"{}\"></script>\n", xml_escape(second_script));
+  if (!second_script.empty())
+    html += fmt::format("<script src=\"{}\"></script>\n", xml_escape(second_script));
   return html + "</body>\n</html>\n";
 }
 
@@ -30,7 +31,9 @@ std::string status_icon(SceneStatus status) {
       shape = "<circle cx=\"8\" cy=\"8\" r=\"7\"/><path d=\"M4.5 8.5l2.3 2.3 4.7-5\" class=\"mark\"/>";
       break;
     case SceneStatus::kFail:  // a cross in a square
-      shape = "<rect x=\"1\" y=\"1\" width=\"14\" height=\"14\" rx=\"2\"/><path d=\"M5 5l6 6M11 5l-6 6\" class=\"mark\"/>";
+      shape =
+          "<rect x=\"1\" y=\"1\" width=\"14\" height=\"14\" rx=\"2\"/><path d=\"M5 5l6 6M11 5l-6 6\" "
+          "class=\"mark\"/>";
       break;
     case SceneStatus::kSkipped:
     case SceneStatus::kAbsent:  // a dash

@@ -46,7 +46,8 @@ std::vector<std::string> file_prefixes(const std::vector<std::string>& names) {
   std::set<std::string> used;
   for (const std::string& name : names) {
     std::string base = "scene-";
-    for (const char c : name) base += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+    for (const char c : name)
+      base += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
     std::string prefix = base;
     for (int n = 2; used.count(prefix); ++n) prefix = fmt::format("{}-{}", base, n);
     used.insert(prefix);
@@ -71,7 +72,8 @@ void HtmlReport::check_destination(const fs::path& dir, const std::vector<fs::pa
   const fs::path report = normal_absolute(dir);
   const fs::path parent = report.parent_path();
   std::error_code error;
-  if (!fs::is_directory(parent, error)) refuse(dir, fmt::format("directory {} does not exist", parent.string()));
+  if (!fs::is_directory(parent, error))
+    refuse(dir, fmt::format("directory {} does not exist", parent.string()));
   if (::access(parent.c_str(), W_OK | X_OK) != 0)
     refuse(dir, fmt::format("directory {} is not writable", parent.string()));
   struct stat info {};
@@ -85,7 +87,8 @@ void HtmlReport::check_destination(const fs::path& dir, const std::vector<fs::pa
   }
   for (const fs::path& other : others)
     if (!other.empty() && inside(other, report))
-      refuse(dir, fmt::format("{} lies inside it, and the report replaces its directory as a whole", other.string()));
+      refuse(dir, fmt::format("{} lies inside it, and the report replaces its directory as a whole",
+                              other.string()));
 }
 
 HtmlReport::HtmlReport(fs::path dir, const std::vector<std::string>& scenes, std::vector<RunRecord> history,
@@ -129,8 +132,10 @@ ReportStats HtmlReport::commit(const RunRecord& run) {
   write_text_file(dir / "index.html", index_page(heading_, summaries_, history_, run));
   for (const spectra::EmbeddedFile& asset : report_assets()) write_text_file(dir / asset.name, asset.content);
   write_text_file(dir / kReportJUnit, junit_xml(run));
-  for (size_t i = 0; i < history_.size(); ++i) write_text_file(dir / report_history_file_name(i), junit_xml(history_[i]));
-  write_text_file(dir / kReportMarker, "An HTML report of ochre-regress; replaced as a whole by the next one.\n");
+  for (size_t i = 0; i < history_.size(); ++i)
+    write_text_file(dir / report_history_file_name(i), junit_xml(history_[i]));
+  write_text_file(dir / kReportMarker,
+                  "An HTML report of ochre-regress; replaced as a whole by the next one.\n");
   ReportStats stats = count_files(dir);
   dir_.commit();
   writing_time_ += std::chrono::steady_clock::now() - start;

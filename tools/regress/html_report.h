@@ -34,8 +34,8 @@ class HtmlReport {
 
   // scenes: every scene name of the run, in order (for the file names and the links between pages);
   // history: the earlier runs, oldest first.
-  HtmlReport(std::filesystem::path dir, const std::vector<std::string>& scenes, std::vector<RunRecord> history,
-             ReportHeading heading);
+  HtmlReport(std::filesystem::path dir, const std::vector<std::string>& scenes,
+             std::vector<RunRecord> history, ReportHeading heading);
 
   // Writes the scene's page, images and pixel data (into the scratch directory).
   void add_scene(const SceneReport& scene);

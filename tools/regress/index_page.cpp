@@ -32,7 +32,8 @@ std::string time_cell(const SceneSummary& scene) {
     const std::string ratio = format_time_ratio(per_sample_time_ratio(scene.timing, scene.reference_timing));
     html += fmt::format(
         "<br><span class=\"secondary\">reference {} at {} spp</span><br>"
-        "<span class=\"ratio\" title=\"render time per sample per pixel, new / reference\">{} per sample</span>",
+        "<span class=\"ratio\" title=\"render time per sample per pixel, new / reference\">{} per "
+        "sample</span>",
         format_seconds(scene.reference_timing->seconds), scene.reference_timing->spp, ratio);
   } else {
     html += "<br><span class=\"secondary\">reference time not recorded</span>";
@@ -60,7 +61,8 @@ std::string time_sparkline(const std::vector<std::optional<double>>& times) {
       kWidth, kHeight, kWidth, kHeight, points);
 }
 
-std::string history_cell(const std::string& scene, const std::vector<RunRecord>& history, const RunRecord& current) {
+std::string history_cell(const std::string& scene, const std::vector<RunRecord>& history,
+                         const RunRecord& current) {
   std::string items;
   std::vector<std::optional<double>> times;
   const auto add = [&](const RunRecord& run, const std::string& label) {
@@ -80,12 +82,16 @@ std::string history_cell(const std::string& scene, const std::vector<RunRecord>&
                      time_sparkline(times));
 }
 
-std::string scene_row(const SceneSummary& s, const std::vector<RunRecord>& history, const RunRecord& current) {
+std::string scene_row(const SceneSummary& s, const std::vector<RunRecord>& history,
+                      const RunRecord& current) {
   const SceneStatus status = s.passed ? SceneStatus::kPass : SceneStatus::kFail;
-  std::string row = fmt::format("<tr class=\"{}\" data-scene=\"{}\">\n", s.passed ? "pass" : "fail", xml_escape(s.name));
+  std::string row =
+      fmt::format("<tr class=\"{}\" data-scene=\"{}\">\n", s.passed ? "pass" : "fail", xml_escape(s.name));
   row += fmt::format("<td>{}</td>\n", status_badge(status));
-  row += fmt::format("<th scope=\"row\"><a href=\"{}\">{}</a>{}</th>\n", xml_escape(s.page), xml_escape(s.name),
-                     s.description.empty() ? "" : "<br><span class=\"description\">" + xml_escape(s.description) + "</span>");
+  row += fmt::format(
+      "<th scope=\"row\"><a href=\"{}\">{}</a>{}</th>\n", xml_escape(s.page), xml_escape(s.name),
+      s.description.empty() ? ""
+                            : "<br><span class=\"description\">" + xml_escape(s.description) + "</span>");
   row += fmt::format("<td class=\"num\">{}<br><span class=\"secondary\">{} of {} px failing</span></td>\n",
                      format_significant(s.worst_p), s.failing, s.pixels);
   row += fmt::format("<td class=\"num\">{}</td>\n<td class=\"num\">{}</td>\n", format_significant(s.relmse),
@@ -111,19 +117,22 @@ std::string runs_table(const std::vector<RunRecord>& history, const RunRecord& c
   return fmt::format(
       "<section aria-labelledby=\"runs-heading\">\n<h2 id=\"runs-heading\">Runs</h2>\n"
       "<table class=\"runs\">\n<thead><tr><th scope=\"col\">Run</th><th scope=\"col\">Passed</th>"
-      "<th scope=\"col\">Failed</th><th scope=\"col\">Read from</th></tr></thead>\n<tbody>\n{}</tbody>\n</table>\n"
+      "<th scope=\"col\">Failed</th><th scope=\"col\">Read "
+      "from</th></tr></thead>\n<tbody>\n{}</tbody>\n</table>\n"
       "</section>\n",
       rows);
 }
 
 }  // namespace
 
-std::optional<double> per_sample_time_ratio(const SceneTiming& timing, const std::optional<SceneTiming>& reference) {
+std::optional<double> per_sample_time_ratio(const SceneTiming& timing,
+                                            const std::optional<SceneTiming>& reference) {
   if (!reference || reference->seconds <= 0.0 || timing.spp <= 0.0) return std::nullopt;
   return (timing.seconds / timing.spp) / (reference->seconds / reference->spp);
 }
 
-SceneSummary summarize_scene(const SceneReport& report, const std::string& page, const SceneImageFiles& images) {
+SceneSummary summarize_scene(const SceneReport& report, const std::string& page,
+                             const SceneImageFiles& images) {
   SceneSummary s;
   s.name = report.name;
   s.description = report.description;
@@ -151,16 +160,19 @@ std::string index_page(const ReportHeading& heading, const std::vector<SceneSumm
   html += fmt::format("<h1>Regression report: {}</h1>\n", xml_escape(heading.suite));
   html += fmt::format("<p class=\"summary\">{} {} of {} scenes failed.</p>\n",
                       status_badge(failed ? SceneStatus::kFail : SceneStatus::kPass), failed, scenes.size());
-  html += fmt::format("<p class=\"secondary\">ochre {}, run {}. Per-pixel luminance z-test with Sidak "
-                      "correction at image level 1 %: a scene fails when any pixel does.</p>\n",
-                      xml_escape(heading.version), xml_escape(heading.timestamp));
+  html += fmt::format(
+      "<p class=\"secondary\">ochre {}, run {}. Per-pixel luminance z-test with Sidak "
+      "correction at image level 1 %: a scene fails when any pixel does.</p>\n",
+      xml_escape(heading.version), xml_escape(heading.timestamp));
   html += "<p><label><input type=\"checkbox\" id=\"failed-only\"> Show failed scenes only</label></p>\n";
-  html += "</header>\n<main>\n<div class=\"scroll\">\n<table class=\"scenes\" id=\"scenes\">\n"
-          "<caption>One row per scene</caption>\n";
-  html += "<thead><tr><th scope=\"col\">Result</th><th scope=\"col\">Scene</th><th scope=\"col\">Worst p</th>"
-          "<th scope=\"col\">relMSE</th><th scope=\"col\">Mean &Delta;E<sub>00</sub></th>"
-          "<th scope=\"col\">Render time</th><th scope=\"col\">Reference, new</th>"
-          "<th scope=\"col\">History (oldest first)</th></tr></thead>\n<tbody>\n";
+  html +=
+      "</header>\n<main>\n<div class=\"scroll\">\n<table class=\"scenes\" id=\"scenes\">\n"
+      "<caption>One row per scene</caption>\n";
+  html +=
+      "<thead><tr><th scope=\"col\">Result</th><th scope=\"col\">Scene</th><th scope=\"col\">Worst p</th>"
+      "<th scope=\"col\">relMSE</th><th scope=\"col\">Mean &Delta;E<sub>00</sub></th>"
+      "<th scope=\"col\">Render time</th><th scope=\"col\">Reference, new</th>"
+      "<th scope=\"col\">History (oldest first)</th></tr></thead>\n<tbody>\n";
   for (const SceneSummary& scene : scenes) html += scene_row(scene, history, current);
   html += "</tbody>\n</table>\n</div>\n";
   html += runs_table(history, current);

@@ -28,7 +28,8 @@ struct SceneSummary {
   int width = 0, height = 0;
 };
 
-SceneSummary summarize_scene(const SceneReport& report, const std::string& page, const SceneImageFiles& images);
+SceneSummary summarize_scene(const SceneReport& report, const std::string& page,
+                             const SceneImageFiles& images);
 
 // New render time per sample over the reference's, when the reference recorded its time.
 std::optional<double> per_sample_time_ratio(const SceneTiming& timing,

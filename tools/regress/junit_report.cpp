@@ -65,8 +65,7 @@ void XMLCALL start_element(void* data, const XML_Char* name, const XML_Char** at
     record.seconds = parse_seconds(parse, scene, attribute(attributes, "time"));
     parse.run.scenes.push_back(std::move(record));
     parse.open_testcase = &parse.run.scenes.back();
-  } else if (parse.open_testcase &&
-             (std::strcmp(name, "failure") == 0 || std::strcmp(name, "error") == 0)) {
+  } else if (parse.open_testcase && (std::strcmp(name, "failure") == 0 || std::strcmp(name, "error") == 0)) {
     parse.open_testcase->passed = false;
     if (const char* message = attribute(attributes, "message")) parse.open_testcase->message = message;
   } else if (parse.open_testcase && std::strcmp(name, "skipped") == 0) {
@@ -136,8 +135,9 @@ std::string junit_xml(const RunRecord& run) {
     total += std::round(scene.seconds.value_or(0.0) * 1000.0) / 1000.0;
   }
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  xml += fmt::format("<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{}\"",
-                     run.scenes.size(), failures, format_seconds(total));
+  xml +=
+      fmt::format("<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{}\"",
+                  run.scenes.size(), failures, format_seconds(total));
   if (!run.timestamp.empty()) xml += fmt::format(" timestamp=\"{}\"", xml_escape(run.timestamp));
   xml += ">\n";
   for (const SceneRecord& scene : run.scenes) {

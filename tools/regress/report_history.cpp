@@ -13,7 +13,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> sorted_files(const fs::path& dir, const std::string& prefix, const std::string& extension) {
+std::vector<fs::path> sorted_files(const fs::path& dir, const std::string& prefix,
+                                   const std::string& extension) {
   std::vector<fs::path> files;
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(dir, error)) {
@@ -21,7 +22,8 @@ std::vector<fs::path> sorted_files(const fs::path& dir, const std::string& prefi
     if (entry.path().extension() == extension && name.rfind(prefix, 0) == 0 && !entry.is_directory())
       files.push_back(entry.path());
   }
-  if (error) throw InputError(fmt::format("{}: cannot list the directory: {}", dir.string(), error.message()));
+  if (error)
+    throw InputError(fmt::format("{}: cannot list the directory: {}", dir.string(), error.message()));
   std::sort(files.begin(), files.end());
   return files;
 }

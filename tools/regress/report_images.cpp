@@ -54,9 +54,10 @@ std::array<std::uint8_t, 3> diverging_colour(double t) {
   return colour;
 }
 
-SceneImageFiles write_scene_images(const SceneReport& report, const fs::path& dir, const std::string& prefix) {
-  SceneImageFiles files{prefix + ".reference.png", prefix + ".new.png", prefix + ".difference.png",
-                        prefix + ".z.png", prefix + ".reference.png", prefix + ".new.png"};
+SceneImageFiles write_scene_images(const SceneReport& report, const fs::path& dir,
+                                   const std::string& prefix) {
+  SceneImageFiles files{prefix + ".reference.png", prefix + ".new.png",       prefix + ".difference.png",
+                        prefix + ".z.png",         prefix + ".reference.png", prefix + ".new.png"};
   const RgbImage reference = report_rgb(report.reference, report.working_space);
   const RgbImage render = report_rgb(report.render, report.working_space);
   write_display_png(dir / files.reference, reference.width, reference.height, reference.rgb, report.display);

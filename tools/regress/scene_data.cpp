@@ -115,10 +115,10 @@ std::string spectral_js(const char* side, const ExrImage& image, const PixelGrid
   const SpectralLayers layers = spectral_layers(image);
   if (layers.names.empty()) return "";
   const int bins = static_cast<int>(layers.names.size());
-  return fmt::format("    {}: {{wavelengths: {}, components: {}, data: \"{}\"}}", js_string(side),
-                     number_list(layers.wavelengths), bins,
-                     base64_floats(reduce_to_grid(interleave(image, layers.names), bins, grid,
-                                                  BlockReduce::kMean)));
+  return fmt::format(
+      "    {}: {{wavelengths: {}, components: {}, data: \"{}\"}}", js_string(side),
+      number_list(layers.wavelengths), bins,
+      base64_floats(reduce_to_grid(interleave(image, layers.names), bins, grid, BlockReduce::kMean)));
 }
 
 std::string join(const std::vector<std::string>& parts, const char* separator) {
@@ -151,7 +151,8 @@ std::string scene_data_js(const SceneReport& report, PixelGrid& grid) {
                     js_string(report.name), grid.width, grid.height, grid.step, grid.columns, grid.rows);
   js += fmt::format("  workingSpace: {},\n  rgbToXyz: {},\n", js_string(report.working_space),
                     number_list(matrix));
-  js += fmt::format("  alphaPixel: {}, criticalZ: {},\n", report.result.alpha_pixel, critical_z(report.result));
+  js +=
+      fmt::format("  alphaPixel: {}, criticalZ: {},\n", report.result.alpha_pixel, critical_z(report.result));
   js += "  layers: {\n" + join(layer_entries, ",\n") + "\n  },\n";
   js += "  spectral: {\n" +
         join({spectral_js("reference", report.reference, grid), spectral_js("new", report.render, grid)},

@@ -14,7 +14,7 @@
 namespace ochre {
 
 struct ScenePageLinks {
-  std::string data_script;  // <name>.data.js
+  std::string data_script;                                         // <name>.data.js
   std::string previous_page, previous_name, next_page, next_name;  // "" at the ends
 };
 

@@ -23,10 +23,10 @@ struct SceneReport {
   std::string description;  // the scene file's description
   std::string message;      // the failure message, "" when it passed
   RegressionResult result;
-  ExrImage reference;  // as read from references/<name>.exr
-  ExrImage render;     // the new render, as make_reference_image writes it
-  std::string working_space;  // of the R, G, B channels of both ("rec709" or "acescg")
-  DisplayOptions display;     // the scene's PNG output transform
+  ExrImage reference;          // as read from references/<name>.exr
+  ExrImage render;             // the new render, as make_reference_image writes it
+  std::string working_space;   // of the R, G, B channels of both ("rec709" or "acescg")
+  DisplayOptions display;      // the scene's PNG output transform
   ImageComparison comparison;  // new render against reference (relMSE, mean Delta E00, per-pixel Delta E00)
   SceneTiming timing;
   std::optional<SceneTiming> reference_timing;  // from the reference's ochre:render_seconds, when recorded
