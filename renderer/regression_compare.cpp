@@ -8,6 +8,8 @@
 #include "renderer/atomic_file.h"
 #include "renderer/image_metrics.h"
 #include "renderer/input_error.h"
+#include "renderer/render_output.h"
+#include "renderer/stokes_output.h"
 
 namespace ochre {
 namespace {
@@ -103,6 +105,9 @@ ExrImage make_reference_image(const Film& film, const std::vector<float>& rgb, u
   image.channels.emplace_back("variance.Y",
                               std::vector<float>(e.variance_of_mean.begin(), e.variance_of_mean.end()));
   image.string_attributes["ochre:regress_spp"] = std::to_string(spp);
+  // The layers the scene asks for, for the HTML report's pixel readout (ochre-regress --html).
+  if (film.has_stokes()) add_stokes_channels(film, image);
+  if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   return image;
 }
 

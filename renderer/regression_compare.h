@@ -58,7 +58,9 @@ RegressionResult compare_luminance(const LuminanceEstimate& test, const Luminanc
                                    double alpha = kRegressionAlpha);
 
 // Reference EXR channels: R, G, B (working-space mean of `rgb`, 3 floats per pixel), "Y" (mean
-// luminance), "variance.Y" (variance of the mean of Y); string attribute "ochre:regress_spp".
+// luminance), "variance.Y" (variance of the mean of Y); string attribute "ochre:regress_spp". A film with
+// Stokes or spectral layers adds them as `ochre render` writes them (stokes.S0.X ..., DoLP, AoLP,
+// S0.<nm> ...; renderer/stokes_output.h, render_output.h).
 ExrImage make_reference_image(const Film& film, const std::vector<float>& rgb, uint32_t spp);
 
 // Reads the luminance estimate back from a reference EXR; throws InputError naming the file and the

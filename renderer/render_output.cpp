@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 
 #include "ochre/version.h"
 #include "renderer/atomic_file.h"
@@ -17,7 +18,6 @@
 
 namespace ochre {
 
-namespace {
 DisplayOptions display_options(const OutputSettings& o) {
   DisplayOptions d;
   d.ocio_config = o.ocio_config;
@@ -27,6 +27,8 @@ DisplayOptions display_options(const OutputSettings& o) {
   d.exposure_stops = o.exposure;
   return d;
 }
+
+namespace {
 // Layers "albedo.R/G/B" (working space), "normal.X/Y/Z" (world), "depth.Z" (distance along the camera
 // ray, 0 where nothing was hit) and "samples.Y" (samples per pixel).
 void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage& image) {
@@ -53,8 +55,8 @@ void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage&
   for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
 }
 
-// "S0.550,000000nm": the OpenEXR spectral layout of Fichet, Pacanowski & Wilkie (JCGT 2021): Stokes
-// component, a dot, the bin centre with a decimal comma, the unit.
+}  // namespace
+
 std::string spectral_channel_name(int component, float centre_nm) {
   std::string value = fmt::format("{:.6f}", centre_nm);
   std::replace(value.begin(), value.end(), '.', ',');
@@ -76,7 +78,18 @@ void add_spectral_channels(const Film& film, ExrImage& image) {
   image.string_attributes["emissiveUnits"] = "W.m^-2.sr^-1";
 }
 
-}  // namespace
+std::optional<float> spectral_channel_wavelength(std::string_view name, int component) {
+  const std::string prefix = fmt::format("S{}.", component);
+  if (name.size() <= prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
+      name.substr(name.size() - 2) != "nm")
+    return std::nullopt;
+  std::string value(name.substr(prefix.size(), name.size() - prefix.size() - 2));
+  std::replace(value.begin(), value.end(), ',', '.');
+  float nm = 0.0f;
+  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), nm);
+  if (error != std::errc() || end != value.data() + value.size() || !(nm > 0.0f)) return std::nullopt;
+  return nm;
+}
 
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
   const ColorSpace space = parse_color_space(colorspace);

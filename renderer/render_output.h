@@ -3,9 +3,13 @@
 // and a display-referred PNG through OpenColorIO. Outputs are checked before rendering
 // (check_outputs) so a bad path or display setting fails with no work done and no file written.
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "renderer/display_image.h"
+#include "renderer/exr_writer.h"
 #include "renderer/film.h"
 #include "renderer/render.h"
 #include "renderer/render_settings.h"
@@ -14,6 +18,18 @@ namespace ochre {
 
 // Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+
+// The display transform of the PNG output (OCIO config, display, view, working space, exposure).
+DisplayOptions display_options(const OutputSettings& outputs);
+
+// "S0.550,000000nm": the OpenEXR spectral layout of Fichet, Pacanowski & Wilkie (JCGT 2021): Stokes
+// component, a dot, the bin centre with a decimal comma, the unit.
+std::string spectral_channel_name(int component, float centre_nm);
+// The bin centre of a channel so named for that Stokes component, or nothing for any other channel.
+std::optional<float> spectral_channel_wavelength(std::string_view name, int component = 0);
+// Adds the film's spectral layers (S0.<nm>, and S1..S3.<nm> with Stokes) and the spectral layout's header
+// attributes to image (film.spectral_bins() > 0).
+void add_spectral_channels(const Film& film, ExrImage& image);
 
 // Throws InputError when an output directory is missing or not writable, or the display
 // transform cannot be built (unknown config, display or view).

@@ -21,6 +21,7 @@ namespace ochre {
 
 struct Scene {
   std::filesystem::path file;
+  std::string description;  // the scene file's "description", shown by reports
   RenderSettings settings;
   OutputSettings outputs;
   Camera camera;

@@ -450,7 +450,7 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
   const JsonFields top(root, file + ":");
   top.check_known(
       {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
-  top.string("description", "");
+  scene->description = top.string("description", "");
   if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
     top.fail("ochre", "expected a version string or number");
 

@@ -1,7 +1,9 @@
 // ochre-regress: noise-aware image regression suite (docs/tools.md).
-//   ochre-regress DIR [--update] [--junit OUT.xml] [--spp N] [--reference-spp N] [--threads N]
+//   ochre-regress DIR [--update] [--junit OUT.xml] [--html REPORT_DIR [--history RUN ...]] [--spp N]
+//                     [--reference-spp N] [--threads N]
 // Renders every DIR/*.json scene and compares its luminance with DIR/references/<name>.exr by a per-pixel
-// z-test with Sidak correction (renderer/regression_compare.h).
+// z-test with Sidak correction (renderer/regression_compare.h); --html writes a report to look at
+// (tools/regress/html_report.h).
 // Exit codes: 0 = every scene passes, 1 = a scene fails, 2 = bad input or usage.
 #include <fmt/format.h>
 
@@ -26,6 +28,9 @@
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/regress/html_report.h"
+#include "tools/regress/junit_report.h"
+#include "tools/regress/report_history.h"
 
 namespace fs = std::filesystem;
 
@@ -45,6 +50,8 @@ struct RegressCommand {
   std::optional<int> threads;
   std::vector<std::string> only;
   std::string output_dir = "regress-output";
+  std::string html;
+  std::vector<std::string> history;
 };
 
 struct SceneOutcome {
@@ -59,9 +66,24 @@ struct SceneOutcome {
 
 struct RenderedScene {
   std::unique_ptr<ochre::Film> film;
-  std::string colorspace;
+  ochre::OutputSettings outputs;
+  std::string description;
   uint32_t spp = 0;
+  double seconds = 0.0;  // the render alone
 };
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The film keeps the Stokes and spectral layers the scene's outputs ask for (an EXR path or not): the
+// reference and the failing render's EXR carry them, and the HTML report shows them.
+ochre::FilmLayers regress_film_layers(const ochre::OutputSettings& outputs) {
+  ochre::FilmLayers layers = ochre::film_layers(outputs);
+  layers.aovs = false;
+  layers.spectral_bins = outputs.spectral_bins;
+  return layers;
+}
 
 RenderedScene render_scene(const fs::path& file, uint32_t spp, uint64_t seed, std::optional<int> threads) {
   ochre::SceneOverrides overrides;
@@ -70,11 +92,19 @@ RenderedScene render_scene(const fs::path& file, uint32_t spp, uint64_t seed, st
   overrides.threads = threads;
   const auto scene = ochre::load_scene(file, overrides);
   RenderedScene r;
-  r.film = std::make_unique<ochre::Film>(scene->settings.width, scene->settings.height);
+  r.film = std::make_unique<ochre::Film>(scene->settings.width, scene->settings.height,
+                                         regress_film_layers(scene->outputs));
+  const auto start = std::chrono::steady_clock::now();
   ochre::render(*scene, *r.film);
-  r.colorspace = scene->outputs.colorspace;
+  r.seconds = seconds_since(start);
+  r.outputs = scene->outputs;
+  r.description = scene->description;
   r.spp = spp;
   return r;
+}
+
+ochre::ExrImage rendered_image(const RenderedScene& r) {
+  return ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.outputs.colorspace), r.spp);
 }
 
 fs::path reference_path(const fs::path& dir, const std::string& name) {
@@ -117,14 +147,35 @@ void update_reference(const RegressCommand& cmd, const fs::path& file, const och
   ochre::check_output_files({out}, inputs);  // before the render: the scene and its files are read
   const uint32_t spp = cmd.reference_spp.value_or(kReferenceSppFactor * settings.spp);
   const RenderedScene r = render_scene(file, spp, kReferenceSeedOffset + settings.seed, cmd.threads);
+  ochre::ExrImage image = rendered_image(r);
+  image.string_attributes[ochre::kRenderSecondsAttribute] = fmt::format("{:.6f}", r.seconds);
   // write_exr goes through a temporary file and a rename: an interrupted update keeps the old reference.
-  ochre::write_exr(out, ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), spp));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ochre::write_exr(out, image);
+  const double seconds = seconds_since(start);
   fmt::print("updated {} ({} spp, seed {}, {:.2f} s)\n", out.string(), spp,
              kReferenceSeedOffset + settings.seed, seconds);
 }
 
-SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const ochre::InputFileLog& inputs) {
+// What the HTML report shows of a scene.
+ochre::SceneReport scene_report(const SceneOutcome& outcome, const RenderedScene& r,
+                                ochre::RegressionResult result, ochre::ExrImage reference,
+                                ochre::ExrImage render) {
+  ochre::SceneReport report;
+  report.name = outcome.name;
+  report.description = r.description;
+  report.message = outcome.message;
+  report.result = std::move(result);
+  report.reference = std::move(reference);
+  report.render = std::move(render);
+  report.working_space = r.outputs.colorspace;
+  report.display = ochre::display_options(r.outputs);
+  report.timing = {r.seconds, static_cast<double>(r.spp)};
+  ochre::compare_scene_images(report);
+  return report;
+}
+
+SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const ochre::InputFileLog& inputs,
+                       ochre::HtmlReport* html) {
   const auto start = std::chrono::steady_clock::now();
   SceneOutcome outcome;
   outcome.name = file.stem().string();
@@ -132,8 +183,8 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
   if (!fs::exists(ref_file))
     throw ochre::InputError(ref_file.string() + ": reference missing; create it with `ochre-regress " +
                             cmd.dir + " --update`");
-  const ochre::LuminanceEstimate reference =
-      ochre::luminance_from_reference(ochre::read_exr(ref_file), ref_file);
+  ochre::ExrImage reference_image = ochre::read_exr(ref_file);
+  const ochre::LuminanceEstimate reference = ochre::luminance_from_reference(reference_image, ref_file);
   const ochre::RenderSettings settings = scene_settings(file);
   const RenderedScene r = render_scene(file, cmd.spp.value_or(settings.spp), settings.seed, cmd.threads);
   if (r.film->width() != reference.width || r.film->height() != reference.height)
@@ -141,8 +192,7 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
         "{}: reference is {}x{} but the scene renders {}x{}; regenerate it "
         "with `ochre-regress {} --update`",
         ref_file.string(), reference.width, reference.height, r.film->width(), r.film->height(), cmd.dir));
-  const ochre::RegressionResult result =
-      ochre::compare_luminance(ochre::luminance_from_film(*r.film), reference);
+  ochre::RegressionResult result = ochre::compare_luminance(ochre::luminance_from_film(*r.film), reference);
   outcome.pixels = result.p_values.size();
   outcome.worst_p = result.worst_p;
   outcome.failing = result.failing_pixels;
@@ -157,8 +207,7 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
     if (!cmd.junit.empty()) outputs.emplace_back(cmd.junit);
     ochre::check_output_files(outputs, inputs);
     ochre::OutputTransaction transaction;  // the three files of a failure, or none
-    ochre::write_exr(transaction.add(render_exr),
-                     ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), r.spp));
+    ochre::write_exr(transaction.add(render_exr), rendered_image(r));
     ochre::write_exr(transaction.add(p_exr), ochre::p_value_image(result));
     ochre::write_p_value_heatmap(transaction.add(p_png), result);
     transaction.commit();
@@ -169,58 +218,32 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
         result.worst_x, result.worst_y, result.z_scores[result.worst_y * result.width + result.worst_x],
         p_exr.string(), p_png.string());
   }
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = seconds_since(start);  // the JUnit time: without writing the report
+  if (html)
+    html->add_scene(
+        scene_report(outcome, r, std::move(result), std::move(reference_image), rendered_image(r)));
   return outcome;
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+ochre::RunRecord run_record(const std::vector<SceneOutcome>& outcomes, const std::string& timestamp) {
+  ochre::RunRecord run;
+  run.timestamp = timestamp;
+  for (const auto& o : outcomes) run.scenes.push_back({o.name, o.passed, false, o.seconds, o.message});
+  return run;
 }
 
-void write_junit(const fs::path& path, const std::vector<SceneOutcome>& outcomes) {
-  size_t failures = 0;
-  double total = 0.0;
-  for (const auto& o : outcomes) {
-    failures += o.passed ? 0 : 1;
-    total += o.seconds;
-  }
-  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  xml += fmt::format(
-      "<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-      outcomes.size(), failures, total);
-  for (const auto& o : outcomes) {
-    xml += fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\" time=\"{:.3f}\"",
-                       xml_escape(o.name), o.seconds);
-    if (o.passed) {
-      xml += "/>\n";
-    } else {
-      xml += fmt::format(">\n    <failure message=\"{}\"/>\n  </testcase>\n", xml_escape(o.message));
-    }
-  }
-  xml += "</testsuite>\n";
-  ochre::write_text_file(path, xml);
+// The HTML report of the run, or nullptr without --html. Its destination and the history are checked
+// before any rendering, so that a bad option fails at once and touches nothing.
+std::unique_ptr<ochre::HtmlReport> open_html_report(const RegressCommand& cmd,
+                                                    const std::vector<fs::path>& files,
+                                                    const std::string& timestamp) {
+  if (cmd.html.empty()) return nullptr;
+  ochre::HtmlReport::check_destination(cmd.html, {cmd.junit, cmd.output_dir});
+  std::vector<ochre::RunRecord> history = ochre::load_history(cmd.history);
+  std::vector<std::string> names;
+  for (const auto& file : files) names.push_back(file.stem().string());
+  return std::make_unique<ochre::HtmlReport>(cmd.html, names, std::move(history),
+                                             ochre::ReportHeading{cmd.dir, timestamp, OCHRE_VERSION});
 }
 
 int run(const RegressCommand& cmd) {
@@ -235,8 +258,10 @@ int run(const RegressCommand& cmd) {
     return 0;
   }
   if (!cmd.junit.empty()) ochre::check_output_files({cmd.junit}, inputs);
+  const std::string timestamp = ochre::utc_timestamp_now();
+  const std::unique_ptr<ochre::HtmlReport> html = open_html_report(cmd, files, timestamp);
   std::vector<SceneOutcome> outcomes;
-  for (const auto& file : files) outcomes.push_back(run_scene(cmd, file, inputs));
+  for (const auto& file : files) outcomes.push_back(run_scene(cmd, file, inputs, html.get()));
 
   fmt::print("{:<28} {:>7} {:>10} {:>8} {:>8}  {}\n", "scene", "pixels", "worst p", "failing", "time",
              "result");
@@ -248,9 +273,16 @@ int run(const RegressCommand& cmd) {
   }
   for (const auto& o : outcomes)
     if (!o.passed) fmt::print(stderr, "ochre-regress: {} FAILED: {}\n", o.name, o.message);
+  const ochre::RunRecord run = run_record(outcomes, timestamp);
   if (!cmd.junit.empty()) {
     ochre::check_output_files({cmd.junit}, inputs);
-    write_junit(cmd.junit, outcomes);
+    ochre::write_text_file(cmd.junit, ochre::junit_xml(run));
+  }
+  if (html) {
+    const ochre::ReportStats stats = html->commit(run);
+    fmt::print("HTML report: {} ({} files, {:.0f} KiB, written in {:.2f} s)\n",
+               (fs::path(cmd.html) / "index.html").string(), stats.files,
+               static_cast<double>(stats.bytes) / 1024.0, stats.seconds);
   }
   return all_passed ? 0 : 1;
 }
@@ -276,6 +308,13 @@ int main(int argc, char** argv) {
   app.add_option("--scene", cmd.only, "Run only this scene (file name without .json; repeatable)");
   app.add_option("--output-dir", cmd.output_dir, "Where failing scenes' renders and p-value images go")
       ->capture_default_str();
+  auto* html = app.add_option("--html", cmd.html,
+                              "Write a static HTML report into this directory (replaced as a whole; "
+                              "only an earlier report or an empty directory is replaced)");
+  app.add_option("--history", cmd.history,
+                 "Earlier runs for the report's history: JUnit files, report directories or directories of "
+                 "JUnit files (oldest first)")
+      ->needs(html);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

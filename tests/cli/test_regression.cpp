@@ -10,59 +10,23 @@
 #include <regex>
 #include <sstream>
 
-#include "cli/cli_runner.h"
+#include "cli/regress_suite.h"
 #include "renderer/exr_reader.h"
 #include "renderer/regression_compare.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RegressResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-// 'path', for a shell command line (built by appending: GCC 12 warns falsely on "'" + std::string).
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += "'";
-  return text;
-}
-
-RegressResult run_regress(const std::string& args, const fs::path& dir) {
-  const CommandResult r = run_tool("ochre-regress", args, dir);
-  return {r.exit_code, r.output};
-}
-
-fs::path suite_dir() {
-  return source_dir() / "tests" / "regression";
-}
-
-std::vector<std::string> suite_scenes() {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(suite_dir()))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // --- The regression suite: one ctest test per committed scene. ---
 class CommittedScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CommittedScene, MatchesItsReference) {
   const auto dir = scratch_dir();
-  const RegressResult r = run_regress(quoted(suite_dir()) + " --scene " + GetParam(), dir);
+  const CommandResult r = run_regress(quoted(suite_dir()) + " --scene " + GetParam(), dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("PASS"), std::string::npos) << r.output;
 }
@@ -76,27 +40,15 @@ TEST(OchreRegress, SuiteCoversTheFeaturesAndReferencesAreSmall) {
     const fs::path reference = suite_dir() / "references" / (name + ".exr");
     ASSERT_TRUE(fs::exists(reference)) << reference;
     EXPECT_LT(fs::file_size(reference), 100u * 1024u) << reference;
+    // The HTML report compares render times with the reference's.
+    EXPECT_EQ(read_exr(reference).string_attributes.count("ochre:render_seconds"), 1u) << reference;
   }
-}
-
-// A copy of the Lambert sphere with albedo 0.5 -> 0.55, compared with the committed reference.
-fs::path perturbed_suite(const fs::path& dir) {
-  std::string scene = read_text(suite_dir() / "lambert_environment.json");
-  const std::string from = "\"color\": 0.5";
-  const size_t at = scene.find(from);
-  EXPECT_NE(at, std::string::npos);
-  scene.replace(at, from.size(), "\"color\": 0.55");
-  fs::create_directories(dir / "suite" / "references");
-  std::ofstream(dir / "suite" / "lambert_environment.json") << scene;
-  fs::copy_file(suite_dir() / "references" / "lambert_environment.exr",
-                dir / "suite" / "references" / "lambert_environment.exr");
-  return dir / "suite";
 }
 
 TEST(OchreRegress, PerturbedAlbedoFailsAndWritesPValueImage) {
   const auto dir = scratch_dir();
   const fs::path suite = perturbed_suite(dir);
-  const RegressResult r = run_regress("suite --output-dir out --junit report.xml", dir);
+  const CommandResult r = run_regress("suite --output-dir out --junit report.xml", dir);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("FAIL"), std::string::npos) << r.output;
   const fs::path p_exr = dir / "out" / "lambert_environment.pvalue.exr";
@@ -111,7 +63,7 @@ TEST(OchreRegress, PerturbedAlbedoFailsAndWritesPValueImage) {
   EXPECT_LT(*std::min_element(p->begin(), p->end()), level);
   // Brighter albedo: the failing pixels are brighter than the reference (positive z).
   EXPECT_GT(*std::max_element(z->begin(), z->end()), 4.0);
-  const std::string xml = read_text(dir / "report.xml");
+  const std::string xml = read_text_file(dir / "report.xml");
   EXPECT_NE(xml.find("<failure message="), std::string::npos) << xml;
 
   // The unperturbed scene passes against the same reference.
@@ -150,9 +102,9 @@ std::vector<std::string> xml_elements(const std::string& xml, bool& well_formed)
 
 TEST(OchreRegress, JUnitReportListsEveryScene) {
   const auto dir = scratch_dir();
-  const RegressResult r = run_regress(quoted(suite_dir()) + " --junit report.xml", dir);
+  const CommandResult r = run_regress(quoted(suite_dir()) + " --junit report.xml", dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const std::string xml = read_text(dir / "report.xml");
+  const std::string xml = read_text_file(dir / "report.xml");
   bool well_formed = false;
   const std::vector<std::string> elements = xml_elements(xml, well_formed);
   EXPECT_TRUE(well_formed) << xml;
@@ -172,7 +124,7 @@ TEST(OchreRegress, MissingReferenceIsBadInputAndUpdateCreatesIt) {
   const auto dir = scratch_dir();
   fs::create_directories(dir / "suite");
   fs::copy_file(suite_dir() / "lambert_environment.json", dir / "suite" / "lambert_environment.json");
-  RegressResult r = run_regress("suite", dir);
+  CommandResult r = run_regress("suite", dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--update"), std::string::npos) << r.output;
 
@@ -182,6 +134,7 @@ TEST(OchreRegress, MissingReferenceIsBadInputAndUpdateCreatesIt) {
   for (const char* channel : {"R", "G", "B", "Y", "variance.Y"})
     EXPECT_NE(reference.find_channel(channel), nullptr) << channel;
   EXPECT_EQ(reference.string_attributes.at("ochre:regress_spp"), "64");
+  EXPECT_GT(std::stod(reference.string_attributes.at("ochre:render_seconds")), 0.0);
   EXPECT_EQ(run_regress("suite", dir).exit_code, 0);
 }
 
