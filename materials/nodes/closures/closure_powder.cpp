@@ -152,7 +152,7 @@ NodeDefinition powder_node() {
             "layer thickness d in um (single scattering only); default 1e30: infinite"),
       rho};
   d.params = {
-      groove_choice_param("pigment", "hematite", {"hematite", "hematite_o", "hematite_e"},
+      groove_choice_param("pigment", "hematite", PigmentTable::names(),
                           "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "
                           "(2 o + e) / 3), or one of its rays"),
       [] {
