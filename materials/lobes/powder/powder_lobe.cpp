@@ -31,12 +31,11 @@ PowderSampling PowderLobe::mixture(int i, const Vec3& wo) const {
   // The cone's half-width in the projected disk: where alpha = c0 + 1/mu_o halves the cyclical term.
   m.cone_width = p.kappa * w.lambda_um / (2.0f * kPi) * (c0 + 1.0f / mu_o);
   m.surface_sigma = w.lambda_um / (kPi * p.correlation_length * std::sqrt(2.0f));
-  // Energy estimates: the volume's from its value towards the normal (times pi), the peak's share from the
-  // excess C / (L1 + L2 + C) at exact backscatter, the surface's from its total integrated scatter
-  // (4 pi mu / lambda)^2 (Harvey-Shack; docs/materials/powder.md).
+  // Energy estimates from one evaluation at exact backscatter: the volume's from its smooth part
+  // pi (L1 + L2), the peak's share from the excess C / (L1 + L2 + C) there, the surface's from its total
+  // integrated scatter (4 pi mu / lambda)^2 (Harvey-Shack; docs/materials/powder.md).
   const PowderTerms<float> back = powder_terms(p, w, wo, wo);
-  const PowderTerms<float> normal = powder_terms(p, w, Vec3(0, 0, 1), wo);
-  const float volume = std::max(0.0f, p.volume_amplitude) * kPi * normal.volume();
+  const float volume = std::max(0.0f, p.volume_amplitude) * kPi * (back.l1 + back.l2);
   const float tis = 4.0f * kPi * mu_o / w.lambda_um;
   const float surface =
       p.surface == PowderSurface::kHarveyShack ? std::max(0.0f, p.surface_amplitude) * tis * tis : 0.0f;
