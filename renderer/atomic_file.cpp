@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -9,6 +10,7 @@
 #include <system_error>
 
 #include "renderer/image_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -36,11 +38,17 @@ void sync_to_disk(const fs::path& path, int open_flags) {
 
 }  // namespace
 
-AtomicOutput::AtomicOutput(fs::path final_path) : final_path_(std::move(final_path)) {
+fs::path temporary_name(const fs::path& final_path) {
   const unsigned counter = temp_counter.fetch_add(1, std::memory_order_relaxed);
-  temp_path_ = final_path_;
-  temp_path_ += fmt::format(".tmp-{}-{}", static_cast<long>(::getpid()), counter);
+  fs::path temp = final_path;
+  temp += fmt::format(".tmp-{}-{}", static_cast<long>(::getpid()), counter);
+  return temp;
 }
+
+AtomicOutput::AtomicOutput(fs::path final_path)
+    : final_path_(std::move(final_path)),
+      temp_path_(temporary_name(final_path_)),
+      registration_(temp_path_) {}
 
 AtomicOutput::~AtomicOutput() {
   if (committed_) return;
@@ -48,19 +56,25 @@ AtomicOutput::~AtomicOutput() {
   fs::remove(temp_path_, ignored);
 }
 
-void AtomicOutput::commit() {
-  if (committed_) return;
+void AtomicOutput::check_written() {
   std::error_code error;
   if (!fs::is_regular_file(temp_path_, error)) {
     throw ImageError(fmt::format("cannot write {}: the writer produced no file", final_path_.string()));
   }
   sync_to_disk(temp_path_, O_RDONLY);
+}
+
+void AtomicOutput::commit() {
+  if (committed_) return;
+  check_written();
+  std::error_code error;
   fs::rename(temp_path_, final_path_, error);
   if (error) {
     fs::remove(temp_path_, error);
     throw ImageError(fmt::format("cannot write {}: {}", final_path_.string(), error.message()));
   }
   committed_ = true;
+  registration_.release();
   sync_to_disk(directory_of(final_path_), O_RDONLY | O_DIRECTORY);
 }
 
@@ -78,18 +92,30 @@ void check_output_writable(const fs::path& output) {
   if (::access(dir.c_str(), W_OK | X_OK) != 0) {
     throw ImageError(fmt::format("cannot write {}: directory {} is not writable", out, dir.string()));
   }
-  if (fs::is_directory(output, error)) {
-    throw ImageError(fmt::format("cannot write {}: it is a directory", out));
+  struct stat info {};
+  if (::lstat(output.c_str(), &info) != 0) return;  // a new file
+  if (S_ISDIR(info.st_mode)) throw ImageError(fmt::format("cannot write {}: it is a directory", out));
+  if (S_ISLNK(info.st_mode)) {
+    const fs::path target = fs::read_symlink(output, error);
+    throw ImageError(fmt::format(
+        "cannot write {}: it is a symbolic link{}; outputs replace only regular files (give the target's "
+        "path to overwrite it)",
+        out, error ? "" : " to " + target.string()));
   }
+  if (!S_ISREG(info.st_mode))
+    throw ImageError(
+        fmt::format("cannot write {}: it is {}, not a regular file", out, file_type_name(info.st_mode)));
+}
+
+void write_text_file(const AtomicOutput& output, std::string_view text) {
+  std::ofstream file(output.temp_path(), std::ios::binary);
+  file << text;
+  if (!file.flush()) throw ImageError(fmt::format("cannot write {}", output.final_path().string()));
 }
 
 void write_text_file(const fs::path& path, std::string_view text) {
   AtomicOutput output(path);
-  {
-    std::ofstream file(output.temp_path(), std::ios::binary);
-    file << text;
-    if (!file.flush()) throw ImageError(fmt::format("cannot write {}", path.string()));
-  }
+  write_text_file(output, text);
   output.commit();
 }
 

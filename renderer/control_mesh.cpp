@@ -10,13 +10,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <unordered_map>
 
 #include "renderer/input_error.h"
+#include "renderer/mesh_file_reader.h"
 #include "renderer/mesh_import.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -174,9 +175,10 @@ struct ObjExtras {
 
 ObjExtras read_obj_extras(const std::filesystem::path& file) {
   ObjExtras extras;
-  std::ifstream in(file);
+  InputFile input = InputFile::open(file, kMeshFileInput);
+  const std::unique_ptr<std::istream> in = input.stream();
   std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
+  for (int line = 1; std::getline(*in, text); ++line) {
     if (text.size() < 2 || !std::isspace(static_cast<unsigned char>(text[1]))) continue;
     if (text[0] == 'v') {
       Vec3 p;
@@ -305,13 +307,8 @@ void ControlMesh::validate(const std::string& where) const {
 
 ControlMesh import_control_mesh(const std::filesystem::path& file, const Transform& to_world) {
   const std::string where = file.string();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error))
-    throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(where, aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr)
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
+  const aiScene* scene = read_mesh_file(importer, file, aiProcess_JoinIdenticalVertices);
   ControlMesh mesh;
   mesh.name = file.stem().string();
   Welder welder(mesh, vertex_colour_encoding(file));

@@ -14,6 +14,8 @@
 
 #include "renderer/atomic_file.h"
 #include "renderer/image_error.h"
+#include "renderer/memory_budget.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -61,7 +63,14 @@ const char* format_for_extension(const std::filesystem::path& path) {
 
 void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description) {
-  const std::string file = path.string();
+  AtomicOutput output(path);
+  write_rgb8(output, format, width, height, pixels, description);
+  output.commit();
+}
+
+void write_rgb8(AtomicOutput& atomic, const char* format, int width, int height,
+                const std::vector<std::uint8_t>& pixels, const std::string& description) {
+  const std::string file = atomic.final_path().string();
   auto output = OIIO::ImageOutput::create(format);
   if (!output) throw ImageError(fmt::format("cannot write {}: OIIO has no {} writer", file, format));
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
@@ -69,12 +78,10 @@ void write_rgb8(const std::filesystem::path& path, const char* format, int width
   spec.attribute("ImageDescription", description);
   if (std::string_view(format) == "jpeg") spec.attribute("Compression", "jpeg:95");
 
-  AtomicOutput atomic(path);
   if (!output->open(atomic.temp_path().string(), spec) ||
       !output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !output->close()) {
     throw ImageError(fmt::format("cannot write {}: {}", file, output->geterror()));
   }
-  atomic.commit();
 }
 
 std::uint8_t quantize_unorm8(float v) {
@@ -124,10 +131,18 @@ std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vect
 
 DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,
                                          const std::vector<float>& rgb, const DisplayOptions& options) {
-  check_size(width, height, rgb, fmt::format("cannot write {}", path.string()));
+  AtomicOutput output(path);
+  const DisplayTransformReport report = write_display_png(output, width, height, rgb, options);
+  output.commit();
+  return report;
+}
+
+DisplayTransformReport write_display_png(AtomicOutput& output, int width, int height,
+                                         const std::vector<float>& rgb, const DisplayOptions& options) {
+  check_size(width, height, rgb, fmt::format("cannot write {}", output.final_path().string()));
   DisplayTransformReport report;
   const std::vector<std::uint8_t> pixels = to_display_rgb8(width, height, rgb, options, &report);
-  write_rgb8(path, "png", width, height, pixels, report.description);
+  write_rgb8(output, "png", width, height, pixels, report.description);
   return report;
 }
 
@@ -143,6 +158,7 @@ DisplayTransformReport write_display_image(const std::filesystem::path& path, in
 
 std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height) {
   const std::string file = path.string();
+  check_regular_input(path, kImageFileInput);  // a FIFO or a device is refused before OIIO opens it
   auto input = OIIO::ImageInput::open(file);
   if (!input) throw ImageError(fmt::format("cannot read {}: {}", file, OIIO::geterror()));
   const OIIO::ImageSpec& spec = input->spec();
@@ -151,6 +167,7 @@ std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& 
   }
   width = spec.width;
   height = spec.height;
+  check_memory_estimate(3.0 * width * height, fmt::format("reading {} ({}x{})", file, width, height));
   std::vector<std::uint8_t> pixels(3 * static_cast<size_t>(width) * static_cast<size_t>(height));
   if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data())) {
     throw ImageError(fmt::format("cannot read {}: {}", file, input->geterror()));

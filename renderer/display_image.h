@@ -13,6 +13,8 @@
 
 namespace ochre {
 
+class AtomicOutput;
+
 struct DisplayOptions {
   // "" = $OCIO, then the built-in config; "builtin"; "none" = no OCIO (clamp + sRGB transfer); or a path.
   std::string ocio_config;
@@ -47,18 +49,24 @@ std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vect
 // Writes an 8-bit RGB PNG (whatever the extension). Throws ImageError naming the file.
 DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,
                                          const std::vector<float>& rgb, const DisplayOptions& options);
+// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+DisplayTransformReport write_display_png(AtomicOutput& output, int width, int height,
+                                         const std::vector<float>& rgb, const DisplayOptions& options);
 
 // Writes a PNG or a JPEG (quality 95) chosen by the extension (.png, .jpg, .jpeg); throws ImageError
 // for any other extension.
 DisplayTransformReport write_display_image(const std::filesystem::path& path, int width, int height,
                                            const std::vector<float>& rgb, const DisplayOptions& options);
 
-// Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
-// Throws ImageError naming the file.
 // Writes 8-bit RGB pixels (already display-encoded) atomically; format is an OIIO format name ("png").
 void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description);
+// The same into output.temp_path(), without committing.
+void write_rgb8(AtomicOutput& output, const char* format, int width, int height,
+                const std::vector<std::uint8_t>& pixels, const std::string& description);
 
+// Reads an 8-bit image (PNG, JPEG, ... through OIIO) as RGB triples, row 0 = top; for tests and tools.
+// Throws ImageError naming the file.
 std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height);
 
 }  // namespace ochre

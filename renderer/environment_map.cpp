@@ -13,7 +13,9 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "renderer/memory_budget.h"
 #include "spectra/color_space.h"
+#include "spectra/input_file.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
@@ -102,7 +104,8 @@ EnvironmentMap::EnvironmentMap(int width, int height, std::vector<RGB> rgb)
 
 EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw std::runtime_error("no such file");
+  if (!std::filesystem::exists(path, error)) throw std::runtime_error("no such file");
+  check_regular_input(path, kEnvironmentMapInput);  // a FIFO or a device is refused before OIIO opens it
   auto input = OIIO::ImageInput::open(path.string());
   if (!input) throw std::runtime_error(OIIO::geterror());
   const OIIO::ImageSpec spec = input->spec();
@@ -112,6 +115,10 @@ EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
         fmt::format("expected a linear HDR image (.hdr or .exr, floating-point pixels), got {} pixels",
                     spec.format.c_str()));
   const int channels = spec.nchannels;
+  // The float pixels, the RGB texels, the luminance (double) and the sampling distribution (2 floats).
+  check_memory_estimate(static_cast<double>(spec.width) * spec.height *
+                            static_cast<double>(channels * sizeof(float) + sizeof(RGB) + sizeof(double) + 8),
+                        fmt::format("environment map {} ({}x{})", path.string(), spec.width, spec.height));
   std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
   if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
     throw std::runtime_error(input->geterror());

@@ -3,16 +3,49 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "renderer/image_error.h"
+#include "renderer/input_error.h"
+#include "renderer/memory_budget.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
 namespace {
+
+// OpenEXR's view of a checked input file (spectra/input_file.h): the library never opens the path.
+class InputFileIStream final : public Imf::IStream {
+ public:
+  explicit InputFileIStream(InputFile& file) : Imf::IStream(file.path().c_str()), file_(file) {}
+  bool read(char c[], int n) override {
+    size_t done = 0;
+    while (done < static_cast<size_t>(n)) {
+      const ssize_t got =
+          ::pread(file_.fd(), c + done, static_cast<size_t>(n) - done, static_cast<off_t>(position_ + done));
+      if (got < 0 && errno == EINTR) continue;
+      if (got < 0) throw std::runtime_error(std::strerror(errno));
+      if (got == 0) throw std::runtime_error("unexpected end of file");
+      done += static_cast<size_t>(got);
+    }
+    position_ += done;
+    return position_ < file_.size();
+  }
+  uint64_t tellg() override { return position_; }
+  void seekg(uint64_t position) override { position_ = position; }
+
+ private:
+  InputFile& file_;
+  uint64_t position_ = 0;
+};
 
 void read_string_attributes(const Imf::Header& header, ExrImage& image) {
   for (auto it = header.begin(); it != header.end(); ++it) {
@@ -33,11 +66,14 @@ void read_chromaticities(const Imf::Header& header, ExrImage& image) {
 
 ExrImage read_exr(const std::filesystem::path& path) {
   const std::string file_name = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) {
     throw ImageError(fmt::format("cannot read {}: no such file", file_name));
   }
+  InputFile input = InputFile::open(path, kImageFileInput);
   try {
-    Imf::InputFile file(path.c_str());
+    InputFileIStream stream(input);
+    Imf::InputFile file(stream);
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
 
@@ -45,6 +81,11 @@ ExrImage read_exr(const std::filesystem::path& path) {
     image.width = window.max.x - window.min.x + 1;
     image.height = window.max.y - window.min.y + 1;
     const size_t pixel_count = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
+    double channel_count = 0;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it) ++channel_count;
+    check_memory_estimate(static_cast<double>(pixel_count) * channel_count * sizeof(float),
+                          fmt::format("reading {} ({}x{}, {:.0f} channels)", file_name, image.width,
+                                      image.height, channel_count));
 
     // Channels come out in the file's order (sorted by name); every type is converted to float.
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
@@ -65,6 +106,8 @@ ExrImage read_exr(const std::filesystem::path& path) {
     read_chromaticities(header, image);
     return image;
   } catch (const ImageError&) {
+    throw;
+  } catch (const InputError&) {
     throw;
   } catch (const std::exception& error) {
     throw ImageError(fmt::format("cannot read {}: {}", file_name, error.what()));

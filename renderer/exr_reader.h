@@ -9,7 +9,9 @@
 namespace ochre {
 
 // Throws ImageError naming the file when it is missing, not an EXR, tiled with mipmaps, or has
-// subsampled channels.
+// subsampled channels; InputError when it is not a regular file, is larger than the image limit
+// (spectra/input_file.h) or its pixels would exceed the memory limit (renderer/memory_budget.h). The
+// file is read through its own descriptor: OpenEXR never opens the path.
 ExrImage read_exr(const std::filesystem::path& path);
 
 }  // namespace ochre

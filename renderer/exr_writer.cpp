@@ -132,6 +132,13 @@ ExrCompression parse_exr_compression(std::string_view name) {
 }
 
 void write_exr(const fs::path& path, const ExrImage& image, ExrCompression compression, bool half) {
+  AtomicOutput output(path);
+  write_exr(output, image, compression, half);
+  output.commit();
+}
+
+void write_exr(AtomicOutput& output, const ExrImage& image, ExrCompression compression, bool half) {
+  const fs::path& path = output.final_path();
   check_image(path, image);
   const Imf::Header header = make_header(path, image, compression, half);
 
@@ -152,7 +159,6 @@ void write_exr(const fs::path& path, const ExrImage& image, ExrCompression compr
                                   pixel_size * static_cast<size_t>(image.width)));
   }
 
-  AtomicOutput output(path);
   try {
     Imf::OutputFile file(output.temp_path().c_str(), header);
     file.setFrameBuffer(frame);
@@ -160,7 +166,6 @@ void write_exr(const fs::path& path, const ExrImage& image, ExrCompression compr
   } catch (const std::exception& error) {
     throw ImageError(fmt::format("cannot write {}: {}", path.string(), error.what()));
   }
-  output.commit();
 }
 
 }  // namespace ochre

@@ -15,6 +15,8 @@
 
 namespace ochre {
 
+class AtomicOutput;
+
 // CIE xy chromaticities of an RGB space's primaries and white point (the EXR "chromaticities" attribute).
 struct Chromaticities {
   std::array<float, 2> red, green, blue, white;
@@ -49,5 +51,8 @@ ExrCompression parse_exr_compression(std::string_view name);
 // header reserves) or the file cannot be written; an existing file is replaced only on success.
 void write_exr(const std::filesystem::path& path, const ExrImage& image,
                ExrCompression compression = ExrCompression::zip, bool half = false);
+// The same into output.temp_path(), without committing (several outputs: renderer/output_transaction.h).
+void write_exr(AtomicOutput& output, const ExrImage& image, ExrCompression compression = ExrCompression::zip,
+               bool half = false);
 
 }  // namespace ochre

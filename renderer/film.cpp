@@ -1,11 +1,15 @@
 #include "renderer/film.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
+
+#include "renderer/memory_budget.h"
 
 namespace ochre {
 
@@ -29,8 +33,29 @@ double from_fixed(__int128 v) {
 }
 }  // namespace
 
-Film::Film(int width, int height)
-    : width_(width), height_(height), pixels_(static_cast<size_t>(width) * height) {}
+std::string film_description(int width, int height, const FilmLayers& layers) {
+  std::string text = fmt::format("film {}x{} (XYZ", width, height);
+  if (layers.aovs) text += ", AOVs";
+  if (layers.stokes) text += ", Stokes";
+  if (layers.spectral_bins > 0) text += fmt::format(", {} spectral bins", layers.spectral_bins);
+  return text + ")";
+}
+
+std::size_t Film::bytes_per_pixel(const FilmLayers& layers) {
+  const std::size_t components = layers.stokes ? 4 : 1;
+  return sizeof(Pixel) + (layers.aovs ? sizeof(AovPixel) : 0) + (layers.stokes ? 9 * sizeof(__int128) : 0) +
+         static_cast<std::size_t>(std::max(layers.spectral_bins, 0)) * components * sizeof(__int128);
+}
+
+Film::Film(int width, int height, const FilmLayers& layers) : width_(width), height_(height) {
+  check_memory_estimate(static_cast<double>(bytes_per_pixel(layers)) * width * height,
+                        film_description(width, height, layers));
+  pixels_.resize(static_cast<size_t>(width) * height);
+  if (layers.aovs) enable_aovs();
+  if (layers.stokes) enable_stokes();
+  if (layers.spectral_bins > 0)
+    enable_spectral(layers.spectral_bins, layers.spectral_min, layers.spectral_max);
+}
 
 void Film::add_sample(int x, int y, const XYZ& xyz) {
   Pixel& p = pixels_[index(x, y)];

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "spectra/color_types.h"
@@ -21,9 +22,25 @@ struct Vec3f {
   float x = 0, y = 0, z = 0;
 };
 
+// The layers a film accumulates besides XYZ; each costs memory per pixel.
+struct FilmLayers {
+  bool aovs = false;
+  int spectral_bins = 0;  // over [spectral_min, spectral_max] nm
+  float spectral_min = 360.0f, spectral_max = 830.0f;
+  bool stokes = false;
+};
+
+// "film 640x480 (XYZ, AOVs, Stokes, 16 spectral bins)", for messages.
+std::string film_description(int width, int height, const FilmLayers& layers);
+
 class Film {
  public:
-  Film(int width, int height);
+  // Checks the memory estimate of the film first (renderer/memory_budget.h: InputError when it does not
+  // fit), then allocates every layer.
+  Film(int width, int height, const FilmLayers& layers = {});
+
+  // Accumulator bytes per pixel of a film with these layers.
+  static std::size_t bytes_per_pixel(const FilmLayers& layers);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -1,5 +1,6 @@
 #include "renderer/groove_shapes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -97,8 +98,24 @@ Mesh make_cylinder(float radius, float height, int segments) {
   return revolve({{radius, 0.0f}, {radius, height}}, segments, height, "cylinder", true);
 }
 
+double groove_plate_triangle_count(const GroovePlate& plate) {
+  return 4.0 * plate.count;
+}
+
+double cylinder_triangle_count(int segments) {
+  return 2.0 * segments;
+}
+
+double groove_count(const GroovedCylinder& c) {
+  return std::max(1.0, std::floor(double(c.height) / c.pitch));
+}
+
+double grooved_cylinder_triangle_count(const GroovedCylinder& c) {
+  return 4.0 * groove_count(c) * c.segments;
+}
+
 Mesh make_grooved_cylinder(const GroovedCylinder& c) {
-  const int grooves = std::max(1, static_cast<int>(std::floor(c.height / c.pitch)));
+  const int grooves = static_cast<int>(groove_count(c));  // bounded by the caller's triangle estimate
   const double depth = groove_depth(c.pitch, c.alpha_degrees);
   std::vector<Vec2> profile;
   for (int j = 0; j <= 2 * grooves; ++j)

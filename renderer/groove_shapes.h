@@ -34,4 +34,12 @@ struct GroovedCylinder {
 };
 Mesh make_grooved_cylinder(const GroovedCylinder& cylinder);
 
+// Triangles of each shape (doubles: no count overflows), for the memory estimate checked before a scene
+// asks for one (renderer/memory_budget.h).
+double groove_plate_triangle_count(const GroovePlate& plate);      // 4 x count
+double cylinder_triangle_count(int segments);                      // 2 x segments
+double grooved_cylinder_triangle_count(const GroovedCylinder& c);  // 4 x grooves x segments
+// The grooves of a grooved cylinder: floor(height / pitch), at least 1.
+double groove_count(const GroovedCylinder& c);
+
 }  // namespace ochre

@@ -177,7 +177,14 @@ std::array<std::uint8_t, 3> heatmap_colour(double t) {
 
 void write_heatmap_png(const std::filesystem::path& path, int width, int height,
                        const std::vector<float>& values, double scale) {
-  const std::string file = path.string();
+  AtomicOutput output(path);
+  write_heatmap_png(output, width, height, values, scale);
+  output.commit();
+}
+
+void write_heatmap_png(AtomicOutput& atomic, int width, int height, const std::vector<float>& values,
+                       double scale) {
+  const std::string file = atomic.final_path().string();
   const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
   if (width <= 0 || height <= 0 || values.size() != pixels) {
     throw ImageError(fmt::format("cannot write {}: {} values do not make a {}x{} heat-map", file,
@@ -195,12 +202,10 @@ void write_heatmap_png(const std::filesystem::path& path, int width, int height,
   OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("Software", "ochre-diff");
   spec.attribute("ImageDescription", fmt::format("error heat-map, full scale {:.6g}", scale));
-  AtomicOutput atomic(path);
   if (!output->open(atomic.temp_path().string(), spec) ||
       !output->write_image(OIIO::TypeDesc::UINT8, codes.data()) || !output->close()) {
     throw ImageError(fmt::format("cannot write {}: {}", file, output->geterror()));
   }
-  atomic.commit();
 }
 
 }  // namespace ochre

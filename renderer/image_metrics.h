@@ -80,5 +80,8 @@ std::array<std::uint8_t, 3> heatmap_colour(double t);
 // error), atomically. Throws ImageError naming the file.
 void write_heatmap_png(const std::filesystem::path& path, int width, int height,
                        const std::vector<float>& values, double scale);
+// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+void write_heatmap_png(AtomicOutput& output, int width, int height, const std::vector<float>& values,
+                       double scale);
 
 }  // namespace ochre

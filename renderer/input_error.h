@@ -1,15 +1,4 @@
 #pragma once
-// InputError: the exception for bad user input (malformed scene, missing or unreadable file,
-// parameter out of range). The message names the file and the element at fault; the command
-// line tools exit with code 2 on it.
+// InputError (spectra/input_error.h): bad user input; the command line tools exit with code 2 on it.
 
-#include <stdexcept>
-
-namespace ochre {
-
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-}  // namespace ochre
+#include "spectra/input_error.h"

@@ -2,11 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "renderer/input_error.h"
 #include "renderer/json_duplicate_keys.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -29,11 +27,10 @@ std::string line_column(const std::string& text, size_t byte) {
 }  // namespace
 
 nlohmann::json read_json_file(const std::filesystem::path& file, const char* what) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::error_code error;
+  if (!std::filesystem::exists(file, error))
+    throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
+  const std::string text = read_input_file(file, InputKind{what, kJsonFileLimit});
   try {
     return parse_json_rejecting_duplicate_keys(text, file.string());
   } catch (const nlohmann::json::parse_error& e) {

@@ -8,11 +8,12 @@
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "renderer/input_error.h"
+#include "renderer/mesh_file_reader.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -32,9 +33,10 @@ bool is_integer_ply_type(const std::string& type) {
 
 // Reads the (ASCII) PLY header and reports whether the vertex colour channels are integers.
 VertexColourEncoding ply_colour_encoding(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
+  InputFile input = InputFile::open(file, kMeshFileInput);
+  const std::unique_ptr<std::istream> in = input.stream();
   std::string line;
-  for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines) {
+  for (int lines = 0; lines < 10000 && std::getline(*in, line); ++lines) {
     std::istringstream words(line);
     std::string keyword, type, name;
     words >> keyword;
@@ -192,20 +194,13 @@ VertexColourEncoding vertex_colour_encoding(const std::filesystem::path& file) {
 Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
                  const MeshImportOptions& options) {
   const std::string where = file.string();
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) {
-    throw InputError(fmt::format("{}: mesh file not found (or not a regular file)", where));
-  }
   Assimp::Importer importer;
   // Points and lines pass through and are skipped by convert_mesh, so a file without triangles
   // gets our own error message rather than one from Assimp's validation.
   unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   if (options.smooth_normals) flags |= aiProcess_GenSmoothNormals;
   if (options.flip_uv_v) flags |= aiProcess_FlipUVs;
-  const aiScene* scene = importer.ReadFile(where, flags);
-  if (scene == nullptr) {
-    throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
-  }
+  const aiScene* scene = read_mesh_file(importer, file, flags);
   std::vector<Mesh> parts;
   if (scene->mRootNode != nullptr) {
     const ImportContext context{*scene, to_world, vertex_colour_encoding(file), where};

@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "renderer/image_error.h"
+#include "renderer/input_error.h"
+#include "spectra/input_file.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -53,8 +55,14 @@ LoadedConfig load_config(const std::string& spec) {
     path = from_environment;
     origin = " (from $OCIO)";
   }
-  if (!std::filesystem::is_regular_file(path)) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) {
     throw ImageError(fmt::format("OCIO config '{}'{} does not exist", path, origin));
+  }
+  try {
+    check_regular_input(path, kOcioConfigInput);  // a FIFO or a device is refused before OCIO opens it
+  } catch (const InputError& e) {
+    throw ImageError(e.what() + origin);
   }
   try {
     return {OCIO::Config::CreateFromFile(path.c_str()), path};

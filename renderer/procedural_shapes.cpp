@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "renderer/input_error.h"
+#include "renderer/memory_budget.h"
 
 namespace ochre {
 
@@ -67,6 +68,15 @@ Mesh make_disk(float radius, int segments) {
     add_triangle(mesh, 0, 1 + i, 1 + (i + 1) % segments);
   }
   return mesh;
+}
+
+double sphere_triangle_count(int subdivisions) {
+  const double s = subdivisions;
+  return 4.0 * s * s - 4.0 * s;  // 2 per grid cell, but one at each pole
+}
+
+double sphere_memory_bytes(int subdivisions) {
+  return sphere_triangle_count(subdivisions) * kTessellatedTriangleBytes;
 }
 
 // Vertex grid (subdivisions + 1) rows x (2 subdivisions + 1) columns; row 0 is the south pole.

@@ -25,4 +25,9 @@ Mesh make_disk(float radius, int segments = 64);
 // with bit-identical positions, so the surface is watertight.
 Mesh make_sphere(float radius, int subdivisions);
 
+// Triangles of make_sphere(radius, subdivisions), and the peak memory of building them with their BVH
+// (renderer/memory_budget.h), checked before a scene asks for a sphere.
+double sphere_triangle_count(int subdivisions);
+double sphere_memory_bytes(int subdivisions);
+
 }  // namespace ochre

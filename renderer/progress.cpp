@@ -84,12 +84,12 @@ bool stderr_is_terminal() {
 }
 
 ProgressReporter::ProgressReporter(std::string label, std::uint64_t total_units, std::ostream& out,
-                                   bool interactive)
+                                   bool interactive, Clock::time_point start)
     : label_(std::move(label)),
       total_(total_units),
       out_(out),
       style_(resolve_progress_style(interactive, std::getenv("OCHRE_PROGRESS"))),
-      start_(Clock::now()),
+      start_(start),
       last_draw_ns_(std::numeric_limits<std::int64_t>::min() / 2) {}
 
 ProgressReporter::~ProgressReporter() {

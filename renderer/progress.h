@@ -40,8 +40,10 @@ bool stderr_is_terminal();
 
 class ProgressReporter {
  public:
+  // `start`: when the work began (elapsed times and ETAs count from it).
   ProgressReporter(std::string label, std::uint64_t total_units, std::ostream& out = std::cerr,
-                   bool interactive = stderr_is_terminal());
+                   bool interactive = stderr_is_terminal(),
+                   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now());
   // Ends an unfinished bar's line so later output starts on a fresh line (no 100 % is claimed).
   ~ProgressReporter();
   ProgressReporter(const ProgressReporter&) = delete;

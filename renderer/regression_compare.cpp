@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "renderer/atomic_file.h"
 #include "renderer/image_metrics.h"
 #include "renderer/input_error.h"
 
@@ -144,10 +145,16 @@ ExrImage p_value_image(const RegressionResult& result) {
 }
 
 void write_p_value_heatmap(const std::filesystem::path& path, const RegressionResult& result) {
+  AtomicOutput output(path);
+  write_p_value_heatmap(output, result);
+  output.commit();
+}
+
+void write_p_value_heatmap(AtomicOutput& output, const RegressionResult& result) {
   std::vector<float> significance(result.p_values.size());
   for (size_t i = 0; i < significance.size(); ++i)
     significance[i] = static_cast<float>(-std::log10(std::max(result.p_values[i], 1e-300)));
-  write_heatmap_png(path, result.width, result.height, significance, -2.0 * std::log10(result.alpha_pixel));
+  write_heatmap_png(output, result.width, result.height, significance, -2.0 * std::log10(result.alpha_pixel));
 }
 
 }  // namespace ochre

@@ -71,5 +71,7 @@ ExrImage p_value_image(const RegressionResult& result);
 // A heat map of -log10(p) with full dark red at 2 x -log10(alpha_pixel): pixels past the failure level
 // are red, agreeing pixels white. PNG, written atomically.
 void write_p_value_heatmap(const std::filesystem::path& path, const RegressionResult& result);
+// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+void write_p_value_heatmap(AtomicOutput& output, const RegressionResult& result);
 
 }  // namespace ochre

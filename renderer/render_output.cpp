@@ -10,6 +10,8 @@
 #include "renderer/exr_writer.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
+#include "renderer/memory_budget.h"
+#include "renderer/output_transaction.h"
 #include "renderer/stokes_output.h"
 #include "spectra/color_space.h"
 
@@ -107,10 +109,47 @@ void check_outputs(const OutputSettings& outputs) {
   }
 }
 
+FilmLayers film_layers(const OutputSettings& outputs) {
+  FilmLayers layers;
+  const bool exr = !outputs.exr.empty();
+  layers.aovs = outputs.aovs && exr;
+  layers.spectral_bins = exr ? outputs.spectral_bins : 0;
+  layers.spectral_min = outputs.spectral_min;
+  layers.spectral_max = outputs.spectral_max;
+  layers.stokes = outputs.stokes || !outputs.polarization_png.empty();
+  return layers;
+}
+
+void check_render_memory(int width, int height, const OutputSettings& outputs) {
+  const FilmLayers layers = film_layers(outputs);
+  // write_outputs(): the working-space RGB (3 floats), then one of: the EXR's channels (floats), the
+  // display image (a float copy and 8-bit RGB), the polarization PNG (8-bit RGB).
+  size_t exr_channels = 0;
+  if (!outputs.exr.empty()) {
+    exr_channels = 3 + (layers.aovs ? 8 : 0) + (layers.stokes ? 14 : 0);
+    exr_channels += static_cast<size_t>(layers.spectral_bins) * (layers.stokes ? 4 : 1);
+  }
+  const size_t png_bytes = outputs.png.empty() ? 0 : 3 * sizeof(float) + 3;
+  const size_t polarization_bytes = outputs.polarization_png.empty() ? 0 : 3;
+  const size_t output_bytes =
+      3 * sizeof(float) + std::max({exr_channels * sizeof(float), png_bytes, polarization_bytes});
+  const double pixels = static_cast<double>(width) * height;
+  check_memory_estimate(pixels * static_cast<double>(Film::bytes_per_pixel(layers) + output_bytes),
+                        film_description(width, height, layers) + " with its output buffers");
+}
+
+std::vector<std::string> output_paths(const OutputSettings& outputs) {
+  std::vector<std::string> paths;
+  for (const std::string* path : {&outputs.exr, &outputs.polarization_png, &outputs.png})
+    if (!path->empty()) paths.push_back(*path);
+  return paths;
+}
+
 std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
                                        const RenderSettings& settings, const RenderStats& stats,
                                        const std::string& scene_file) {
   std::vector<std::string> written;
+  OutputTransaction transaction;  // every file is complete before any existing one is replaced
   const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
   if (!outputs.exr.empty()) {
     ExrImage image;
@@ -136,21 +175,22 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
     image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
     image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
-    write_exr(outputs.exr, image);
+    write_exr(transaction.add(outputs.exr), image);
     written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
                                   image.height));
   }
   if (!outputs.polarization_png.empty() && film.has_stokes()) {
-    write_polarization_png(outputs.polarization_png, film);
+    write_polarization_png(transaction.add(outputs.polarization_png), film);
     written.push_back(fmt::format("wrote {} (hue: angle, brightness: degree of linear polarization)",
                                   outputs.polarization_png));
   }
   if (!outputs.png.empty()) {
-    const DisplayTransformReport report =
-        write_display_png(outputs.png, film.width(), film.height(), rgb, display_options(outputs));
+    const DisplayTransformReport report = write_display_png(transaction.add(outputs.png), film.width(),
+                                                            film.height(), rgb, display_options(outputs));
     written.push_back(fmt::format("wrote {} ({})", outputs.png, report.description));
     for (const std::string& w : report.warnings) written.push_back("warning: " + w);
   }
+  transaction.commit();
   return written;
 }
 

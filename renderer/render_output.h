@@ -19,8 +19,20 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
 // transform cannot be built (unknown config, display or view).
 void check_outputs(const OutputSettings& outputs);
 
-// Writes the requested files (each through a temporary name and an atomic rename).
-// Returns human-readable lines describing what was written.
+// The film layers the outputs need (AOVs and spectral bins only with an EXR; Stokes for the Stokes
+// layers and the polarization PNG).
+FilmLayers film_layers(const OutputSettings& outputs);
+
+// Throws InputError (renderer/memory_budget.h) when a width x height film with the layers of `outputs`,
+// plus the buffers write_outputs() needs at its peak, exceeds the memory limit.
+void check_render_memory(int width, int height, const OutputSettings& outputs);
+
+// The paths write_outputs() writes (EXR, polarization PNG, display PNG; those that are set).
+std::vector<std::string> output_paths(const OutputSettings& outputs);
+
+// Writes the requested files, all or none: each is written completely under a temporary name before
+// any is renamed over its final name (renderer/output_transaction.h). Returns human-readable lines
+// describing what was written.
 std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
                                        const RenderSettings& settings, const RenderStats& stats,
                                        const std::string& scene_file);

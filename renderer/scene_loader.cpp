@@ -11,16 +11,17 @@
 #include "materials/graph/resource_resolver.h"
 #include "renderer/control_mesh.h"
 #include "renderer/displacement.h"
+#include "renderer/groove_shapes.h"
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/json_file.h"
+#include "renderer/memory_budget.h"
 #include "renderer/mesh_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
 #include "renderer/subdivision.h"
-#include "renderer/groove_shapes.h"
 #include "renderer/transform.h"
 
 namespace ochre {
@@ -230,21 +231,31 @@ Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
   };
   auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
   if (type == "groove_plate") {
-    f.check_known({"type", "alpha", "pitch", "count", "length", "orientation", "material", "transform", "name",
-                   "polarizer"});
+    f.check_known({"type", "alpha", "pitch", "count", "length", "orientation", "material", "transform",
+                   "name", "polarizer"});
     GroovePlate plate;
     plate.alpha_degrees = alpha();
     plate.pitch = positive("pitch", 1.0);
     plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
     plate.length = positive("length", 40.0);
+    const double triangles = groove_plate_triangle_count(plate);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
     Mesh mesh = make_groove_plate(plate);
-    mesh.transform(Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
+    mesh.transform(
+        Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
     return mesh;
   }
   if (type == "cylinder") {
     f.check_known({"type", "radius", "height", "segments", "material", "transform", "name", "polarizer"});
-    return make_cylinder(positive("radius", 1.0), positive("height", 2.0),
-                         static_cast<int>(f.integer("segments", 256, 3, 1 << 20)));
+    const float radius = positive("radius", 1.0), height = positive("height", 2.0);
+    const int segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+    const double triangles = cylinder_triangle_count(segments);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        fmt::format("{}: a cylinder of {:.0f} triangles", f.child("segments"), triangles));
+    return make_cylinder(radius, height, segments);
   }
   f.check_known({"type", "radius", "height", "alpha", "pitch", "segments", "material", "transform", "name",
                  "polarizer"});
@@ -257,6 +268,11 @@ Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
   if (!(c.pitch <= c.height)) f.fail("pitch", "must not exceed the height");
   if (!(0.5 * c.pitch / std::tan(0.5 * c.alpha_degrees * M_PI / 180.0) < c.radius))
     f.fail("alpha", "the grooves would be deeper than the radius: increase alpha or decrease the pitch");
+  const double triangles = grooved_cylinder_triangle_count(c);
+  check_triangle_estimate(
+      triangles, kTessellatedTriangleBytes,
+      fmt::format("{}: a grooved cylinder of {:.0f} grooves x {} segments ({:.0f} triangles)", f.where(),
+                  groove_count(c), c.segments, triangles));
   return make_grooved_cylinder(c);
 }
 
@@ -282,6 +298,9 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
     const int subdivisions = static_cast<int>(f.integer("subdivisions", 96, 4, 4096));
+    check_memory_estimate(sphere_memory_bytes(subdivisions),
+                          fmt::format("{}: a sphere of {:.0f} triangles", f.child("subdivisions"),
+                                      sphere_triangle_count(subdivisions)));
     const Vec3 center = f.vec3("center", {0, 0, 0});
     mesh = f.in_context("", [&] { return make_sphere(radius, subdivisions); });
     f.in_context("", [&] { mesh.transform(to_world * Transform::translate(center)); });
@@ -304,8 +323,8 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     mesh = load_groove_shape(f, type);
     f.in_context("", [&] { mesh.transform(to_world); });
   } else {
-    f.fail("type", fmt::format(
-                       "unknown shape type '{}' (known: mesh, sphere, plane, disk, groove_plate, cylinder, "
+    f.fail("type",
+           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, groove_plate, cylinder, "
                        "grooved_cylinder)",
                        type));
   }

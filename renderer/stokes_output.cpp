@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "renderer/atomic_file.h"
 #include "renderer/display_image.h"
 
 namespace ochre {
@@ -62,6 +63,12 @@ void hue_value_to_rgb(float hue01, float value, float rgb[3]) {
 }  // namespace
 
 void write_polarization_png(const std::filesystem::path& path, const Film& film) {
+  AtomicOutput output(path);
+  write_polarization_png(output, film);
+  output.commit();
+}
+
+void write_polarization_png(AtomicOutput& output, const Film& film) {
   std::vector<std::uint8_t> pixels(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -73,7 +80,7 @@ void write_polarization_png(const std::filesystem::path& path, const Film& film)
       for (int c = 0; c < 3; ++c)
         pixels[(static_cast<size_t>(y) * film.width() + x) * 3 + c] = quantize_unorm8(rgb[c]);
     }
-  write_rgb8(path, "png", film.width(), film.height(), pixels,
+  write_rgb8(output, "png", film.width(), film.height(), pixels,
              "ochre polarization: hue = angle of linear polarization (0..180 deg from the image x axis), "
              "brightness = degree of linear polarization");
 }

@@ -16,6 +16,8 @@
 
 namespace ochre {
 
+class AtomicOutput;
+
 // Degree and angle of linear polarization from S0, S1, S2 (0 and 0 where S0 <= 0).
 float degree_of_linear_polarization(float s0, float s1, float s2);
 float angle_of_linear_polarization(float s1, float s2);
@@ -25,5 +27,7 @@ void add_stokes_channels(const Film& film, ExrImage& image);
 
 // False colour: hue = AoLP (red at 0, through the hue circle once per 180 degrees), brightness = DoLP.
 void write_polarization_png(const std::filesystem::path& path, const Film& film);
+// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+void write_polarization_png(AtomicOutput& output, const Film& film);
 
 }  // namespace ochre

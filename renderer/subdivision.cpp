@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "renderer/input_error.h"
+#include "renderer/load_progress.h"
+#include "renderer/memory_budget.h"
 
 namespace ochre {
 
@@ -133,19 +135,45 @@ void triangulate(const int* corners, int count, const std::vector<Vec3>& positio
   for (int k = 1; k + 1 < count; ++k) push(0, k, k + 1);
 }
 
+// Refusing before OpenSubdiv allocates: too much memory, or more vertices than 32-bit indices hold.
+void check_refined_size(const ControlMesh& control, Sdc::SchemeType scheme, int level) {
+  const double triangles = subdivided_triangle_count(control, scheme == Sdc::SCHEME_LOOP, level);
+  const std::string what = fmt::format("{}: subdivision level {} of {} faces ({:.0f} triangles)",
+                                       control.name, level, control.face_sizes.size(), triangles);
+  // Vertices are fewer than triangles on a closed or open refined surface; 2^31 keeps int indices safe.
+  check_triangle_estimate(triangles, kSubdividedTriangleBytes, what);
+}
+
 }  // namespace
+
+double subdivided_triangle_count(const ControlMesh& control, bool loop, int level) {
+  double corners = 0.0, fan_triangles = 0.0;
+  for (int n : control.face_sizes) {
+    corners += n;
+    fan_triangles += n - 2;
+  }
+  if (level == 0) return fan_triangles;
+  // Loop: every triangle becomes 4 per level. Catmull-Clark: an n-gon becomes n quads at level 1, every
+  // quad 4 per later level, and each quad is output as 2 triangles.
+  if (loop) return static_cast<double>(control.face_sizes.size()) * std::pow(4.0, level);
+  return 2.0 * corners * std::pow(4.0, level - 1);
+}
 
 Mesh subdivide(const ControlMesh& control, const SubdivisionOptions& options) {
   control.validate(control.name);
   if (options.level < 0 || options.level > kMaxSubdivisionLevel)
     throw InputError(fmt::format("{}: subdivision level {} outside 0..{}", control.name, options.level,
                                  kMaxSubdivisionLevel));
-  auto refiner = make_refiner(control, resolve_scheme(control, options.scheme));
+  const Sdc::SchemeType scheme = resolve_scheme(control, options.scheme);
+  check_refined_size(control, scheme, options.level);
+  LoadProgress progress(fmt::format("subdividing {}", control.name));
+  auto refiner = make_refiner(control, scheme);
   if (options.level > 0) {
     Far::TopologyRefiner::UniformOptions uniform(options.level);
     uniform.fullTopologyInLastLevel = true;  // PrimvarRefiner::Limit needs it
     refiner->RefineUniform(uniform);
   }
+  progress.update(0.3);
   const Far::PrimvarRefiner primvar(*refiner);
   const Far::TopologyLevel& last = refiner->GetLevel(refiner->GetMaxLevel());
 
@@ -172,7 +200,9 @@ Mesh subdivide(const ControlMesh& control, const SubdivisionOptions& options) {
       primvar.InterpolateFaceVarying(level, src, dst, 0);
     });
   }
+  progress.update(0.5);
   const std::vector<Vec3> normals = limit_normals(primvar, positions, last);
+  progress.update(0.7);
 
   // Output vertices: one per refined vertex, or one per face-varying uv value when there are uvs
   // (a uv seam splits the vertices along it).
@@ -204,6 +234,7 @@ Mesh subdivide(const ControlMesh& control, const SubdivisionOptions& options) {
     triangulate(corners.data(), int(corners.size()), mesh.positions, mesh.indices);
   }
   mesh.validate(control.name);
+  progress.update(1.0);
   return mesh;
 }
 

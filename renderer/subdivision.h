@@ -32,7 +32,13 @@ inline constexpr int kMaxSubdivisionLevel = 8;
 // - Loop needs an all-triangle control mesh; Catmull-Clark accepts any polygons.
 // Throws InputError starting with control.name when the mesh is invalid, the level is out of range,
 // Loop is asked for a mesh with non-triangles, or OpenSubdiv rejects the topology.
+// Before OpenSubdiv allocates anything, the refined size is estimated (subdivided_triangle_count) and
+// refused with InputError when it exceeds the memory limit (renderer/memory_budget.h) or 2^31
+// triangles; a long subdivision reports its progress (renderer/load_progress.h).
 Mesh subdivide(const ControlMesh& control, const SubdivisionOptions& options);
+
+// Triangles of `control` refined `level` times with Loop (loop = true) or Catmull-Clark.
+double subdivided_triangle_count(const ControlMesh& control, bool loop, int level);
 
 // {"scheme": "auto" | "catmull-clark" | "loop", "level": 0..8}; unknown members are errors.
 SubdivisionOptions parse_subdivision(const JsonFields& fields);

@@ -24,9 +24,11 @@
 #include <vector>
 
 #include "renderer/atomic_file.h"
+#include "renderer/memory_budget.h"
 #include "renderer/mip_pyramid.h"
 #include "renderer/periodic_texture_coordinate.h"
 #include "spectra/color_space.h"
+#include "spectra/input_file.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
@@ -99,7 +101,7 @@ struct SourceInfo {
 SourceInfo open_source(const fs::path& file) {
   std::error_code error;
   if (!fs::exists(file, error)) throw_unreadable(file, "the file does not exist");
-  if (!fs::is_regular_file(file, error)) throw_unreadable(file, "not a regular file");
+  check_regular_input(file, kTextureInput);  // a FIFO or a device is refused before OIIO opens it
   SourceInfo info;
   info.path = fs::weakly_canonical(fs::absolute(file), error);
   if (error) info.path = fs::absolute(file).lexically_normal();
@@ -151,6 +153,12 @@ fs::path cache_file_for(const fs::path& cache_dir, const SourceInfo& source, Enc
 // Reads the first subimage of the source as float, in [0, 1] for integer formats. Alpha is kept
 // unassociated (as stored in PNG), so colour and mask channels are filtered as they were painted.
 OIIO::ImageBuf read_as_float(const SourceInfo& source) {
+  // The float pixels, then MakeTx's copy of them and its MIP levels (a third more).
+  const OIIO::ImageSpec& header = source.spec;
+  check_memory_estimate(static_cast<double>(header.width) * header.height * header.nchannels * sizeof(float) *
+                            (2.0 + 1.0 / 3.0),
+                        fmt::format("converting texture {} ({}x{}, {} channels)", source.path.string(),
+                                    header.width, header.height, header.nchannels));
   OIIO::ImageSpec read_config;
   read_config.attribute("oiio:UnassociatedAlpha", 1);
   auto input = OIIO::ImageInput::open(source.path.string(), &read_config);

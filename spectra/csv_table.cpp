@@ -4,10 +4,12 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "spectra/input_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -116,11 +118,10 @@ CsvTable CsvTable::parse(std::string_view text, std::string source_name) {
 }
 
 CsvTable CsvTable::load(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open file (missing or unreadable)");
-  std::ostringstream content;
-  content << in.rdbuf();
-  return parse(content.str(), path.string());
+  std::error_code error;
+  if (!std::filesystem::exists(path, error))
+    throw InputError(path.string() + ": cannot open file (missing or unreadable)");
+  return parse(read_input_file(path, kCsvFileInput), path.string());
 }
 
 std::size_t CsvTable::column_index(std::string_view name) const {

@@ -9,7 +9,8 @@
 //
 // Every error is a std::runtime_error whose message starts with "FILE:LINE: " (or "FILE: " when
 // no single line is at fault): non-numeric value, NaN or infinite value, wrong column count,
-// wavelengths not strictly increasing, fewer than 2 data rows, unknown column, missing file.
+// wavelengths not strictly increasing, fewer than 2 data rows, unknown column. A file that is
+// missing, not a regular file or larger than 64 MiB throws InputError (spectra/input_file.h).
 //
 //   CsvTable::parse(text, source_name) -> CsvTable   (source_name is used in error messages)
 //   CsvTable::load(path) -> CsvTable

@@ -23,6 +23,10 @@ void validate(const std::vector<float>& lambda, const std::vector<float>& values
     if (i > 0 && !(lambda[i] > lambda[i - 1]))
       throw std::invalid_argument("TabulatedSpectrum: wavelengths not strictly increasing at index " +
                                   std::to_string(i));
+    // Interpolation takes the difference of neighbouring values: infinite, it would give NaN at a knot.
+    if (i > 0 && !std::isfinite(values[i] - values[i - 1]))
+      throw std::invalid_argument("TabulatedSpectrum: values at index " + std::to_string(i - 1) + " and " +
+                                  std::to_string(i) + " differ by more than the float range");
   }
 }
 

@@ -10,7 +10,7 @@
 //
 //   TabulatedSpectrum(std::vector<float> lambda_nm, std::vector<float> values, extrapolation)
 //       (throws std::invalid_argument: sizes differ, fewer than 2 points, non-finite entries,
-//        wavelengths not strictly increasing)
+//        wavelengths not strictly increasing, neighbouring values that differ by more than the float range)
 //   tabulated_spectrum(const CsvTable&, column[, extrapolation])  one column of a parsed table
 //   load_spectrum_csv(path)                          first value column (column 1) of a CSV file
 //   load_spectrum_csv(path, "name"[, extrapolation]) / (path, index[, extrapolation])

@@ -4,9 +4,10 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
-#include <fstream>
+#include <memory>
 
 #include "renderer/input_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -69,12 +70,15 @@ std::optional<double> finite_number(const std::string& text) {
 }
 
 CsvColumns read_csv_columns(const std::filesystem::path& file, std::span<const char* const> columns) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot open input file", file.string()));
+  std::error_code error;
+  if (!std::filesystem::exists(file, error))
+    throw InputError(fmt::format("{}: cannot open input file", file.string()));
+  InputFile input = InputFile::open(file, kCsvFileInput);
+  const std::unique_ptr<std::istream> in = input.stream();
   CsvColumns table;
   std::vector<size_t> positions;
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  for (int number = 1; std::getline(*in, line); ++number) {
     const std::string content = trim(line);
     if (content.empty() || content[0] == '#') continue;
     const std::string where = fmt::format("{}: line {}", file.string(), number);

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "renderer/raw_embree_benchmark.h"
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
+#include "renderer/signal_cleanup.h"
 #include "tools/tool_files.h"
 
 namespace {
@@ -226,6 +228,7 @@ int main(int argc, char** argv) {
   if (*spp_opt) cmd.spp = spp;
   if (cmd.scenes.empty())
     cmd.scenes = cmd.modes ? std::vector<std::string>{polarized_scene()} : default_scenes();
+  ochre::install_signal_cleanup();  // loading a textured scene writes converted textures to the cache
   try {
     for (const std::string& scene : cmd.scenes) {
       if (cmd.modes)
@@ -234,6 +237,9 @@ int main(int argc, char** argv) {
         bench_scene(cmd, scene);
     }
     return 0;
+  } catch (const std::bad_alloc&) {  // not clearly from the input's size: an internal error
+    fmt::print(stderr, "ochre-bench: internal error: out of memory while loading or rendering a scene\n");
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ochre-bench: error: {}\n", e.what());
     return 2;

@@ -9,8 +9,10 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include "ochre/version.h"
+#include "renderer/signal_cleanup.h"
 #include "tools/brdf/brdf_commands.h"
 
 namespace {
@@ -67,11 +69,15 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  ochre::install_signal_cleanup();
   try {
     if (*eval_cmd) return ochre::run_eval(eval);
     if (*albedo_cmd) return ochre::run_albedo(albedo);
     if (*plot_cmd) return ochre::run_plot(plot);
     return ochre::run_chi2(chi2);
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "ochre-brdf: error: out of memory while loading or evaluating the material\n");
+    return 2;
   } catch (const std::exception& e) {  // InputError, GraphError, ImageError: all name the file at fault
     fmt::print(stderr, "ochre-brdf: error: {}\n", e.what());
     return 2;

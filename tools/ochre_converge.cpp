@@ -12,8 +12,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
+#include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,9 +25,12 @@
 #include "renderer/film.h"
 #include "renderer/image_metrics.h"
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "renderer/signal_cleanup.h"
 #include "tools/python_script.h"
 #include "tools/unsigned_option.h"
 
@@ -182,17 +186,12 @@ std::vector<Row> run_variant(const ConvergeCommand& cmd, const Variant& variant,
   return rows;
 }
 
-void write_csv(const fs::path& path, const std::vector<Row>& rows) {
-  ochre::AtomicOutput output(path);
-  {
-    std::ofstream out(output.temp_path());
-    out << "variant,spp,seconds,relmse,rmse,relmse_x_seconds\n";
-    for (const Row& r : rows)
-      out << fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.variant, r.spp, r.seconds, r.relmse, r.rmse,
-                         r.relmse * r.seconds);
-    if (!out) throw InputError(fmt::format("cannot write {}", path.string()));
-  }
-  output.commit();
+void write_csv(const ochre::AtomicOutput& output, const std::vector<Row>& rows) {
+  std::string csv = "variant,spp,seconds,relmse,rmse,relmse_x_seconds\n";
+  for (const Row& r : rows)
+    csv += fmt::format("{},{},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.variant, r.spp, r.seconds, r.relmse, r.rmse,
+                       r.relmse * r.seconds);
+  ochre::write_text_file(output, csv);
 }
 
 // log(relMSE) at log(seconds), linear between the variant's rows sorted by time; nullopt outside.
@@ -234,16 +233,36 @@ void print_equal_time_ratios(const std::vector<std::vector<Row>>& by_variant) {
   }
 }
 
-// Runs the plotting script; a missing Python or matplotlib is a warning (the CSV is kept).
-void plot(const fs::path& csv, const fs::path& png) {
+// Runs the plotting script on the CSV's temporary into the PNG's; a missing Python or matplotlib is a
+// warning (the CSV is still written). Returns whether the plot was made.
+bool plot(const ochre::AtomicOutput& csv, const ochre::AtomicOutput& png) {
   const fs::path script = ochre::tool_script("plot_convergence.py");
-  if (!ochre::run_python(script, {csv.string(), png.string()}))
-    fmt::print(stderr,
-               "ochre-converge: warning: plot {} not written ({} failed; is matplotlib installed?); "
-               "the CSV {} is kept\n",
-               png.string(), script.string(), csv.string());
-  else
-    fmt::print("plot: {}\n", png.string());
+  if (ochre::run_python(script, {csv.temp_path().string(), png.temp_path().string()})) return true;
+  fmt::print(stderr,
+             "ochre-converge: warning: plot {} not written ({} failed; is matplotlib installed?); "
+             "the CSV {} is kept\n",
+             png.final_path().string(), script.string(), csv.final_path().string());
+  return false;
+}
+
+// The CSV and the plot, together (the plot only when the script succeeds).
+void write_results(const ConvergeCommand& cmd, const std::vector<Row>& rows,
+                   const ochre::InputFileLog& inputs) {
+  std::vector<fs::path> outputs = {cmd.csv};
+  if (!cmd.plot.empty()) outputs.emplace_back(cmd.plot);
+  ochre::check_output_files(outputs, inputs);  // again: the scene's own files are known now
+  ochre::OutputTransaction transaction;
+  ochre::AtomicOutput& csv = transaction.add(cmd.csv);
+  write_csv(csv, rows);
+  bool plotted = false;
+  if (!cmd.plot.empty()) {
+    auto png = std::make_unique<ochre::AtomicOutput>(cmd.plot);
+    plotted = plot(csv, *png);
+    if (plotted) transaction.add(std::move(png));
+  }
+  transaction.commit();
+  fmt::print("csv: {}\n", cmd.csv);
+  if (plotted) fmt::print("plot: {}\n", cmd.plot);
 }
 
 int run_converge(ConvergeCommand cmd) {
@@ -257,11 +276,18 @@ int run_converge(ConvergeCommand cmd) {
 
   // A plot needs a CSV: without --csv it goes beside the PNG.
   if (!cmd.plot.empty() && cmd.csv.empty()) cmd.csv = fs::path(cmd.plot).replace_extension(".csv").string();
-  if (!cmd.csv.empty()) ochre::check_output_writable(cmd.csv);
-  if (!cmd.plot.empty()) ochre::check_output_writable(cmd.plot);
 
   if (cmd.reference != "auto" && !fs::exists(cmd.reference))
     throw InputError(fmt::format("--reference {}: no such file", cmd.reference));
+  // Every file the run reads (the scene and its files, the reference), so that no output replaces one.
+  ochre::InputFileLog inputs;
+  const ochre::InputFileLog::Recording recording(inputs);
+  ochre::check_regular_input(cmd.scene, ochre::kSceneFileInput);
+  if (cmd.reference != "auto") ochre::check_regular_input(cmd.reference, ochre::kImageFileInput);
+  std::vector<fs::path> outputs;
+  if (!cmd.csv.empty()) outputs.emplace_back(cmd.csv);
+  if (!cmd.plot.empty()) outputs.emplace_back(cmd.plot);
+  ochre::check_output_files(outputs, inputs);  // before any render
   const ochre::RgbImage reference = cmd.reference == "auto"
                                         ? auto_reference(cmd)
                                         : ochre::rgb_from_exr(ochre::read_exr(cmd.reference), cmd.reference);
@@ -275,11 +301,7 @@ int run_converge(ConvergeCommand cmd) {
     rows.insert(rows.end(), by_variant.back().begin(), by_variant.back().end());
   }
   if (by_variant.size() >= 2) print_equal_time_ratios(by_variant);
-  if (!cmd.csv.empty()) {
-    write_csv(cmd.csv, rows);
-    fmt::print("csv: {}\n", cmd.csv);
-  }
-  if (!cmd.plot.empty()) plot(cmd.csv, cmd.plot);
+  if (!cmd.csv.empty()) write_results(cmd, rows, inputs);
   return 0;
 }
 
@@ -319,8 +341,12 @@ int main(int argc, char** argv) {
   if (*seed_opt) cmd.seed = seed;
   if (*width_opt) cmd.width = width;
   if (*height_opt) cmd.height = height;
+  ochre::install_signal_cleanup();
   try {
     return run_converge(cmd);
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "ochre-converge: error: out of memory while rendering {}\n", cmd.scene);
+    return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ochre-converge: error: {}\n", e.what());
     return 2;

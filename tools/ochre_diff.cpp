@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -16,6 +17,8 @@
 #include "renderer/image_error.h"
 #include "renderer/image_metrics.h"
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
+#include "renderer/signal_cleanup.h"
 
 namespace {
 
@@ -92,11 +95,14 @@ std::string write_heatmap(const DiffCommand& cmd, const ochre::RgbImage& image,
 
 int run_diff(const DiffCommand& cmd) {
   if (!cmd.heatmap.empty()) ochre::check_output_writable(cmd.heatmap);
+  ochre::InputFileLog inputs;
+  const ochre::InputFileLog::Recording recording(inputs);  // the images and the OCIO config
   const ochre::RgbImage test = ochre::rgb_from_exr(ochre::read_exr(cmd.test), cmd.test);
   const ochre::RgbImage reference = ochre::rgb_from_exr(ochre::read_exr(cmd.reference), cmd.reference);
   ochre::check_comparable(test, reference, cmd.test, cmd.reference);
 
   const ochre::ImageComparison diff = ochre::compare_images(test, reference, cmd.display);
+  if (!cmd.heatmap.empty()) ochre::check_output_files({cmd.heatmap}, inputs);
   const std::vector<std::string> exceeded = ochre::exceeded_thresholds(diff.metrics, cmd.thresholds);
   const std::string heatmap_line = cmd.heatmap.empty() ? "" : write_heatmap(cmd, test, diff);
 
@@ -156,8 +162,13 @@ int main(int argc, char** argv) {
   if (*display_opt) cmd.display.display = display;
   if (*view_opt) cmd.display.view = view;
 
+  ochre::install_signal_cleanup();
   try {
     return run_diff(cmd);
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "ochre-diff: error: out of memory while comparing {} with {}\n", cmd.test,
+               cmd.reference);
+    return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ochre-diff: error: {}\n", e.what());
     return 2;

@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "ochre/version.h"
+#include "spectra/byte_size.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -66,6 +67,11 @@ int main(int argc, char** argv) {
   render->add_option("--polarization-png", cmd.polarization_png,
                      "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
                      "polarization");
+  std::string memory_limit;
+  auto* memory_opt = render->add_option(
+      "--memory-limit", memory_limit,
+      "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
+      "(default: the machine's memory)");
 
   try {
     app.parse(argc, argv);
@@ -88,6 +94,14 @@ int main(int argc, char** argv) {
     }
     cmd.overrides.width = w;
     cmd.overrides.height = h;
+  }
+  if (*memory_opt) {
+    cmd.memory_limit = ochre::parse_byte_size(memory_limit);
+    if (!cmd.memory_limit) {
+      std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
+                << memory_limit << "'\n";
+      return 2;
+    }
   }
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,12 +18,14 @@
 #include "ochre/version.h"
 #include "renderer/atomic_file.h"
 #include "renderer/exr_reader.h"
-#include "renderer/image_error.h"
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
 #include "renderer/regression_compare.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
 #include "renderer/scene_loader.h"
+#include "renderer/signal_cleanup.h"
 
 namespace fs = std::filesystem;
 
@@ -84,7 +86,9 @@ std::vector<fs::path> scene_files(const RegressCommand& cmd) {
   if (!fs::is_directory(dir)) throw ochre::InputError(cmd.dir + ": not a directory");
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+    // Not only regular files: a FIFO or a device named *.json is reported (spectra/input_file.h), not
+    // skipped.
+    if (!entry.is_directory() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (!cmd.only.empty()) {
     std::vector<fs::path> chosen;
@@ -105,13 +109,14 @@ ochre::RenderSettings scene_settings(const fs::path& file) {
   return ochre::load_scene(file)->settings;
 }
 
-void update_reference(const RegressCommand& cmd, const fs::path& file) {
+void update_reference(const RegressCommand& cmd, const fs::path& file, const ochre::InputFileLog& inputs) {
   const auto start = std::chrono::steady_clock::now();
   const ochre::RenderSettings settings = scene_settings(file);
-  const uint32_t spp = cmd.reference_spp.value_or(kReferenceSppFactor * settings.spp);
-  const RenderedScene r = render_scene(file, spp, kReferenceSeedOffset + settings.seed, cmd.threads);
   const fs::path out = reference_path(cmd.dir, file.stem().string());
   fs::create_directories(out.parent_path());
+  ochre::check_output_files({out}, inputs);  // before the render: the scene and its files are read
+  const uint32_t spp = cmd.reference_spp.value_or(kReferenceSppFactor * settings.spp);
+  const RenderedScene r = render_scene(file, spp, kReferenceSeedOffset + settings.seed, cmd.threads);
   // write_exr goes through a temporary file and a rename: an interrupted update keeps the old reference.
   ochre::write_exr(out, ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), spp));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -119,7 +124,7 @@ void update_reference(const RegressCommand& cmd, const fs::path& file) {
              kReferenceSeedOffset + settings.seed, seconds);
 }
 
-SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file) {
+SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const ochre::InputFileLog& inputs) {
   const auto start = std::chrono::steady_clock::now();
   SceneOutcome outcome;
   outcome.name = file.stem().string();
@@ -145,13 +150,18 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file) {
   if (!outcome.passed) {
     const fs::path out_dir(cmd.output_dir);
     fs::create_directories(out_dir);
+    const fs::path render_exr = out_dir / (outcome.name + ".exr");
     const fs::path p_exr = out_dir / (outcome.name + ".pvalue.exr");
     const fs::path p_png = out_dir / (outcome.name + ".pvalue.png");
-    ochre::ExrImage render_image =
-        ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), r.spp);
-    ochre::write_exr(out_dir / (outcome.name + ".exr"), render_image);
-    ochre::write_exr(p_exr, ochre::p_value_image(result));
-    ochre::write_p_value_heatmap(p_png, result);
+    std::vector<fs::path> outputs = {render_exr, p_exr, p_png};
+    if (!cmd.junit.empty()) outputs.emplace_back(cmd.junit);
+    ochre::check_output_files(outputs, inputs);
+    ochre::OutputTransaction transaction;  // the three files of a failure, or none
+    ochre::write_exr(transaction.add(render_exr),
+                     ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), r.spp));
+    ochre::write_exr(transaction.add(p_exr), ochre::p_value_image(result));
+    ochre::write_p_value_heatmap(transaction.add(p_png), result);
+    transaction.commit();
     outcome.message = fmt::format(
         "{} of {} pixels below the per-pixel level {:.3g} (Sidak, alpha {}); worst p = {:.3g} at x={} y={} "
         "(z = {:.2f}); p-value image {}, heat map {}",
@@ -196,37 +206,37 @@ void write_junit(const fs::path& path, const std::vector<SceneOutcome>& outcomes
     failures += o.passed ? 0 : 1;
     total += o.seconds;
   }
-  ochre::AtomicOutput output(path);
-  {
-    std::ofstream xml(output.temp_path());
-    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    xml << fmt::format(
-        "<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-        outcomes.size(), failures, total);
-    for (const auto& o : outcomes) {
-      xml << fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\" time=\"{:.3f}\"",
-                         xml_escape(o.name), o.seconds);
-      if (o.passed) {
-        xml << "/>\n";
-      } else {
-        xml << fmt::format(">\n    <failure message=\"{}\"/>\n  </testcase>\n", xml_escape(o.message));
-      }
+  std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  xml += fmt::format(
+      "<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
+      outcomes.size(), failures, total);
+  for (const auto& o : outcomes) {
+    xml += fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\" time=\"{:.3f}\"",
+                       xml_escape(o.name), o.seconds);
+    if (o.passed) {
+      xml += "/>\n";
+    } else {
+      xml += fmt::format(">\n    <failure message=\"{}\"/>\n  </testcase>\n", xml_escape(o.message));
     }
-    xml << "</testsuite>\n";
-    if (!xml) throw ochre::ImageError("cannot write " + path.string());
   }
-  output.commit();
+  xml += "</testsuite>\n";
+  ochre::write_text_file(path, xml);
 }
 
 int run(const RegressCommand& cmd) {
   const std::vector<fs::path> files = scene_files(cmd);
+  // Every file the run reads (scenes, their meshes, textures, ..., references), so that no output
+  // replaces one of them.
+  ochre::InputFileLog inputs;
+  const ochre::InputFileLog::Recording recording(inputs);
+  for (const auto& file : files) ochre::check_regular_input(file, ochre::kSceneFileInput);
   if (cmd.update) {
-    for (const auto& file : files) update_reference(cmd, file);
+    for (const auto& file : files) update_reference(cmd, file, inputs);
     return 0;
   }
-  if (!cmd.junit.empty()) ochre::check_output_writable(cmd.junit);
+  if (!cmd.junit.empty()) ochre::check_output_files({cmd.junit}, inputs);
   std::vector<SceneOutcome> outcomes;
-  for (const auto& file : files) outcomes.push_back(run_scene(cmd, file));
+  for (const auto& file : files) outcomes.push_back(run_scene(cmd, file, inputs));
 
   fmt::print("{:<28} {:>7} {:>10} {:>8} {:>8}  {}\n", "scene", "pixels", "worst p", "failing", "time",
              "result");
@@ -238,7 +248,10 @@ int run(const RegressCommand& cmd) {
   }
   for (const auto& o : outcomes)
     if (!o.passed) fmt::print(stderr, "ochre-regress: {} FAILED: {}\n", o.name, o.message);
-  if (!cmd.junit.empty()) write_junit(cmd.junit, outcomes);
+  if (!cmd.junit.empty()) {
+    ochre::check_output_files({cmd.junit}, inputs);
+    write_junit(cmd.junit, outcomes);
+  }
   return all_passed ? 0 : 1;
 }
 
@@ -269,8 +282,12 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  ochre::install_signal_cleanup();
   try {
     return run(cmd);
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "ochre-regress: error: out of memory while running the scenes of {}\n", cmd.dir);
+    return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "ochre-regress: {}\n", e.what());
     return 2;

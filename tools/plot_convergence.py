@@ -63,7 +63,7 @@ def main():
     ax.grid(True, which="both", linewidth=0.3)
     ax.legend()
     fig.tight_layout()
-    fig.savefig(png_path)
+    fig.savefig(png_path, format="png")  # the path is a temporary name without .png
     return 0
 
 

@@ -4,14 +4,19 @@
 
 #include <chrono>
 #include <iostream>
+#include <new>
 #include <optional>
 
 #include "materials/graph/graph_error.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
+#include "renderer/load_progress.h"
+#include "renderer/memory_budget.h"
+#include "renderer/output_files.h"
 #include "renderer/progress.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
+#include "renderer/signal_cleanup.h"
 
 namespace ochre {
 
@@ -47,12 +52,16 @@ void print_stats(const RenderStats& stats) {
       stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
 }
 
-int render_scene(const RenderCommand& command) {
-  const auto load_start = std::chrono::steady_clock::now();
-  std::unique_ptr<Scene> scene = load_scene(command.scene, command.overrides);
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
-  OutputSettings& out = scene->outputs;
+// What the command was doing, for an out-of-memory report.
+struct Phase {
+  const char* what = "loading the scene";
+  bool from_input_size = true;  // the allocation grew with the scene or the outputs asked for
+};
+
+// Overrides the scene's output settings with the command line's and checks them (building the display
+// transform reads the OCIO config).
+void apply_output_options(const RenderCommand& command, Scene& scene) {
+  OutputSettings& out = scene.outputs;
   if (!command.exr.empty()) out.exr = command.exr;
   if (!command.png.empty()) out.png = command.png;
   if (command.ocio_config) out.ocio_config = *command.ocio_config;
@@ -65,24 +74,38 @@ int render_scene(const RenderCommand& command) {
   if (command.stokes) out.stokes = true;
   if (!command.polarization_png.empty()) out.polarization_png = command.polarization_png;
   if (!out.polarization_png.empty()) out.stokes = true;  // DoLP / AoLP need S1, S2
-  if (out.stokes && scene->settings.polarization != "auto" && scene->settings.polarization != "stokes")
+  if (out.stokes && scene.settings.polarization != "auto" && scene.settings.polarization != "stokes")
     throw InputError(fmt::format(
         "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
         "needs polarization mode stokes or auto, not '{}'",
-        command.scene, scene->settings.polarization));
+        command.scene, scene.settings.polarization));
   if (out.colorspace != "rec709" && out.colorspace != "acescg")
     throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
   check_outputs(out);
+}
+
+int render_scene(const RenderCommand& command, Phase& phase) {
+  const auto load_start = std::chrono::steady_clock::now();
+  InputFileLog inputs;
+  std::unique_ptr<Scene> scene;
+  {
+    const InputFileLog::Recording recording(inputs);  // every file the scene and its outputs read
+    scene = load_scene(command.scene, command.overrides);
+    apply_output_options(command, *scene);
+  }
+  const OutputSettings& out = scene->outputs;
+  const std::vector<std::string> paths = output_paths(out);
+  check_output_files({paths.begin(), paths.end()}, inputs);
+  const double load_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
 
   if (!command.quiet) {
     print_summary(*scene);
     std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
   }
-  Film film(scene->settings.width, scene->settings.height);
-  if (out.aovs && !out.exr.empty()) film.enable_aovs();
-  if (out.spectral_bins > 0 && !out.exr.empty())
-    film.enable_spectral(out.spectral_bins, out.spectral_min, out.spectral_max);
-  if (out.stokes) film.enable_stokes();
+  phase = {"allocating the film", true};
+  check_render_memory(scene->settings.width, scene->settings.height, out);
+  Film film(scene->settings.width, scene->settings.height, film_layers(out));
   const uint64_t total =
       static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
   std::optional<ProgressReporter> progress;
@@ -93,12 +116,14 @@ int render_scene(const RenderCommand& command) {
       throw InputError(std::string("OCHRE_PROGRESS: ") + e.what());
     }
   }
+  phase = {"rendering", false};
   const RenderStats stats = render(*scene, film, [&](uint64_t done) {
     if (progress) progress->advance(done);
   });
   if (progress) progress->finish();
   if (!command.quiet) print_stats(stats);
 
+  phase = {"writing the outputs", true};
   for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
     if (!command.quiet) std::cerr << "ochre: " << line << "\n";
   return 0;
@@ -107,8 +132,18 @@ int render_scene(const RenderCommand& command) {
 }  // namespace
 
 int run_render(const RenderCommand& command) {
+  install_signal_cleanup();
+  set_memory_limit(command.memory_limit);
+  enable_load_progress(command.quiet ? nullptr : &std::cerr);
+  Phase phase;
   try {
-    return render_scene(command);
+    return render_scene(command, phase);
+  } catch (const std::bad_alloc&) {
+    // Memory exhausted despite the estimates: bad input when the allocation grew with the scene or the
+    // outputs asked for, an internal error while rendering (whose memory use does not grow with them).
+    std::cerr << fmt::format("ochre: {}: {}: out of memory while {} (see --memory-limit in docs/cli.md)\n",
+                             phase.from_input_size ? "error" : "internal error", command.scene, phase.what);
+    return phase.from_input_size ? 2 : 1;
   } catch (const InputError& e) {
     std::cerr << "ochre: error: " << e.what() << "\n";
     return 2;

@@ -1,7 +1,8 @@
 #pragma once
 // `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code:
-// 0 success, 2 bad input (nothing written), 1 internal error.
+// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -18,8 +19,9 @@ struct RenderCommand {
   bool quiet = false;
   bool aovs = false;
   int spectral_bins = 0;
-  bool stokes = false;           // Stokes layers in the EXR
-  std::string polarization_png;  // false-colour DoLP / AoLP PNG
+  bool stokes = false;                        // Stokes layers in the EXR
+  std::string polarization_png;               // false-colour DoLP / AoLP PNG
+  std::optional<std::uint64_t> memory_limit;  // bytes (--memory-limit); default: the machine's memory
 };
 
 int run_render(const RenderCommand& command);

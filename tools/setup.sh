@@ -16,6 +16,8 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools libopencolorio-dev libembree-dev libopenexr-dev
   libimath-dev libosd-dev libtbb-dev libassimp-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev python3 python3-numpy python3-matplotlib libnlopt-dev
+  # Fuzzing (tests/fuzz, tools/fuzz.sh): clang with libFuzzer and the sanitizer runtimes.
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 
 missing=()

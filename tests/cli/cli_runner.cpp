@@ -4,18 +4,20 @@
 
 #include <array>
 #include <cstdio>
-#include <fstream>
 
 #include "support/test_paths.h"
 
 namespace ochre::test {
 
 CommandResult run_tool(const std::string& tool, const std::string& args,
-                       const std::filesystem::path& working_dir, bool stdout_only) {
+                       const std::filesystem::path& working_dir, bool stdout_only, int timeout_seconds) {
   std::string command;
   if (!working_dir.empty()) command = "cd '" + working_dir.string() + "' && ";
-  command += "OCHRE_PROGRESS=none '" + (bin_dir() / tool).string() + "' " + args +
-             (stdout_only ? " 2>/dev/null" : " 2>&1");
+  command += "OCHRE_PROGRESS=none ";
+  if (timeout_seconds > 0)
+    command.append("timeout -s KILL ").append(std::to_string(timeout_seconds)).append(" ");
+  command.append("'").append((bin_dir() / tool).string()).append("' ").append(args);
+  command.append(stdout_only ? " 2>/dev/null" : " 2>&1");
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -25,11 +27,6 @@ CommandResult run_tool(const std::string& tool, const std::string& args,
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
-}
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream(path) << text;
 }
 
 }  // namespace ochre::test

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "support/text_files.h"  // write_text for the tests' scenes
+
 namespace ochre::test {
 
 struct CommandResult {
@@ -12,15 +14,14 @@ struct CommandResult {
 };
 
 // Runs `bin_dir()/TOOL ARGS` in `working_dir` (progress output off). stderr is merged into the
-// output unless `stdout_only`.
+// output unless `stdout_only`. With timeout_seconds > 0 the tool is killed (SIGKILL) when it runs
+// longer, and exit_code is then 137: for inputs that could make a tool hang.
 CommandResult run_tool(const std::string& tool, const std::string& args,
-                       const std::filesystem::path& working_dir = {}, bool stdout_only = false);
+                       const std::filesystem::path& working_dir = {}, bool stdout_only = false,
+                       int timeout_seconds = 0);
 // Runs `bin_dir()/ochre ARGS` in `working_dir`.
 inline CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {}) {
   return run_tool("ochre", args, working_dir);
 }
-
-// Writes `text` to `path` (creating directories).
-void write_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace ochre::test

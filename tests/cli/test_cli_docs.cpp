@@ -33,6 +33,7 @@ const std::vector<ToolDoc>& tool_docs() {
       {"ochre-bench", {}, "docs/tools.md"},
       {"ochre-brdf", {"eval", "albedo", "plot", "chi2"}, "docs/tools.md"},
       {"ochre-halfspace", {}, "docs/tools.md"},
+      {"ochre-vgroove", {"bihemispherical", "directional", "tables", "maps", "profile"}, "docs/tools.md"},
   };
   return docs;
 }

@@ -29,7 +29,7 @@ TEST(Version, EveryToolPrintsTheVersionOfCMakeLists) {
   const std::string version = cmake_project_version();
   ASSERT_FALSE(version.empty()) << "no project(ochre VERSION x.y.z) in CMakeLists.txt";
   for (const char* tool : {"ochre", "ochre-diff", "ochre-regress", "ochre-converge", "ochre-bench",
-                           "ochre-brdf", "ochre-halfspace"}) {
+                           "ochre-brdf", "ochre-halfspace", "ochre-vgroove"}) {
     const CommandResult r = run_tool(tool, "--version");
     EXPECT_EQ(r.exit_code, 0) << tool << ": " << r.output;
     EXPECT_EQ(r.output, std::string(tool) + " " + version + "\n") << tool;

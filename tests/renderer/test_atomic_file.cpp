@@ -11,22 +11,15 @@
 #include "renderer/atomic_file.h"
 #include "renderer/image_error.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre {
 namespace {
 
 namespace fs = std::filesystem;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using test::read_text_file;
+using test::write_text;
 
 size_t count_entries(const fs::path& dir) {
   return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
@@ -48,7 +41,7 @@ TEST(AtomicOutput, CommitMovesTheTempFileToTheFinalName) {
   write_text(output.temp_path(), "new");
   EXPECT_FALSE(fs::exists(final_path));
   output.commit();
-  EXPECT_EQ(read_text(final_path), "new");
+  EXPECT_EQ(read_text_file(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
@@ -58,9 +51,9 @@ TEST(AtomicOutput, CommitReplacesAnExistingFile) {
   write_text(final_path, "old");
   AtomicOutput output(final_path);
   write_text(output.temp_path(), "new");
-  EXPECT_EQ(read_text(final_path), "old");  // untouched until the new file is complete
+  EXPECT_EQ(read_text_file(final_path), "old");  // untouched until the new file is complete
   output.commit();
-  EXPECT_EQ(read_text(final_path), "new");
+  EXPECT_EQ(read_text_file(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
@@ -75,7 +68,7 @@ TEST(AtomicOutput, FailureBeforeCommitKeepsTheOldFileAndRemovesTheTemp) {
         throw std::runtime_error("simulated crash of the writer");
       },
       std::runtime_error);
-  EXPECT_EQ(read_text(final_path), "old");
+  EXPECT_EQ(read_text_file(final_path), "old");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 

@@ -138,6 +138,20 @@ TEST(TabulatedSpectrum, RejectsInvalidTables) {
   EXPECT_THROW(TabulatedSpectrum({400.0f, 500.0f}, {1.0f, NAN}), std::invalid_argument);
 }
 
+// Reported by fuzz_csv (input written by hand): values -3e38 and 3e38 are finite, their difference is not,
+// and the interpolation at the knot between them gave 0 * inf = NaN.
+TEST(TabulatedSpectrum, RejectsNeighbouringValuesBeyondTheFloatRange) {
+  try {
+    TabulatedSpectrum({400.0f, 510.0f, 600.0f}, {0.0f, -3e38f, 3e38f});
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "TabulatedSpectrum: values at index 1 and 2 differ by more than the float range");
+  }
+  const TabulatedSpectrum wide({400.0f, 510.0f, 600.0f}, {0.0f, -1.5e38f, 1.5e38f});
+  EXPECT_FLOAT_EQ(wide.eval(510.0f), -1.5e38f);
+  EXPECT_FLOAT_EQ(wide.eval(555.0f), 0.0f);
+}
+
 TEST(TabulatedSpectrum, LoadsCsvColumns) {
   const auto dir = test::scratch_dir();
   const auto path = dir / "nk.csv";

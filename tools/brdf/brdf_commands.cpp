@@ -10,6 +10,9 @@
 #include "materials/lobes/sampling_check.h"
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
+#include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
 #include "tools/brdf/closure_lobe.h"
 #include "tools/brdf/direction_pairs.h"
@@ -50,13 +53,13 @@ void check_lambda(float lambda_nm) {
 }
 
 // Writes `text` to `path` atomically, or to standard output when path is empty.
-void write_output(const std::string& path, const std::string& text) {
+void write_output(const std::string& path, const std::string& text, const InputFileLog& inputs) {
   if (path.empty()) {
     std::cout << text;
     return;
   }
-  check_output_writable(path);
-  write_text_file(path, text);
+  check_output_files({path}, inputs);
+  write_text_file(fs::path(path), text);
 }
 
 // The closure's BRDF on a (theta_o, phi_o) grid for each incidence (wi at phi = 0, so phi_o = 0 is the
@@ -79,6 +82,8 @@ std::string plot_table(MaterialProbe& probe, const PlotArgs& args) {
 
 int run_eval(const EvalArgs& args) {
   check_output_writable(args.output);
+  InputFileLog inputs;
+  const InputFileLog::Recording recording(inputs);
   MaterialProbe probe(args.material.file, args.material.name);
   const DirectionPairTable table = read_direction_pairs(args.input);
   std::string csv;
@@ -94,7 +99,7 @@ int run_eval(const EvalArgs& args) {
     for (const std::string& field : row.fields) csv += field + ",";
     csv += number(f) + "\n";
   }
-  write_output(args.output, csv);
+  write_output(args.output, csv, inputs);
   return 0;
 }
 
@@ -102,6 +107,8 @@ int run_albedo(const AlbedoArgs& args) {
   check_angles(args.angles_deg, "--angles");
   check_lambda(args.lambda_nm);
   if (args.samples == 0) throw InputError("--samples must be positive");
+  InputFileLog inputs;
+  const InputFileLog::Recording recording(inputs);
   MaterialProbe probe(args.material.file, args.material.name);
   const Closure& closure = probe.closure(args.lambda_nm);
   std::string csv = "theta_deg,lambda_nm,mc_albedo,mc_se,quadrature_albedo,quadrature_error\n";
@@ -111,7 +118,7 @@ int run_albedo(const AlbedoArgs& args) {
     csv += fmt::format("{},{},{},{},{},{}\n", number(theta), number(args.lambda_nm), number(a.monte_carlo),
                        number(a.monte_carlo_se), number(a.quadrature), number(a.quadrature_error));
   }
-  write_output(args.output, csv);
+  write_output(args.output, csv, inputs);
   return 0;
 }
 
@@ -119,24 +126,28 @@ int run_plot(const PlotArgs& args) {
   check_angles(args.incidence_deg, "--incidence");
   check_lambda(args.lambda_nm);
   if (args.output.empty()) throw InputError("--output: give the PNG file to write");
+  InputFileLog inputs;
+  const InputFileLog::Recording recording(inputs);
   MaterialProbe probe(args.material.file, args.material.name);
   const std::string csv = plot_table(probe, args);
-  check_output_writable(args.output);
-  // The values go to a temporary CSV (or the one asked for), the picture to a temporary PNG renamed
-  // only when the script succeeded.
-  const fs::path csv_path = args.csv.empty() ? fs::path(args.output + ".values.tmp.csv") : fs::path(args.csv);
-  write_output(csv_path.string(), csv);
-  AtomicOutput png{fs::path(args.output)};
+  std::vector<fs::path> outputs = {args.output};
+  if (!args.csv.empty()) outputs.emplace_back(args.csv);
+  check_output_files(outputs, inputs);
+  // The values go to a temporary CSV, the picture to a temporary PNG; both are renamed (the CSV only
+  // when asked for) when the script succeeded, neither otherwise.
+  OutputTransaction transaction;
+  AtomicOutput& png = transaction.add(args.output);
+  AtomicOutput values_only(args.output + ".values.csv");  // never committed: removed when done
+  AtomicOutput& values = args.csv.empty() ? values_only : transaction.add(args.csv);
+  write_text_file(values, csv);
   const std::string title = fmt::format("{} ({} nm)", probe.name(), number(args.lambda_nm));
   const fs::path script = tool_script("plot_brdf.py");
-  const bool plotted = run_python(script, {csv_path.string(), png.temp_path().string(), title});
-  if (args.csv.empty()) fs::remove(csv_path);
-  if (!plotted) {
+  if (!run_python(script, {values.temp_path().string(), png.temp_path().string(), title})) {
     std::cerr << fmt::format("ochre-brdf: error: plot {} not written ({} failed; is matplotlib installed?)\n",
                              args.output, script.string());
     return 1;
   }
-  png.commit();
+  transaction.commit();
   std::cout << "plot: " << args.output << "\n";
   return 0;
 }
@@ -146,6 +157,8 @@ int run_chi2(const Chi2Args& args) {
   check_lambda(args.lambda_nm);
   if (args.samples < 1000) throw InputError("--samples must be at least 1000");
   if (!(args.alpha > 0.0 && args.alpha < 1.0)) throw InputError("--alpha must be in (0, 1)");
+  InputFileLog inputs;
+  const InputFileLog::Recording recording(inputs);
   MaterialProbe probe(args.material.file, args.material.name);
   const ClosureLobe lobe(probe.closure(args.lambda_nm));
   const double significance = sidak_significance(args.alpha, static_cast<int>(args.incidence_deg.size()));
@@ -164,7 +177,7 @@ int run_chi2(const Chi2Args& args) {
                        r.samples_histogrammed, r.samples_failed, r.samples_delta, r.samples_in_empty_cells,
                        r.weight_mismatches, r.pdf_mismatches, pass ? "yes" : "no");
   }
-  write_output(args.output, csv);
+  write_output(args.output, csv, inputs);
   std::cerr << fmt::format("ochre-brdf chi2: {}: {}\n", probe.name(), all_pass ? "PASS" : "FAIL");
   return all_pass ? 0 : 1;
 }

@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "ochre/version.h"
+#include "renderer/signal_cleanup.h"
 #include "tools/vgroove/vgroove_commands.h"
 
 namespace {
@@ -33,6 +35,7 @@ constexpr const char* kMaterialHelp =
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-vgroove: the V-groove model of Saint-Pierre et al. 2019 (JOSA A 36(11) C51)"};
+  app.set_version_flag("--version", "ochre-vgroove " OCHRE_VERSION);
   app.require_subcommand(1);
 
   ochre::BihemisphericalArgs bi;
@@ -96,6 +99,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  ochre::install_signal_cleanup();  // SIGINT / SIGTERM leave no temporary output or scratch directory
   try {
     if (*bi_cmd) return ochre::run_bihemispherical(bi);
     if (*dir_cmd) return ochre::run_directional(dir);

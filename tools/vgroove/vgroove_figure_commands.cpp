@@ -9,6 +9,9 @@
 
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
+#include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
+#include "renderer/signal_cleanup.h"
 #include "tools/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_inputs.h"
@@ -61,11 +64,13 @@ std::string panel_title(const Panel& p) {
                      model_name(p.model));
 }
 
-// A scratch directory beside `output` for the panels of a grid, removed when done.
+// A scratch directory beside `output` for the panels of a grid, removed when done (or by the signal
+// handler, renderer/signal_cleanup.h).
 class ScratchDir {
  public:
   explicit ScratchDir(const fs::path& output)
-      : path_(output.string() + fmt::format(".panels.tmp-{}", static_cast<long>(::getpid()))) {
+      : path_(output.string() + fmt::format(".panels.tmp-{}", static_cast<long>(::getpid()))),
+        registration_(path_, TemporaryKind::kDirectory) {
     fs::create_directories(path_);
   }
   ~ScratchDir() {
@@ -76,7 +81,16 @@ class ScratchDir {
 
  private:
   fs::path path_;
+  TemporaryFileRegistration registration_;
 };
+
+// Refuses outputs that could destroy data (docs/cli.md, "Output files"): ochre-vgroove reads no file, so
+// this checks the outputs themselves and that no two are the same file.
+void check_outputs(const std::string& first, const std::string& second) {
+  std::vector<fs::path> outputs{first};
+  if (!second.empty()) outputs.emplace_back(second);
+  check_output_files(outputs, InputFileLog{});
+}
 
 int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
   const ScratchDir scratch{fs::path(args.output)};
@@ -93,21 +107,17 @@ int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
   }
   const fs::path manifest_path = scratch.path() / "panels.csv";
   write_text_file(manifest_path, manifest.csv());
-  AtomicOutput colour{fs::path(args.output)};
-  std::vector<std::string> script_args{"grid", manifest_path.string(), colour.temp_path().string()};
-  std::optional<AtomicOutput> counts;
-  if (!args.counts.empty()) {
-    counts.emplace(fs::path(args.counts));
-    script_args.push_back(counts->temp_path().string());
-  }
+  OutputTransaction outputs;
+  std::vector<std::string> script_args{"grid", manifest_path.string(),
+                                       outputs.add(args.output).temp_path().string()};
+  if (!args.counts.empty()) script_args.push_back(outputs.add(args.counts).temp_path().string());
   const fs::path script = tool_script("plot_vgroove.py");
   if (!run_python(script, script_args)) {
     std::cerr << fmt::format("ochre-vgroove: error: {} not written ({} failed; is matplotlib installed?)\n",
                              args.output, script.string());
     return 1;
   }
-  colour.commit();
-  if (counts) counts->commit();
+  outputs.commit();
   return 0;
 }
 
@@ -121,8 +131,7 @@ int run_maps(const MapsArgs& args) {
   if (args.size < 3 || args.size > 4096)
     throw InputError(fmt::format("--size: {} pixels is outside [3, 4096]", args.size));
   if (args.output.empty()) throw InputError("-o/--output: give the PNG file to write");
-  check_output_writable(args.output);
-  if (!args.counts.empty()) check_output_writable(args.counts);
+  check_outputs(args.output, args.counts);
 
   std::vector<Panel> panels;
   for (const VGrooveMaterial& m : materials)
@@ -131,9 +140,12 @@ int run_maps(const MapsArgs& args) {
   if (args.grid || panels.size() > 1) return write_grid(args, panels);
 
   const ReflectanceMaps maps = reflectance_maps(*panels[0].material, alphas[0], models[0], args.size);
-  write_map_png(args.output, args.size, maps.colour, panel_title(panels[0]));
+  OutputTransaction outputs;
+  write_map_png(outputs.add(args.output), args.size, maps.colour, panel_title(panels[0]));
   if (!args.counts.empty())
-    write_map_png(args.counts, args.size, maps.counts, panel_title(panels[0]) + ": reflection counts");
+    write_map_png(outputs.add(args.counts), args.size, maps.counts,
+                  panel_title(panels[0]) + ": reflection counts");
+  outputs.commit();
   return 0;
 }
 
@@ -144,24 +156,28 @@ int run_profile(const ProfileArgs& args) {
   if (!(args.step > 0.0 && args.step <= 10.0))
     throw InputError(fmt::format("--step: {} degrees is outside (0, 10]", args.step));
   if (args.output.empty()) throw InputError("-o/--output: give the CSV file to write");
-  check_output_writable(args.output);
-  if (!args.png.empty()) check_output_writable(args.png);
+  check_outputs(args.output, args.png);
 
   TextTable csv{{"phi_deg", "theta_deg", "model", "L"}, {}};
   for (const ProfilePoint& p : lightness_profiles(material, alpha, models, args.step))
     csv.rows.push_back({number(p.phi_deg), number(p.theta_deg), std::string(model_name(p.model)),
                         fmt::format("{:.4f}", p.lightness)});
-  write_text_file(args.output, csv.csv());
-  if (args.png.empty()) return 0;
-  AtomicOutput png{fs::path(args.png)};
-  const fs::path script = tool_script("plot_vgroove.py");
-  const std::string title = fmt::format("{}, alpha = {} deg", material.label(), number(alpha));
-  if (!run_python(script, {"profile", args.output, png.temp_path().string(), title})) {
-    std::cerr << fmt::format("ochre-vgroove: error: {} not written ({} failed; is matplotlib installed?)\n",
-                             args.png, script.string());
-    return 1;
+  // The CSV and the plot are written together: when the plot fails, neither is.
+  OutputTransaction outputs;
+  const AtomicOutput& csv_output = outputs.add(args.output);
+  write_text_file(csv_output, csv.csv());
+  if (!args.png.empty()) {
+    const fs::path script = tool_script("plot_vgroove.py");
+    const std::string title = fmt::format("{}, alpha = {} deg", material.label(), number(alpha));
+    if (!run_python(script, {"profile", csv_output.temp_path().string(),
+                             outputs.add(args.png).temp_path().string(), title})) {
+      std::cerr << fmt::format(
+          "ochre-vgroove: error: {} and {} not written ({} failed; is matplotlib installed?)\n", args.output,
+          args.png, script.string());
+      return 1;
+    }
   }
-  png.commit();
+  outputs.commit();
   return 0;
 }
 

@@ -8,7 +8,12 @@
 
 namespace ochre {
 
+class AtomicOutput;
+
 void write_map_png(const std::filesystem::path& path, int size, const std::vector<std::uint8_t>& rgb,
+                   const std::string& description);
+// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+void write_map_png(AtomicOutput& output, int size, const std::vector<std::uint8_t>& rgb,
                    const std::string& description);
 
 }  // namespace ochre

@@ -1,0 +1,25 @@
+#pragma once
+// Small text files for tests: write one, read one back whole.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace ochre::test {
+
+// Writes `text` to `path` (creating directories), directly: a test's own file, not an output of ochre
+// (those go through ochre::write_text_file, renderer/atomic_file.h).
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+}  // namespace ochre::test
