@@ -32,16 +32,16 @@ std::vector<std::string> split_fields(const std::string& line) {
 }
 
 // Position of each asked-for column in the header.
-std::vector<size_t> column_positions(const std::vector<std::string>& header, std::span<const char* const> columns,
-                                     const std::string& where) {
+std::vector<size_t> column_positions(const std::vector<std::string>& header,
+                                     std::span<const char* const> columns, const std::string& where) {
   std::vector<size_t> positions;
   for (const char* column : columns) {
     size_t found = header.size();
     for (size_t i = 0; i < header.size(); ++i)
       if (header[i] == column) found = i;
     if (found == header.size())
-      throw InputError(fmt::format("{}: header: missing column '{}' (need {})", where, column,
-                                   fmt::join(columns, ",")));
+      throw InputError(
+          fmt::format("{}: header: missing column '{}' (need {})", where, column, fmt::join(columns, ",")));
     positions.push_back(found);
   }
   for (size_t i = 0; i < header.size(); ++i) {
@@ -92,8 +92,7 @@ CsvColumns read_csv_columns(const std::filesystem::path& file, std::span<const c
       throw InputError(fmt::format("{}: {} fields, expected {}", where, fields.size(), table.header.size()));
     CsvRecord record;
     record.line = number;
-    for (size_t c = 0; c < columns.size(); ++c)
-    {
+    for (size_t c = 0; c < columns.size(); ++c) {
       const std::string& text = fields[positions[c]];
       const std::optional<double> value = finite_number(text);
       if (!value)

@@ -4,23 +4,24 @@
 Usage: plot_fit.py VALUES.csv OUT.png [TITLE]
 
 Reads the CSV written by ochre-fit (theta_i,lambda_nm,theta_o_signed,kind,brdf): kind "data" rows are the
-measurements of the plane of incidence, kind "model" rows the fitted BRDF every half degree. The abscissa
-is the signed outgoing angle, negative on the light's side (backscattering at -theta_i), positive on the
-far side (the mirror direction at +theta_i). One colour per (theta_i, wavelength): measurements as dots,
-the model as a line; below, the relative residuals (data - model) / model of the measurements.
-The PNG is written to OUT.png whatever its extension (ochre-fit passes a temporary name).
+measurements of the plane of incidence, kind "model" rows the fitted BRDF every half degree. One column
+of panels per incidence angle; the abscissa is the signed outgoing angle, negative on the light's side
+(backscattering at -theta_i), positive on the far side (the mirror direction at +theta_i). One colour per
+wavelength: measurements as dots, the model as a line; below, the relative residuals (data - fit) / fit
+of the measurements in percent. The PNG is written to OUT.png whatever its extension (ochre-fit passes a
+temporary name).
 """
 import csv
 import sys
 
 
 def read_values(path):
-    """{(theta_i, lambda): {"data": [(angle, brdf)], "model": [(angle, brdf)]}}."""
+    """{theta_i: {lambda: {"data": [(angle, brdf)], "model": [(angle, brdf)]}}}."""
     curves = {}
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
-            key = (float(row["theta_i"]), float(row["lambda_nm"]))
-            curve = curves.setdefault(key, {"data": [], "model": []})
+            by_lambda = curves.setdefault(float(row["theta_i"]), {})
+            curve = by_lambda.setdefault(float(row["lambda_nm"]), {"data": [], "model": []})
             curve[row["kind"]].append((float(row["theta_o_signed"]), float(row["brdf"])))
     return curves
 
@@ -32,6 +33,12 @@ def model_at(model, angle):
             t = 0.0 if a1 == a0 else (angle - a0) / (a1 - a0)
             return f0 + t * (f1 - f0)
     return None
+
+
+def colour_of(lam, lambdas, colormap):
+    """Blue to red over the wavelengths present."""
+    low, high = min(lambdas), max(lambdas)
+    return colormap(0.0 if high == low else 0.05 + 0.9 * (lam - low) / (high - low))
 
 
 def main():
@@ -46,32 +53,37 @@ def main():
     import matplotlib.pyplot as plt
 
     curves = read_values(csv_path)
-    fig, (plane, residual) = plt.subplots(2, 1, figsize=(9.0, 7.5), sharex=True,
-                                          gridspec_kw={"height_ratios": [3.0, 1.2]})
-    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for i, ((theta_i, lam), curve) in enumerate(sorted(curves.items())):
-        colour = colours[i % len(colours)]
-        label = f"theta_i {theta_i:g} deg, {lam:g} nm"
-        model = sorted(curve["model"])
-        data = sorted(curve["data"])
-        if model:
-            plane.plot([a for a, _ in model], [f for _, f in model], color=colour, linewidth=1.2,
-                       label=label + " (fit)")
-        if data:
-            plane.plot([a for a, _ in data], [f for _, f in data], "o", color=colour, markersize=3.5,
-                       label=label + " (data)")
-            points = [(a, f, model_at(model, a)) for a, f in data]
-            points = [(a, (f - m) / m) for a, f, m in points if m]
-            residual.plot([a for a, _ in points], [r for _, r in points], "o", color=colour, markersize=3.0)
-    plane.set_ylabel("BRDF (1/sr)")
-    plane.set_ylim(bottom=0.0)
-    plane.grid(True, alpha=0.3)
-    plane.legend(fontsize=7, ncol=2)
-    residual.axhline(0.0, color="0.5", linewidth=0.8)
-    residual.set_xlabel("outgoing angle in the plane of incidence (deg; < 0: light's side)")
-    residual.set_ylabel("(data - fit) / fit")
-    residual.set_xlim(-90, 90)
-    residual.grid(True, alpha=0.3)
+    incidences = sorted(curves)
+    lambdas = sorted({lam for by_lambda in curves.values() for lam in by_lambda})
+    columns = max(1, len(incidences))
+    fig, axes = plt.subplots(2, columns, figsize=(3.4 * columns + 1.0, 6.0), sharex=True, squeeze=False,
+                             gridspec_kw={"height_ratios": [3.0, 1.2]})
+    colormap = plt.get_cmap("turbo")
+    for column, theta_i in enumerate(incidences):
+        plane, residual = axes[0][column], axes[1][column]
+        for lam, curve in sorted(curves[theta_i].items()):
+            colour = colour_of(lam, lambdas, colormap)
+            model = sorted(curve["model"])
+            data = sorted(curve["data"])
+            if model:
+                plane.plot([a for a, _ in model], [f for _, f in model], color=colour, linewidth=1.2,
+                           label=f"{lam:g} nm")
+            if data:
+                plane.plot([a for a, _ in data], [f for _, f in data], "o", color=colour, markersize=3.0)
+                points = [(a, f, model_at(model, a)) for a, f in data]
+                points = [(a, 100.0 * (f - m) / m) for a, f, m in points if m]
+                residual.plot([a for a, _ in points], [r for _, r in points], "o", color=colour, markersize=2.5)
+        plane.set_title(f"theta_i = {theta_i:g} deg", fontsize=10)
+        plane.set_yscale("log")
+        plane.grid(True, alpha=0.3)
+        residual.axhline(0.0, color="0.5", linewidth=0.8)
+        residual.set_xlim(-90, 90)
+        residual.set_xticks([-80, -40, 0, 40, 80])
+        residual.grid(True, alpha=0.3)
+        residual.set_xlabel("theta_o (deg; < 0: light's side)", fontsize=9)
+    axes[0][0].set_ylabel("BRDF (1/sr)")
+    axes[1][0].set_ylabel("(data - fit) / fit (%)")
+    axes[0][0].legend(fontsize=8, title="dots: data, lines: fit", title_fontsize=8)
     if title:
         fig.suptitle(title)
     fig.tight_layout()

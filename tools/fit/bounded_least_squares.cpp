@@ -22,6 +22,7 @@ struct Objective {
   std::vector<double> residuals;
   LocalMinimum best;
   int residual_evaluations = 0;
+  int objective_evaluations = 0;
 
   double sum_of_squares(const std::vector<double>& x) {
     problem->residuals(x, residuals);
@@ -48,6 +49,8 @@ struct Objective {
         gradient[k] = g;
       }
     }
+    ++objective_evaluations;
+    if (problem->on_evaluation) problem->on_evaluation(objective_evaluations, f);
     return f;
   }
 
@@ -56,51 +59,46 @@ struct Objective {
   }
 };
 
-nlopt_algorithm algorithm(LocalMethod method) {
-  switch (method) {
-    case LocalMethod::kBobyqa:
-      return NLOPT_LN_BOBYQA;
-    case LocalMethod::kSubplex:
-      return NLOPT_LN_SBPLX;
-    default:
-      return NLOPT_LD_SLSQP;
-  }
-}
-
 }  // namespace
 
-const char* local_method_name(LocalMethod method) {
-  switch (method) {
-    case LocalMethod::kBobyqa:
-      return "BOBYQA";
-    case LocalMethod::kSubplex:
-      return "Subplex";
-    default:
-      return "SLSQP";
-  }
-}
+namespace {
 
-LocalMinimum minimise_sum_of_squares(const BoundedLeastSquares& problem, const std::vector<double>& start,
-                                     LocalMethod method) {
-  const unsigned n = static_cast<unsigned>(start.size());
-  Objective objective{&problem, {}, {}, 0};
-  const std::unique_ptr<nlopt_opt_s, void (*)(nlopt_opt)> opt(nlopt_create(algorithm(method), n), nlopt_destroy);
+// One SLSQP run from x (clamped into the bounds), counting into `objective`; returns NLopt's status.
+nlopt_result slsqp_run(const BoundedLeastSquares& problem, std::vector<double> x, Objective& objective) {
+  const unsigned n = static_cast<unsigned>(x.size());
+  const std::unique_ptr<nlopt_opt_s, void (*)(nlopt_opt)> opt(nlopt_create(NLOPT_LD_SLSQP, n), nlopt_destroy);
   nlopt_set_lower_bounds(opt.get(), problem.lower.data());
   nlopt_set_upper_bounds(opt.get(), problem.upper.data());
   nlopt_set_min_objective(opt.get(), &Objective::callback, &objective);
   nlopt_set_ftol_rel(opt.get(), 1e-12);
   nlopt_set_xtol_rel(opt.get(), 1e-9);
   nlopt_set_maxeval(opt.get(), 2000);
-  std::vector<double> x = start;
   for (unsigned k = 0; k < n; ++k) x[k] = std::clamp(x[k], problem.lower[k], problem.upper[k]);
   double f = 0;
   const nlopt_result status = nlopt_optimize(opt.get(), x.data(), &f);
-  LocalMinimum result = objective.best;
-  if (result.x.empty()) {  // NLopt stopped before evaluating (invalid arguments)
-    result.x = x;
-    result.sum_of_squares = objective.sum_of_squares(x);
+  if (objective.best.x.empty()) {  // NLopt stopped before evaluating (invalid arguments)
+    objective.best.x = x;
+    objective.best.sum_of_squares = objective.sum_of_squares(x);
   }
-  result.objective_evaluations = nlopt_get_numevals(opt.get());
+  return status;
+}
+
+}  // namespace
+
+LocalMinimum minimise_sum_of_squares(const BoundedLeastSquares& problem, const std::vector<double>& start) {
+  Objective objective{&problem, {}, {}, 0, 0};
+  nlopt_result status = slsqp_run(problem, start, objective);
+  // SLSQP's quasi-Newton Hessian, built from finite-difference gradients, can stall in a long narrow
+  // valley (the correlated parameters) and report convergence short of the minimum: restarted from its
+  // best point with a fresh Hessian until the sum of squares stops falling.
+  constexpr int kRestarts = 5;
+  for (int restart = 0; restart < kRestarts; ++restart) {
+    const double before = objective.best.sum_of_squares;
+    status = slsqp_run(problem, objective.best.x, objective);
+    if (!(objective.best.sum_of_squares < before * (1.0 - 1e-9))) break;
+  }
+  LocalMinimum result = objective.best;
+  result.objective_evaluations = objective.objective_evaluations;
   result.residual_evaluations = objective.residual_evaluations;
   result.stop = nlopt_result_to_string(status);
   return result;

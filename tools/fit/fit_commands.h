@@ -16,19 +16,22 @@ struct PigmentArgs {
 struct PowderFitArgs {
   std::string data;  // measurements CSV
   PigmentArgs pigment;
-  std::vector<std::string> fix;  // NAME=VALUE
-  double max_theta_i = 90.0;     // degrees; measurements with a larger theta_i are left out
-  std::string residuals = "absolute";
-  std::string method = "slsqp";  // the local optimiser: slsqp, bobyqa or subplex
+  std::vector<std::string> fix;     // NAME=VALUE
+  std::vector<std::string> start;   // NAME=VALUE
+  std::vector<std::string> bounds;  // NAME=LOWER:UPPER
+  double max_theta_i = 90.0;        // degrees; measurements with a larger theta_i are left out
+  std::string residuals = "relative";
   std::string material, plot, csv;  // outputs (empty: not written)
+  bool quiet = false;               // no progress lines
 };
 
 struct PowderSynthesizeArgs {
   std::string output;
   PigmentArgs pigment;
   std::vector<std::string> params;  // NAME=VALUE, the others at the powder node's defaults
-  std::vector<double> lambdas_nm{700.0};
-  double noise = 0.02;
+  std::vector<double> lambdas_nm{450.0, 550.0, 650.0};
+  std::string geometry;  // measurements whose geometries and wavelengths replace the built-in grid
+  double noise = 0.01;
   uint64_t seed = 1;
 };
 

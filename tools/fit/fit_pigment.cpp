@@ -16,8 +16,8 @@ namespace ochre {
 FitPigment FitPigment::named(const std::string& name) {
   const std::vector<std::string>& known = PigmentTable::names();
   if (std::find(known.begin(), known.end(), name) == known.end())
-    throw InputError(fmt::format("--pigment: unknown pigment '{}' (built-in pigments: {})", name,
-                                 fmt::join(known, ", ")));
+    throw InputError(
+        fmt::format("--pigment: unknown pigment '{}' (built-in pigments: {})", name, fmt::join(known, ", ")));
   FitPigment p(named_spectrum("pigment-" + name + "-n"), named_spectrum("pigment-" + name + "-k"));
   p.name_ = name;
   return p;
@@ -25,7 +25,8 @@ FitPigment FitPigment::named(const std::string& name) {
 
 FitPigment FitPigment::from_file(const std::filesystem::path& file) {
   try {
-    FitPigment p(load_spectrum_csv(file, std::string_view("n")), load_spectrum_csv(file, std::string_view("k")));
+    FitPigment p(load_spectrum_csv(file, std::string_view("n")),
+                 load_spectrum_csv(file, std::string_view("k")));
     p.file_ = file;
     return p;
   } catch (const std::exception& e) {
@@ -37,8 +38,8 @@ void FitPigment::check_index(double lambda_nm) const {
   const float lambda = static_cast<float>(lambda_nm);
   const double n = n_->eval(lambda), k = k_->eval(lambda);
   if (!(n > 0.0 && k >= 0.0))
-    throw InputError(fmt::format("{}: the index at {} nm is n = {}, k = {}; need n > 0 and k >= 0", description(),
-                                 lambda_nm, n, k));
+    throw InputError(fmt::format("{}: the index at {} nm is n = {}, k = {}; need n > 0 and k >= 0",
+                                 description(), lambda_nm, n, k));
 }
 
 double FitPigment::albedo(double lambda_nm, double radius_um) const {

@@ -15,11 +15,16 @@ namespace ochre {
 // The parameters with their standard errors, the MSE and RMSE, the counts and the time.
 std::string fit_summary(const PowderFitResult& result, const PowderFitOptions& options);
 
-// A one-node powder material ({"type": "powder", ...} with the six parameters to 6 significant digits and
-// the pigment), loadable by ochre and ochre-brdf. A pigment file is named relative to the JSON's folder,
-// as the scene format resolves it.
+// The name of the fitted material in the JSON.
+inline constexpr const char* kFittedMaterialName = "powder_fit";
+
+// A scene holding the fitted material as materials.powder_fit ({"type": "powder", ...} with the six
+// parameters to 9 significant digits and the pigment) and a preview of it (a sphere lit from beside the
+// camera, outputs JSON_STEM_preview.exr/png): `ochre render` renders it as it is, ochre-brdf --material
+// reads the material from it. A pigment file is named relative to the JSON's folder, as the scene format
+// resolves it.
 std::string powder_material_json(const PowderValues& values, const FitPigment& pigment,
-                                 const std::filesystem::path& json_file);
+                                 const std::filesystem::path& json_file, const std::string& data_file);
 
 // theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf,fit,residual,used: residual = brdf - fit (1/sr), used = 0 for
 // the measurements --max-theta-i left out.

@@ -18,6 +18,12 @@ void check_polar(double theta, const char* column, const std::string& where) {
     throw InputError(fmt::format("{}: column {}: {} is outside [0, 90) degrees", where, column, theta));
 }
 
+// Any azimuth names a direction; beyond one turn either way it is more likely radians or a wrong column.
+void check_azimuth(double phi, const char* column, const std::string& where) {
+  if (!(phi >= -360.0 && phi <= 360.0))
+    throw InputError(fmt::format("{}: column {}: {} is outside [-360, 360] degrees", where, column, phi));
+}
+
 }  // namespace
 
 Direction direction_from_angles(double theta_deg, double phi_deg) {
@@ -40,9 +46,14 @@ std::vector<Measurement> read_measurements(const std::filesystem::path& file) {
     m.brdf = v[5];
     check_polar(m.theta_i, "theta_i", where);
     check_polar(m.theta_o, "theta_o", where);
+    check_azimuth(m.phi_i, "phi_i", where);
+    check_azimuth(m.phi_o, "phi_o", where);
+    if (!(m.brdf >= 0.0))
+      throw InputError(fmt::format("{}: column brdf: {} is negative (a BRDF is >= 0)", where, m.brdf));
     if (!(m.lambda_nm >= kLambdaMin && m.lambda_nm <= kLambdaMax))
-      throw InputError(fmt::format("{}: column lambda_nm: {} nm is outside ochre's spectral range [{}, {}] nm",
-                                   where, m.lambda_nm, kLambdaMin, kLambdaMax));
+      throw InputError(
+          fmt::format("{}: column lambda_nm: {} nm is outside ochre's spectral range [{}, {}] nm", where,
+                      m.lambda_nm, kLambdaMin, kLambdaMax));
     m.wi = direction_from_angles(m.theta_i, m.phi_i);
     m.wo = direction_from_angles(m.theta_o, m.phi_o);
     m.line = record.line;

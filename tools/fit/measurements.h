@@ -30,7 +30,8 @@ struct Measurement {
 };
 
 // Throws InputError "FILE: line N: column C: ..." for a malformed file (csv_columns.h), a polar angle
-// outside [0, 90) degrees, a wavelength outside ochre's spectral range [360, 830] nm, or no measurement.
+// outside [0, 90) degrees, an azimuth outside [-360, 360] degrees, a wavelength outside ochre's spectral
+// range [360, 830] nm, a negative brdf, or no measurement.
 std::vector<Measurement> read_measurements(const std::filesystem::path& file);
 
 // The six columns of a measurement, formatted to round-trip (for the synthetic data and the fit CSV).

@@ -6,32 +6,22 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <ostream>
 
 #include "renderer/input_error.h"
+#include "tools/fit/powder_fit_grid.h"
 #include "tools/fit/powder_fit_model.h"
 
 namespace ochre {
 
 namespace {
 
-// The coarse grid of the nonlinear parameters, over their bounds (log-spaced where fitted as logs).
-const std::array<std::vector<double>, kPowderFitParams>& coarse_grid() {
-  static const std::array<std::vector<double>, kPowderFitParams> grid = {{
-      {},  // volume_amplitude: solved exactly at each grid point
-      {-0.8, -0.4, 0.0, 0.4, 0.8},
-      {0.02, 0.06, 0.2, 0.6, 2.0, 6.0, 20.0},
-      {0.007, 0.015, 0.03, 0.06, 0.12, 0.25, 0.5, 1.0, 2.0, 4.0},
-      {},  // surface_amplitude: solved exactly at each grid point
-      {0.1, 0.3, 1.0, 3.0, 10.0, 30.0},
-  }};
-  return grid;
-}
-
 // The data, the weights and which parameters are fitted: the residuals as a function of the fitted
 // coordinates.
 struct FitProblem {
   const std::vector<Measurement>& data;
   const FitPigment& pigment;
+  const PowderBounds& bounds;
   std::vector<double> weights;  // residual = weight (fit - brdf)
   PowderValues held{};          // the values of the parameters that are not fitted
   std::vector<int> free;        // fitted parameters, in order
@@ -58,104 +48,67 @@ struct FitProblem {
       for (size_t i = 0; i < fit.size(); ++i) r[i] = weights[i] * (fit[i] - data[i].brdf);
     };
     for (int p : free) {
-      ls.lower.push_back(to_coordinate(p, powder_fit_specs()[p].lower));
-      ls.upper.push_back(to_coordinate(p, powder_fit_specs()[p].upper));
+      ls.lower.push_back(to_coordinate(p, bounds[p].lower));
+      ls.upper.push_back(to_coordinate(p, bounds[p].upper));
     }
     return ls;
   }
+
+  GridProblem grid() const {
+    GridProblem g{data, weights, pigment, bounds, held, {}};
+    for (int p : free) g.free[p] = true;
+    return g;
+  }
+
+  // "MSE 1.2e-07" (1/sr)^2, or "relative MSE 1.1e-04" for relative residuals: the mean of the squares.
+  std::string mean_square(double sum_of_squares, bool relative) const {
+    return fmt::format("{}MSE {:.6g}", relative ? "relative " : "", sum_of_squares / double(data.size()));
+  }
 };
 
-// The amplitudes A_v, A_s' (within their bounds, or held) minimising sum w^2 (A_v volume + A_s' surface -
-// brdf)^2 for fixed nonlinear parameters. The sum is a convex quadratic in them, so its minimum over the
-// box is the unconstrained one when that lies inside, else the best one-dimensional minimum along an edge.
-struct Amplitudes {
-  double volume = 0, surface = 0, sum_of_squares = std::numeric_limits<double>::infinity();
-};
-
-Amplitudes best_amplitudes(const PowderParts& parts, const FitProblem& problem) {
-  double vv = 0, ss = 0, vs = 0, vy = 0, sy = 0, yy = 0;
-  for (size_t i = 0; i < parts.volume.size(); ++i) {
-    const double w2 = problem.weights[i] * problem.weights[i];
-    const double v = parts.volume[i], s = parts.surface[i], y = problem.data[i].brdf;
-    vv += w2 * v * v, ss += w2 * s * s, vs += w2 * v * s;
-    vy += w2 * v * y, sy += w2 * s * y, yy += w2 * y * y;
-  }
-  const FitParamSpec& va = powder_fit_specs()[kVolumeAmplitude];
-  const FitParamSpec& sa = powder_fit_specs()[kSurfaceAmplitude];
-  const bool v_free = problem.is_free(kVolumeAmplitude), s_free = problem.is_free(kSurfaceAmplitude);
-  const auto best_v = [&](double s) {
-    if (!v_free) return problem.held[kVolumeAmplitude];
-    return vv > 0 ? std::clamp((vy - s * vs) / vv, va.lower, va.upper) : va.lower;
-  };
-  const auto best_s = [&](double v) {
-    if (!s_free) return problem.held[kSurfaceAmplitude];
-    return ss > 0 ? std::clamp((sy - v * vs) / ss, sa.lower, sa.upper) : sa.lower;
-  };
-  Amplitudes best;
-  const auto consider = [&](double v, double s) {
-    const double sse = v * v * vv + 2 * v * s * vs + s * s * ss - 2 * v * vy - 2 * s * sy + yy;
-    if (sse < best.sum_of_squares) best = {v, s, sse};
-  };
-  for (double v : v_free ? std::vector<double>{va.lower, va.upper} : std::vector<double>{best_v(0)})
-    consider(v, best_s(v));
-  for (double s : s_free ? std::vector<double>{sa.lower, sa.upper} : std::vector<double>{best_s(0)})
-    consider(best_v(s), s);
-  const double det = vv * ss - vs * vs;
-  if (v_free && s_free && det > 1e-12 * vv * ss) {
-    const double v = (vy * ss - sy * vs) / det, s = (sy * vv - vy * vs) / det;
-    if (v >= va.lower && v <= va.upper && s >= sa.lower && s <= sa.upper) consider(v, s);
-  }
-  return best;
+// The user's start point: the given values, the other free parameters at the node's defaults clamped into
+// their bounds.
+PowderValues start_point(const FitProblem& problem, const PowderFitOptions& options) {
+  PowderValues v = problem.held;
+  for (int p : problem.free)
+    v[p] = options.start[p]
+               ? *options.start[p]
+               : std::clamp(powder_fit_specs()[p].fallback, problem.bounds[p].lower, problem.bounds[p].upper);
+  return v;
 }
 
-struct Candidate {
-  double sum_of_squares;
-  PowderValues values;
-};
-
-// Every point of the coarse grid of the free nonlinear parameters (held ones stay), with its best
-// amplitudes; the `count` best.
-std::vector<Candidate> best_grid_points(const FitProblem& problem, int count, int& grid_points) {
-  static constexpr std::array<int, 4> kNonlinear = {kAnisotropy, kKappa, kRadius, kCorrelationLength};
-  std::array<std::vector<double>, 4> axes;
-  for (size_t a = 0; a < kNonlinear.size(); ++a)
-    axes[a] = problem.is_free(kNonlinear[a]) ? coarse_grid()[kNonlinear[a]]
-                                             : std::vector<double>{problem.held[kNonlinear[a]]};
-  std::vector<Candidate> candidates;
-  std::array<size_t, 4> at{};
-  for (;;) {
-    PowderValues v = problem.held;
-    for (size_t a = 0; a < kNonlinear.size(); ++a) v[kNonlinear[a]] = axes[a][at[a]];
-    const Amplitudes amplitudes = best_amplitudes(powder_parts(v, problem.data, problem.pigment), problem);
-    v[kVolumeAmplitude] = amplitudes.volume;
-    v[kSurfaceAmplitude] = amplitudes.surface;
-    candidates.push_back({amplitudes.sum_of_squares, v});
-    size_t a = 0;
-    while (a < at.size() && ++at[a] == axes[a].size()) at[a++] = 0;
-    if (a == at.size()) break;
-  }
-  grid_points = static_cast<int>(candidates.size());
-  const size_t keep = std::min(candidates.size(), static_cast<size_t>(std::max(count, 1)));
-  std::partial_sort(candidates.begin(), candidates.begin() + keep, candidates.end(),
-                    [](const Candidate& a, const Candidate& b) { return a.sum_of_squares < b.sum_of_squares; });
-  candidates.resize(keep);
-  return candidates;
-}
-
-// The local runs so far: the best point and the counts.
+// The local runs so far: the best point, the counts and the progress lines.
 struct LocalRuns {
   const FitProblem& problem;
-  const BoundedLeastSquares least_squares;
-  LocalMethod method;
+  BoundedLeastSquares least_squares;
   PowderFitResult& result;
+  std::ostream* progress;
+  bool relative;
   std::vector<LocalMinimum> minima;
 
-  const LocalMinimum& run(const PowderValues& start) {
-    minima.push_back(minimise_sum_of_squares(least_squares, problem.coordinates_of(start), method));
+  // Progress: a line every kProgressEvery evaluations of a run and one at its end.
+  static constexpr int kProgressEvery = 10;
+
+  const LocalMinimum& run(const PowderValues& start, const std::string& from) {
+    const int number = result.local_runs + 1;
+    if (progress)
+      least_squares.on_evaluation = [this, number](int evaluation, double sum_of_squares) {
+        if (evaluation % kProgressEvery == 0)
+          *progress << fmt::format("ochre-fit: run {}, evaluation {}: {}\n", number, evaluation,
+                                   problem.mean_square(sum_of_squares, relative))
+                    << std::flush;
+      };
+    minima.push_back(minimise_sum_of_squares(least_squares, problem.coordinates_of(start)));
+    const LocalMinimum& m = minima.back();
     ++result.local_runs;
-    result.objective_evaluations += minima.back().objective_evaluations;
-    result.residual_evaluations += minima.back().residual_evaluations;
-    return minima.back();
+    result.objective_evaluations += m.objective_evaluations;
+    result.residual_evaluations += m.residual_evaluations;
+    if (progress)
+      *progress << fmt::format("ochre-fit: run {} (from {}): {} after {} evaluations ({})\n", number, from,
+                               problem.mean_square(m.sum_of_squares, relative), m.objective_evaluations,
+                               m.stop)
+                << std::flush;
+    return m;
   }
 
   const LocalMinimum& best() const {
@@ -168,46 +121,51 @@ struct LocalRuns {
 // The model sees the radius only through the grains' albedo rho(lambda, b), which the Mie resonances of
 // weakly absorbing grains make non-monotonic in b (hematite at 700 nm: rho(0.05 um) = rho(0.27 um) =
 // rho(0.50 um) = 0.75). At one wavelength several radii then fit equally well. This finds them: a scan of
-// the radius with the other parameters at the best fit, and a local run from each minimum of the scan that
-// could come close to the best. Returns the minima found, the best fit's included.
+// the radius over its bounds with g, kappa and the correlation length at the best fit and the amplitudes
+// solved exactly at each radius, and a local run from each minimum of the scan that could come close to
+// the best.
 void add_radius_alternatives(LocalRuns& runs, double variance) {
   const PowderValues best = runs.problem.values_at(runs.best().x);
   const double best_sse = runs.best().sum_of_squares;
-  const FitParamSpec& spec = powder_fit_specs()[kRadius];
+  const ParamBounds& bounds = runs.problem.bounds[kRadius];
   constexpr int kScan = 1200;
-  const double lo = std::log(spec.lower), step = (std::log(spec.upper) - lo) / (kScan - 1);
-  std::vector<double> sse(kScan);
-  std::vector<double> residuals;
+  const double lo = std::log(bounds.lower), step = (std::log(bounds.upper) - lo) / (kScan - 1);
+  std::vector<GridStart> scan(kScan);
+  const GridProblem grid = runs.problem.grid();
   for (int i = 0; i < kScan; ++i) {
     PowderValues v = best;
     v[kRadius] = std::exp(lo + i * step);
-    runs.least_squares.residuals(runs.problem.coordinates_of(v), residuals);
+    scan[i] = with_best_amplitudes(grid, v);
     ++runs.result.residual_evaluations;
-    sse[i] = 0;
-    for (double r : residuals) sse[i] += r * r;
   }
-  std::vector<std::pair<double, double>> minima;  // (sse, radius)
+  std::vector<GridStart> minima;
   for (int i = 0; i < kScan; ++i) {
-    const bool minimum = (i == 0 || sse[i] <= sse[i - 1]) && (i == kScan - 1 || sse[i] <= sse[i + 1]);
-    const double radius = std::exp(lo + i * step);
+    const double sse = scan[i].sum_of_squares;
+    const bool minimum = (i == 0 || sse <= scan[i - 1].sum_of_squares) &&
+                         (i == kScan - 1 || sse <= scan[i + 1].sum_of_squares);
+    const double radius = scan[i].values[kRadius];
     // Re-fitting the other parameters lowers a scan minimum by a few variances at most when it is a true
-    // alternative; the best fit's own basin is already known.
-    if (minimum && sse[i] <= best_sse + 25.0 * variance && std::abs(std::log(radius / best[kRadius])) > 0.02)
-      minima.push_back({sse[i], radius});
+    // alternative; the best fit's own minimum (within a scan step) is already known. Alternatives can lie
+    // as close as 1 %: on either side of a Mie resonance of the albedo at a weakly absorbing wavelength.
+    if (minimum && sse <= best_sse + 25.0 * variance &&
+        std::abs(std::log(radius / best[kRadius])) > 1.5 * step)
+      minima.push_back(scan[i]);
   }
-  std::sort(minima.begin(), minima.end());
+  std::sort(minima.begin(), minima.end(),
+            [](const GridStart& a, const GridStart& b) { return a.sum_of_squares < b.sum_of_squares; });
   if (minima.size() > 8) minima.resize(8);
-  for (const auto& [scan_sse, radius] : minima) {
-    PowderValues start = best;
-    start[kRadius] = radius;
-    runs.run(start);
-  }
+  if (runs.progress)
+    *runs.progress << fmt::format("ochre-fit: radius scan: {} other minima could fit as well\n",
+                                  minima.size())
+                   << std::flush;
+  for (const GridStart& start : minima)
+    runs.run(start.values, fmt::format("radius {:.4g} um", start.values[kRadius]));
 }
 
 // True when the fitted coordinate x of `param` lies on one of its bounds.
-bool on_bound(int param, double x) {
-  const FitParamSpec& s = powder_fit_specs()[param];
-  const double lower = to_coordinate(param, s.lower), upper = to_coordinate(param, s.upper);
+bool on_bound(const FitProblem& problem, int param, double x) {
+  const double lower = to_coordinate(param, problem.bounds[param].lower);
+  const double upper = to_coordinate(param, problem.bounds[param].upper);
   const double margin = 1e-6 * (upper - lower);
   return x <= lower + margin || x >= upper - margin;
 }
@@ -237,7 +195,8 @@ std::vector<double> choose_radius(LocalRuns& runs, PowderFitResult& result) {
   return equivalent.front()->x;
 }
 
-void summarise_residuals(const std::vector<Measurement>& data, const FitPigment& pigment, PowderFitResult& r) {
+void summarise_residuals(const std::vector<Measurement>& data, const FitPigment& pigment,
+                         PowderFitResult& r) {
   const std::vector<double> fit = powder_brdf_values(r.values, data, pigment);
   double sum = 0, relative = 0;
   int positive = 0;
@@ -252,12 +211,13 @@ void summarise_residuals(const std::vector<Measurement>& data, const FitPigment&
   r.relative_rmse = positive ? std::sqrt(relative / positive) : 0.0;
 }
 
-// Standard errors of the parameters fitted inside their bounds (those on a bound are held there).
+// Standard errors and correlations of the parameters fitted inside their bounds (those on a bound are held
+// there: their error is not that of an interior minimum).
 void estimate_errors(FitProblem problem, const std::vector<double>& x, PowderFitResult& r) {
   problem.held = problem.values_at(x);
   std::vector<int> interior;
   for (size_t k = 0; k < problem.free.size(); ++k)
-    if (on_bound(problem.free[k], x[k]))
+    if (on_bound(problem, problem.free[k], x[k]))
       r.status[problem.free[k]] = ParamStatus::kAtBound;
     else
       interior.push_back(problem.free[k]);
@@ -269,9 +229,14 @@ void estimate_errors(FitProblem problem, const std::vector<double>& x, PowderFit
       least_squares_covariance(residual_jacobian(ls, xi, &r.residual_evaluations), r.sum_of_squares);
   r.determined = covariance.has_value();
   if (!covariance) return;
-  for (size_t k = 0; k < interior.size(); ++k)
+  const Matrix& c = *covariance;
+  r.correlated_params = interior;
+  r.correlation.assign(interior.size(), std::vector<double>(interior.size()));
+  for (size_t k = 0; k < interior.size(); ++k) {
     r.standard_error[interior[k]] =
-        std::sqrt((*covariance)[k][k]) * value_per_coordinate(interior[k], problem.held[interior[k]]);
+        std::sqrt(c[k][k]) * value_per_coordinate(interior[k], problem.held[interior[k]]);
+    for (size_t l = 0; l < interior.size(); ++l) r.correlation[k][l] = c[k][l] / std::sqrt(c[k][k] * c[l][l]);
+  }
 }
 
 }  // namespace
@@ -279,7 +244,7 @@ void estimate_errors(FitProblem problem, const std::vector<double>& x, PowderFit
 PowderFitResult fit_powder(const std::vector<Measurement>& data, const FitPigment& pigment,
                            const PowderFitOptions& options) {
   const auto start_time = std::chrono::steady_clock::now();
-  FitProblem problem{data, pigment, {}, powder_default_values(), {}};
+  FitProblem problem{data, pigment, options.bounds, {}, powder_default_values(), {}};
   PowderFitResult result;
   for (int p = 0; p < kPowderFitParams; ++p) {
     result.standard_error[p] = std::numeric_limits<double>::quiet_NaN();
@@ -293,19 +258,35 @@ PowderFitResult fit_powder(const std::vector<Measurement>& data, const FitPigmen
   }
   result.fitted = static_cast<int>(problem.free.size());
   if (data.size() <= problem.free.size())
-    throw InputError(fmt::format("{} measurement(s) for {} free parameter(s): need more measurements than "
-                                 "parameters (or --fix some)",
-                                 data.size(), problem.free.size()));
-  for (const Measurement& m : data)
-    problem.weights.push_back(options.residuals == ResidualKind::kRelative ? 1.0 / m.brdf : 1.0);
+    throw InputError(
+        fmt::format("{} measurement(s) for {} free parameter(s): need more measurements than "
+                    "free parameters (or --fix some)",
+                    data.size(), problem.free.size()));
+  const bool relative = options.residuals == ResidualKind::kRelative;
+  for (const Measurement& m : data) problem.weights.push_back(relative ? 1.0 / m.brdf : 1.0);
 
   result.values = problem.held;
   std::vector<double> best_x;
   if (!problem.free.empty()) {
-    LocalRuns runs{problem, problem.least_squares(), options.method, result, {}};
-    for (const Candidate& start : best_grid_points(problem, options.starts, result.grid_points))
-      runs.run(start.values);
-    result.grid_starts = result.local_runs;
+    LocalRuns runs{problem, problem.least_squares(), result, options.progress, relative, {}};
+    if (std::any_of(options.start.begin(), options.start.end(),
+                    [](const auto& v) { return v.has_value(); })) {
+      runs.run(start_point(problem, options), "--start");
+    } else {
+      const std::vector<GridStart> starts =
+          powder_grid_starts(problem.grid(), options.grid_starts, result.grid_points);
+      if (options.progress)
+        *options.progress << fmt::format(
+                                 "ochre-fit: coarse grid: {} points, {} starts (the best local minima of the "
+                                 "grid, best {})\n",
+                                 result.grid_points, starts.size(),
+                                 problem.mean_square(starts.front().sum_of_squares, relative))
+                          << std::flush;
+      for (size_t s = 0; s < starts.size(); ++s)
+        runs.run(starts[s].values,
+                 fmt::format("grid start {} (radius {:.3g} um)", s + 1, starts[s].values[kRadius]));
+    }
+    result.start_runs = result.local_runs;
     best_x = choose_radius(runs, result);
     result.values = problem.values_at(best_x);
   }

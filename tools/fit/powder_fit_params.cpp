@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "renderer/input_error.h"
 #include "tools/csv_columns.h"
@@ -44,34 +45,77 @@ double value_per_coordinate(int param, double value) {
   return s.logarithmic ? value : s.scale;
 }
 
+PowderBounds powder_default_bounds() {
+  PowderBounds bounds;
+  for (int p = 0; p < kPowderFitParams; ++p)
+    bounds[p] = {powder_fit_specs()[p].lower, powder_fit_specs()[p].upper};
+  return bounds;
+}
+
+namespace {
+
+// One "NAME=TEXT" item of `option`: the parameter and the text after '='.
+std::pair<int, std::string> split_param_item(const std::string& item, std::string_view option) {
+  const size_t equals = item.find('=');
+  if (equals == std::string::npos)
+    throw InputError(fmt::format("{} '{}': expected NAME=VALUE", option, item));
+  const std::string name = item.substr(0, equals);
+  std::string names;
+  for (int p = 0; p < kPowderFitParams; ++p) {
+    if (name == powder_fit_specs()[p].name) return {p, item.substr(equals + 1)};
+    names += fmt::format("{}{}", p ? ", " : "", powder_fit_specs()[p].name);
+  }
+  throw InputError(
+      fmt::format("{} '{}': unknown parameter '{}' (parameters: {})", option, item, name, names));
+}
+
+// The number `text` of a parameter, finite and in the model's domain.
+double param_number(int param, const std::string& text, const std::string& item, std::string_view option) {
+  const std::optional<double> number = finite_number(text);
+  if (!number) throw InputError(fmt::format("{} '{}': '{}' is not a finite number", option, item, text));
+  const FitParamSpec& s = powder_fit_specs()[param];
+  if (!(*number >= s.domain_lower && *number <= s.domain_upper))
+    throw InputError(
+        fmt::format("{} '{}': {} must be in [{}, {}]", option, item, s.name, s.domain_lower, s.domain_upper));
+  return *number;
+}
+
+}  // namespace
+
 std::array<std::optional<double>, kPowderFitParams> parse_param_values(const std::vector<std::string>& items,
                                                                        std::string_view option) {
   std::array<std::optional<double>, kPowderFitParams> values;
   for (const std::string& item : items) {
-    const size_t equals = item.find('=');
-    if (equals == std::string::npos)
-      throw InputError(fmt::format("{} '{}': expected NAME=VALUE", option, item));
-    const std::string name = item.substr(0, equals), text = item.substr(equals + 1);
-    int param = -1;
-    std::string names;
-    for (int p = 0; p < kPowderFitParams; ++p) {
-      if (name == powder_fit_specs()[p].name) param = p;
-      names += fmt::format("{}{}", p ? ", " : "", powder_fit_specs()[p].name);
-    }
-    if (param < 0)
-      throw InputError(fmt::format("{} '{}': unknown parameter '{}' (parameters: {})", option, item, name, names));
+    const auto [param, text] = split_param_item(item, option);
     if (values[param])
-      throw InputError(fmt::format("{} '{}': parameter '{}' is given twice", option, item, name));
-    const std::optional<double> number = finite_number(text);
-    if (!number) throw InputError(fmt::format("{} '{}': '{}' is not a finite number", option, item, text));
-    const double value = *number;
-    const FitParamSpec& s = powder_fit_specs()[param];
-    if (!(value >= s.domain_lower && value <= s.domain_upper))
-      throw InputError(fmt::format("{} '{}': {} must be in [{}, {}]", option, item, name, s.domain_lower,
-                                   s.domain_upper));
-    values[param] = value;
+      throw InputError(fmt::format("{} '{}': parameter '{}' is given twice", option, item,
+                                   powder_fit_specs()[param].name));
+    values[param] = param_number(param, text, item, option);
   }
   return values;
+}
+
+std::array<std::optional<ParamBounds>, kPowderFitParams> parse_param_bounds(
+    const std::vector<std::string>& items, std::string_view option) {
+  std::array<std::optional<ParamBounds>, kPowderFitParams> bounds;
+  for (const std::string& item : items) {
+    const auto [param, text] = split_param_item(item, option);
+    const char* name = powder_fit_specs()[param].name;
+    if (bounds[param])
+      throw InputError(fmt::format("{} '{}': parameter '{}' is given twice", option, item, name));
+    const size_t colon = text.find(':');
+    if (colon == std::string::npos)
+      throw InputError(fmt::format("{} '{}': expected NAME=LOWER:UPPER", option, item));
+    const double lower = param_number(param, text.substr(0, colon), item, option);
+    const double upper = param_number(param, text.substr(colon + 1), item, option);
+    if (!(lower < upper))
+      throw InputError(
+          fmt::format("{} '{}': the lower bound {} is not below the upper bound {} (to hold {} at a "
+                      "value: --fix {}=VALUE)",
+                      option, item, lower, upper, name, name));
+    bounds[param] = ParamBounds{lower, upper};
+  }
+  return bounds;
 }
 
 }  // namespace ochre

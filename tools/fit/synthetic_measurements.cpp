@@ -1,5 +1,6 @@
 #include "tools/fit/synthetic_measurements.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -13,7 +14,7 @@ namespace ochre {
 std::vector<Measurement> goniophotometer_grid(const std::vector<double>& lambdas_nm) {
   std::vector<Measurement> grid;
   for (double lambda : lambdas_nm)
-    for (int theta_i : {0, 20, 40}) {
+    for (int theta_i : {0, 20, 40, 60}) {
       std::set<std::pair<int, int>> seen;  // (theta_o, phi_o), phi_o = 0 at the normal
       const auto add = [&](int signed_theta, int plane) {
         const int theta_o = std::abs(signed_theta);
@@ -42,7 +43,9 @@ void synthesize_brdf(std::vector<Measurement>& grid, const PowderValues& values,
   for (size_t i = 0; i < grid.size(); ++i) {
     const double u1 = 1.0 - random.uniform(), u2 = random.uniform();  // u1 in (0, 1]
     const double z = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    grid[i].brdf = brdf[i] * (1.0 + noise * z);
+    // Clamped: a draw below -1 / noise (5 sigma at noise 0.2) would make a negative BRDF, which no
+    // measurement file may hold.
+    grid[i].brdf = std::max(0.0, brdf[i] * (1.0 + noise * z));
   }
 }
 
