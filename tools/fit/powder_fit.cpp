@@ -118,39 +118,50 @@ struct LocalRuns {
   }
 };
 
-// The model sees the radius only through the grains' albedo rho(lambda, b), which the Mie resonances of
-// weakly absorbing grains make non-monotonic in b (hematite at 700 nm: rho(0.05 um) = rho(0.27 um) =
-// rho(0.50 um) = 0.75). At one wavelength several radii then fit equally well. This finds them: a scan of
-// the radius over its bounds with g, kappa and the correlation length at the best fit and the amplitudes
-// solved exactly at each radius, and a local run from each minimum of the scan that could come close to
-// the best.
-void add_radius_alternatives(LocalRuns& runs, double variance) {
-  const PowderValues best = runs.problem.values_at(runs.best().x);
-  const double best_sse = runs.best().sum_of_squares;
-  const ParamBounds& bounds = runs.problem.bounds[kRadius];
-  constexpr int kScan = 1200;
-  const double lo = std::log(bounds.lower), step = (std::log(bounds.upper) - lo) / (kScan - 1);
-  std::vector<GridStart> scan(kScan);
+// The minima of the sum of squares over `count` log-spaced radii from `lower` to `upper` (g, kappa and the
+// correlation length at `best`, the amplitudes solved exactly at each radius) that could fit as well, but
+// for the best fit's own (within 1.5 steps of its radius).
+std::vector<GridStart> radius_scan_minima(LocalRuns& runs, const PowderValues& best, double limit,
+                                          double lower, double upper, int count) {
+  const double lo = std::log(lower), step = (std::log(upper) - lo) / (count - 1);
   const GridProblem grid = runs.problem.grid();
-  for (int i = 0; i < kScan; ++i) {
+  std::vector<GridStart> scan(count);
+  for (int i = 0; i < count; ++i) {
     PowderValues v = best;
     v[kRadius] = std::exp(lo + i * step);
     scan[i] = with_best_amplitudes(grid, v);
     ++runs.result.residual_evaluations;
   }
   std::vector<GridStart> minima;
-  for (int i = 0; i < kScan; ++i) {
+  for (int i = 0; i < count; ++i) {
     const double sse = scan[i].sum_of_squares;
     const bool minimum = (i == 0 || sse <= scan[i - 1].sum_of_squares) &&
-                         (i == kScan - 1 || sse <= scan[i + 1].sum_of_squares);
-    const double radius = scan[i].values[kRadius];
-    // Re-fitting the other parameters lowers a scan minimum by a few variances at most when it is a true
-    // alternative; the best fit's own minimum (within a scan step) is already known. Alternatives can lie
-    // as close as 1 %: on either side of a Mie resonance of the albedo at a weakly absorbing wavelength.
-    if (minimum && sse <= best_sse + 25.0 * variance &&
-        std::abs(std::log(radius / best[kRadius])) > 1.5 * step)
+                         (i == count - 1 || sse <= scan[i + 1].sum_of_squares);
+    if (minimum && sse <= limit && std::abs(std::log(scan[i].values[kRadius] / best[kRadius])) > 1.5 * step)
       minima.push_back(scan[i]);
   }
+  return minima;
+}
+
+// The model sees the radius only through the grains' albedo rho(lambda, b), which the Mie resonances of
+// weakly absorbing grains make non-monotonic in b (hematite at 700 nm: rho(0.05 um) = rho(0.27 um) =
+// rho(0.50 um) = 0.75). At one wavelength several radii then fit equally well; at several, two radii on
+// either side of a resonance at one wavelength can fit almost as well, 1 % apart. This finds them: a scan
+// over the radius's bounds and a fine one within 5 % of the best, and a local run from each minimum of
+// the scans that could come close to the best (re-fitting the other parameters lowers a scan minimum by a
+// few variances at most when it is a true alternative).
+void add_radius_alternatives(LocalRuns& runs, double variance) {
+  const PowderValues best = runs.problem.values_at(runs.best().x);
+  const double limit = runs.best().sum_of_squares + 25.0 * variance;
+  const ParamBounds& bounds = runs.problem.bounds[kRadius];
+  std::vector<GridStart> minima = radius_scan_minima(runs, best, limit, bounds.lower, bounds.upper, 1200);
+  const double near_lower = std::max(bounds.lower, best[kRadius] / 1.05);
+  const double near_upper = std::min(bounds.upper, best[kRadius] * 1.05);
+  for (const GridStart& m : radius_scan_minima(runs, best, limit, near_lower, near_upper, 201))
+    if (std::none_of(minima.begin(), minima.end(), [&](const GridStart& other) {
+          return std::abs(std::log(other.values[kRadius] / m.values[kRadius])) < 0.002;
+        }))
+      minima.push_back(m);
   std::sort(minima.begin(), minima.end(),
             [](const GridStart& a, const GridStart& b) { return a.sum_of_squares < b.sum_of_squares; });
   if (minima.size() > 8) minima.resize(8);
