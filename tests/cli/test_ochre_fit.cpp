@@ -56,16 +56,8 @@ struct SplitResult {
 SplitResult run_fit_with_progress(const std::string& args, const fs::path& dir) {
   const std::string command = fmt::format("cd '{}' && OCHRE_PROGRESS=plain '{}' {} 2> stderr.txt",
                                           dir.string(), (bin_dir() / kTool).string(), args);
-  SplitResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.out.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.err = read_file(dir / "stderr.txt");
-  return result;
+  const CommandResult r = run_command_line(command);
+  return {r.exit_code, r.output, read_file(dir / "stderr.txt")};
 }
 
 struct Estimate {

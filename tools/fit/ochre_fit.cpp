@@ -3,7 +3,7 @@
 // measurements"):
 //   ochre-fit powder --data MEASUREMENTS.csv [--pigment NAME | --pigment-file NK.csv] [--fix NAME=VALUE ...]
 //                    [--start NAME=VALUE ...] [--bounds NAME=LOWER:UPPER ...] [--max-theta-i DEG]
-//                    [--residuals absolute|relative] [-o MATERIAL.json] [--plot FIT.png] [--csv FIT.csv] [-q]
+//                    [--residuals relative|absolute] [-o MATERIAL.json] [--plot FIT.png] [--csv FIT.csv] [-q]
 //   ochre-fit powder --synthesize OUT.csv [--params NAME=VALUE ...] [--noise 0.01] [--seed 1]
 //                    [--lambda 450,550,650 | --geometry MEASUREMENTS.csv]
 // Exit codes: 0 = done, 1 = the plot script failed (nothing written), 2 = bad input or usage.
@@ -57,7 +57,9 @@ int main(int argc, char** argv) {
       ->add_option("--max-theta-i", fit.max_theta_i, "Leave out measurements with a larger theta_i (degrees)")
       ->capture_default_str()
       ->needs(data);
-  powder->add_option("--residuals", fit.residuals, "absolute (fit - brdf) or relative ((fit - brdf) / brdf)")
+  powder
+      ->add_option("--residuals", fit.residuals,
+                   "relative ((fit - brdf) / brdf) or absolute (fit - brdf, the paper's)")
       ->capture_default_str()
       ->needs(data);
   powder->add_option("-o,--output", fit.material, "Write the fitted material (JSON scene with a preview)")

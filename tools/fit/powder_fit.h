@@ -1,13 +1,14 @@
 #pragma once
 // Fits the dry-powder BRDF to measurements (docs/tools.md, ochre-fit): the six parameters of
 // powder_fit_params.h, any of them held fixed, by bounded least squares on the BRDF values as the paper
-// does (Gerardin, Martinetto and Holzschuch 2023, Sec 5.4, Eq 30):
-// 1. the start: a coarse grid over the bounds of the nonlinear parameters (g, kappa, radius,
-//    correlation_length), the two amplitudes, in which the BRDF is linear, solved exactly at each grid
-//    point (bounded linear least squares), and the best few grid points kept; or the user's start point;
+// does (Gerardin, Martinetto and Holzschuch 2023, Sec 5.4; relative residuals by default, its Eq 30's
+// absolute ones as an option):
+// 1. the starts: the best local minima of a coarse grid over the bounds of the nonlinear parameters
+//    (powder_fit_grid.h), or the user's start point;
 // 2. SLSQP (bounded_least_squares.h) from each start over all free parameters;
 // 3. other radii that fit as well (the grains' albedo, through which alone the radius acts, is not
-//    monotonic in it): the smallest is kept, the others reported;
+//    monotonic in it): a scan of the radius and a local run from each of its minima; of the minima as
+//    good as the best, the smallest radius is kept, the others reported;
 // 4. standard errors and correlations from the Jacobian of the residuals at the optimum.
 
 #include <array>
