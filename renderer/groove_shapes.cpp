@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace ochre {
 
@@ -28,14 +29,22 @@ double groove_depth(double pitch, double alpha_degrees) {
 
 }  // namespace
 
+double groove_plate_tiles(const GroovePlate& plate) {
+  if (plate.tile_pitches <= 0) return 1.0;
+  return std::max(1.0, std::ceil(double(plate.length) / (double(plate.tile_pitches) * plate.pitch)));
+}
+
 Mesh make_groove_plate(const GroovePlate& plate) {
   Mesh mesh;
   mesh.name = "groove_plate";
   const double depth = groove_depth(plate.pitch, plate.alpha_degrees);
   const double width = plate.count * double(plate.pitch);
   const double y0 = -0.5 * width;
-  const float x0 = -0.5f * plate.length, x1 = 0.5f * plate.length;
-  mesh.positions.reserve(8 * size_t(plate.count) + 1);
+  const int tiles = static_cast<int>(groove_plate_tiles(plate));  // bounded by the caller's triangle estimate
+  mesh.positions.reserve(size_t(4) * plate.count * (tiles + 1) + 1);
+  // Tile boundaries along x, the same floats for both facets of every groove (shared edges stay exact).
+  std::vector<float> xs(tiles + 1);
+  for (int i = 0; i <= tiles; ++i) xs[i] = static_cast<float>(plate.length * (double(i) / tiles - 0.5));
   // Line j of the profile: ridges at even j, valleys at odd j.
   auto line = [&](int j) {
     return Vec2{static_cast<float>(y0 + 0.5 * j * plate.pitch),
@@ -48,11 +57,15 @@ Mesh make_groove_plate(const GroovePlate& plate) {
     const Vec3 n{0.0f, static_cast<float>(-dz / len), static_cast<float>(dy / len)};
     const float va = static_cast<float>((a.x - y0) / width), vb = static_cast<float>((b.x - y0) / width);
     const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
-    add_vertex(mesh, {x0, a.x, a.y}, n, {0, va});
-    add_vertex(mesh, {x1, a.x, a.y}, n, {1, va});
-    add_vertex(mesh, {x1, b.x, b.y}, n, {1, vb});
-    add_vertex(mesh, {x0, b.x, b.y}, n, {0, vb});
-    add_quad(mesh, base, base + 1, base + 2, base + 3);
+    for (int i = 0; i <= tiles; ++i) {  // vertex pairs across the facet, tile boundary i
+      const float u = static_cast<float>(double(i) / tiles);
+      add_vertex(mesh, {xs[i], a.x, a.y}, n, {u, va});
+      add_vertex(mesh, {xs[i], b.x, b.y}, n, {u, vb});
+    }
+    for (uint32_t i = 0; i < static_cast<uint32_t>(tiles); ++i) {
+      const uint32_t k = base + 2 * i;  // a at x_i, b at x_i, a at x_i+1, b at x_i+1
+      add_quad(mesh, k, k + 2, k + 3, k + 1);
+    }
   }
   mesh.reserve_vertex_padding();
   return mesh;
@@ -99,7 +112,7 @@ Mesh make_cylinder(float radius, float height, int segments) {
 }
 
 double groove_plate_triangle_count(const GroovePlate& plate) {
-  return 4.0 * plate.count;
+  return 4.0 * plate.count * groove_plate_tiles(plate);
 }
 
 double cylinder_triangle_count(int segments) {

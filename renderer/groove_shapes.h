@@ -18,7 +18,13 @@ struct GroovePlate {
   float pitch = 1;           // groove width across
   int count = 40;            // grooves
   float length = 40;         // along the grooves
+  // Facets are cut along the grooves into tiles at most this many pitches long (0: one strip as long as
+  // the plate). A spawned ray's offset grows with its triangle's size (renderer/accel.cpp), and near a
+  // groove's valley it shifts paths by that much: long strips bias R (docs/materials/vgroove.md).
+  float tile_pitches = 8;
 };
+// Tiles along the grooves of each facet.
+double groove_plate_tiles(const GroovePlate& plate);
 Mesh make_groove_plate(const GroovePlate& plate);
 
 // Open tube of the given radius from z = 0 to z = height, smooth normals, u = angle / 2pi (counter-
@@ -36,7 +42,7 @@ Mesh make_grooved_cylinder(const GroovedCylinder& cylinder);
 
 // Triangles of each shape (doubles: no count overflows), for the memory estimate checked before a scene
 // asks for one (renderer/memory_budget.h).
-double groove_plate_triangle_count(const GroovePlate& plate);      // 4 x count
+double groove_plate_triangle_count(const GroovePlate& plate);      // 4 x count x tiles
 double cylinder_triangle_count(int segments);                      // 2 x segments
 double grooved_cylinder_triangle_count(const GroovedCylinder& c);  // 4 x grooves x segments
 // The grooves of a grooved cylinder: floor(height / pitch), at least 1.

@@ -231,17 +231,21 @@ Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
   };
   auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
   if (type == "groove_plate") {
-    f.check_known({"type", "alpha", "pitch", "count", "length", "orientation", "material", "transform",
-                   "name", "polarizer"});
+    f.check_known({"type", "alpha", "pitch", "count", "length", "tile", "orientation", "material",
+                   "transform", "name", "polarizer"});
     GroovePlate plate;
     plate.alpha_degrees = alpha();
     plate.pitch = positive("pitch", 1.0);
     plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
     plate.length = positive("length", 40.0);
+    plate.tile_pitches = static_cast<float>(f.number("tile", 8.0, 0.0, 1e30));
     const double triangles = groove_plate_triangle_count(plate);
     check_triangle_estimate(
         triangles, kTessellatedTriangleBytes,
-        fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
+        groove_plate_tiles(plate) > 1
+            ? fmt::format("{}: a groove plate of {:.0f} triangles ({} grooves x {:.0f} tiles along them)",
+                          f.child("count"), triangles, plate.count, groove_plate_tiles(plate))
+            : fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
     Mesh mesh = make_groove_plate(plate);
     mesh.transform(
         Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Log-log plot of relative MSE against render time, one curve per variant (docs/tools.md).
 
-Usage: plot_convergence.py CONVERGENCE.csv OUT.png
+Usage: plot_convergence.py CONVERGENCE.csv OUT.png [TITLE]
 
 Reads the CSV written by ochre-converge (variant,spp,seconds,relmse,rmse,relmse_x_seconds) and draws,
 for each variant, relMSE against seconds with the spp of each point, plus a dashed 1/t line through the
@@ -24,10 +24,11 @@ def read_rows(path):
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.stderr.write(__doc__)
         return 2
     csv_path, png_path = sys.argv[1], sys.argv[2]
+    title = sys.argv[3] if len(sys.argv) == 4 else "ochre-converge"
     try:
         import matplotlib
 
@@ -59,7 +60,7 @@ def main():
     ax.set_yscale("log")
     ax.set_xlabel("render time (s)")
     ax.set_ylabel("relative MSE")
-    ax.set_title("ochre-converge")
+    ax.set_title(title)
     ax.grid(True, which="both", linewidth=0.3)
     ax.legend()
     fig.tight_layout()

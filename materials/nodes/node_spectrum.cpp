@@ -3,6 +3,7 @@
 
 #include <memory>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/spectrum_source.h"
 #include "spectra/scaled_spectrum.h"
@@ -39,14 +40,6 @@ Prepared prepare_spectrum(const PrepareArgs& args) {
 
   Prepared p;
   p.constant_outputs = {NodeValue::of_spectrum(std::move(s))};
-  return p;
-}
-
-ParamDef string_param(const char* name, const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kString;
-  p.doc = doc;
   return p;
 }
 

@@ -33,7 +33,9 @@ const std::vector<ToolDoc>& tool_docs() {
       {"ochre-bench", {}, "docs/tools.md"},
       {"ochre-brdf", {"eval", "albedo", "plot", "chi2"}, "docs/tools.md"},
       {"ochre-halfspace", {}, "docs/tools.md"},
-      {"ochre-vgroove", {"bihemispherical", "directional", "tables", "maps", "profile"}, "docs/tools.md"},
+      {"ochre-vgroove",
+       {"bihemispherical", "directional", "tables", "maps", "profile", "compare"},
+       "docs/tools.md"},
       {"ochre-fit", {"powder"}, "docs/tools.md"},
   };
   return docs;

@@ -39,26 +39,3 @@ TEST(Determinism, SeedChangesTheNoise) {
 
 }  // namespace
 }  // namespace ochre::test
-
-namespace ochre::test {
-namespace {
-
-// Every shipped example scene loads (all its files are in the repository) and renders.
-TEST(ExampleScenes, RenderAtLowResolution) {
-  for (const char* scene :
-       {"scenes/default/default.json", "scenes/cornell-box/cornell-box.json", "scenes/furnace/furnace.json",
-        "scenes/cornell-box/cornell-box-polarized.json", "scenes/cross-polarization/parallel.json",
-        "scenes/cross-polarization/crossed.json", "scenes/lambert-sphere/front.json",
-        "scenes/lambert-sphere/back.json"}) {
-    const auto dir = scratch_dir();
-    const CommandResult r =
-        run_ochre("render '" + (source_dir() / scene).string() + "' -o " + (dir / "out.exr").string() +
-                      " --png " + (dir / "out.png").string() + " --resolution 64x36 --spp 2",
-                  dir);
-    EXPECT_EQ(r.exit_code, 0) << scene << "\n" << r.output;
-    EXPECT_TRUE(std::filesystem::exists(dir / "out.png")) << scene;
-  }
-}
-
-}  // namespace
-}  // namespace ochre::test

@@ -406,6 +406,110 @@ TEST(OchreVGroove, ProfilePlot) {
 }
 
 // ---------------------------------------------------------------------------------------------------
+// compare
+
+const char* kCompareHeader =
+    "material,alpha_deg,theta_deg,phi_deg,exact,explicit,explicit_se,explicit_seconds,analytic,analytic_se,"
+    "analytic_seconds,microgroove,microgroove_se,microgroove_seconds";
+
+// Each rendered mean (explicit plate, vgroove plane, microgroove plane) against the exact R of the row.
+void expect_renders_match_exact(const std::vector<std::string>& row) {
+  const double exact = std::stod(row[4]);
+  for (size_t column : {5u, 8u, 11u}) {
+    const double value = std::stod(row[column]), se = std::stod(row[column + 1]);
+    EXPECT_GT(se, 0.0) << row[0] << " " << row[1] << " " << row[2] << " " << row[3] << " column " << column;
+    EXPECT_NEAR(value, exact, 3.0 * se + 1e-3)
+        << row[0] << " alpha " << row[1] << " theta " << row[2] << " phi " << row[3] << " column " << column;
+    EXPECT_GT(std::stod(row[column + 2]), 0.0) << "seconds";
+  }
+}
+
+TEST(OchreVGroove, CompareRowsRenderTheExactReflectance) {
+  const Csv csv = run_csv(
+      "compare --material Si,Au --alpha 45,90 --theta 10,50 --phi 0,90 --spp 8 --resolution 16 --csv");
+  EXPECT_EQ(csv.header, kCompareHeader);
+  ASSERT_EQ(csv.rows.size(), 16u);
+  size_t i = 0;
+  for (const char* material : {"Si", "Au"})
+    for (double alpha : {45.0, 90.0})
+      for (double theta : {10.0, 50.0})
+        for (double phi : {0.0, 90.0}) {
+          const std::vector<std::string>& row = csv.rows[i++];
+          ASSERT_EQ(row.size(), 14u);
+          EXPECT_EQ(row[0], material);
+          EXPECT_EQ(std::stod(row[1]), alpha);
+          EXPECT_EQ(std::stod(row[2]), theta);
+          EXPECT_EQ(std::stod(row[3]), phi);
+          // The facets: each material's index at 550 nm, constant over wavelength.
+          const double exact =
+              library_directional(tabulated_facet(material, 550), alpha, theta, phi, "rigorous").reflectance;
+          EXPECT_NEAR(std::stod(row[4]), exact, 1e-6 * exact);
+          expect_renders_match_exact(row);
+        }
+}
+
+TEST(OchreVGroove, CompareOfIdealMirrorsIsExactlyOneAndGlassMatches) {
+  // Mirror facets reflect every sample's radiance unchanged: each image equals the environment's.
+  const Csv mirror =
+      run_csv("compare --material mirror --alpha 30 --theta 0,40 --phi 60 --spp 4 --resolution 8 --csv");
+  ASSERT_EQ(mirror.rows.size(), 2u);
+  for (const auto& row : mirror.rows) {
+    EXPECT_EQ(row[4], "1");
+    for (size_t column : {5u, 8u, 11u}) EXPECT_EQ(row[column], "1") << column;
+  }
+  const Csv glass =
+      run_csv("compare --material glass --alpha 60 --theta 70 --phi 30 --spp 8 --resolution 16 --csv");
+  ASSERT_EQ(glass.rows.size(), 1u);
+  EXPECT_NEAR(std::stod(glass.rows[0][4]), library_directional(kGlass, 60, 70, 30, "rigorous").reflectance,
+              1e-7);
+  expect_renders_match_exact(glass.rows[0]);
+}
+
+TEST(OchreVGroove, CompareTextHasTheFacetsTheTableAndTheSummary) {
+  const CommandResult r = run_tool(
+      kTool, "compare --ior 1.5,0.1 --alpha 90 --theta 30 --phi 0,45 --spp 4 --resolution 8", {}, true);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* expected :
+       {"facet indices, constant at every wavelength (each material's at 550 nm): "
+        "n=1.5 k=0.1 n = 1.5000, k = "
+        "0.1000\n",
+        "alpha_deg  theta_deg  phi_deg  exact", "summary over 2 views:", "explicit     max |diff|/SE",
+        "analytic     max |diff|/SE", "microgroove  max |diff|/SE", "time explicit/analytic: mean"})
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  EXPECT_EQ(r.output.find("exact,"), std::string::npos) << "not CSV\n" << r.output;
+}
+
+TEST(OchreVGroove, CompareKeepsItsScenesInTheSceneDir) {
+  const auto dir = scratch_dir();
+  std::filesystem::create_directories(dir / "scenes");
+  const CommandResult r = run_tool(
+      kTool,
+      "compare --material Si --alpha 40 --theta 20 --phi 10 --spp 2 --resolution 4 --scene-dir scenes --csv",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "scenes"))
+    files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{
+                       "Si_alpha40_theta20_phi10_analytic.json", "Si_alpha40_theta20_phi10_explicit.json",
+                       "Si_alpha40_theta20_phi10_microgroove.json", "environment.json"}));
+  // No Russian roulette, and room for the ceil(180 / 40) = 5 reflections.
+  const std::string plate = read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_explicit.json");
+  for (const char* expected :
+       {R"("type": "groove_plate", "alpha": 40)", R"("max_depth": 7, "rr_depth": 7)",
+        R"("type": "conductor", "eta": 4.07)", R"("resolution": [4, 4])", R"("spp": 2)"})
+    EXPECT_NE(plate.find(expected), std::string::npos) << expected << "\n" << plate;
+  EXPECT_NE(read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_analytic.json").find(R"("type": "vgroove")"),
+            std::string::npos);
+  EXPECT_NE(read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_microgroove.json")
+                .find(R"("type": "microgroove")"),
+            std::string::npos);
+  // The kept scene renders with ochre itself.
+  EXPECT_EQ(run_ochre("render scenes/Si_alpha40_theta20_phi10_explicit.json -o out.exr", dir).exit_code, 0);
+}
+
+// ---------------------------------------------------------------------------------------------------
 // bad input
 
 struct BadCase {
@@ -473,6 +577,25 @@ TEST(OchreVGroove, BadFigureOptionsExitWithTwoAndLeaveNoFile) {
       {"profile --material Si --alpha 45 -o missing_dir/p.csv", "missing_dir"},
       {"tables --quadrature 0", "--quadrature: 0 points"},
       {"frobnicate", "A subcommand is required"},
+  });
+}
+
+// Compare: angles the explicit plate cannot take, sample counts, sizes, threads, the scene directory.
+TEST(OchreVGroove, BadCompareOptionsExitWithTwoAndLeaveNoFile) {
+  expect_bad_input({
+      {"compare --material Si --alpha 0.5", "--alpha: dihedral angle 0.5 is outside [1, 179.9]"},
+      {"compare --material Si --alpha 180", "--alpha: dihedral angle 180 is outside [1, 179.9]"},
+      {"compare --material Si --alpha 45,x", "--alpha: 'x' is not a finite number"},
+      {"compare --material Si --theta 86", "--theta: polar angle 86 is outside [0, 85]"},
+      {"compare --material Si --theta -1", "--theta: polar angle -1 is outside [0, 85]"},
+      {"compare --material Si --phi 0,,90", "--phi: empty item in '0,,90'"},
+      {"compare --material Si --phi inf", "--phi: 'inf' is not a finite number"},
+      {"compare --material Si,Pt", "--material: unknown material 'Pt'"},
+      {"compare --alpha 45", "give the facet material"},
+      {"compare --material Si --spp 0", "--spp: 0 is outside [1, 16777216]"},
+      {"compare --material Si --resolution 1", "--resolution: 1 pixels is outside [2, 4096]"},
+      {"compare --material Si --threads -2", "--threads: -2 is negative"},
+      {"compare --material Si --scene-dir missing_dir", "--scene-dir: missing_dir is not a directory"},
   });
 }
 

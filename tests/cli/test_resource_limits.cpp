@@ -120,9 +120,13 @@ TEST(ResourceLimits, SphereTessellationBeyondTheMemoryLimit) {
 // Groove shapes: estimated like the sphere; a grooved cylinder of 2^33 triangles is refused for its 32-bit
 // indices even when the memory limit would admit it (its groove count, 2^21, is computed, never wrapped).
 TEST(ResourceLimits, GrooveShapesBeyondTheMemoryLimitOrTheIndexRange) {
-  expect_shape_refused(R"({"type": "groove_plate", "count": 4194304, "material": "grey"})", "1G",
+  expect_shape_refused(R"({"type": "groove_plate", "count": 4194304, "tile": 0, "material": "grey"})", "1G",
                        "scene.json: shapes[0].count: a groove plate of 16777216 triangles needs 2.3 GiB; the "
                        "memory limit (--memory-limit) is 1 GiB");
+  // Tiles multiply the triangles: 1024 grooves of pitch 1 cut every 8 pitches along 1e6.
+  expect_shape_refused(R"({"type": "groove_plate", "count": 1024, "length": 1e6, "material": "grey"})", "1G",
+                       "scene.json: shapes[0].count: a groove plate of 512000000 triangles (1024 grooves x "
+                       "125000 tiles along them) needs");
   expect_shape_refused(R"({"type": "cylinder", "segments": 1048576, "material": "grey"})", "100M",
                        "scene.json: shapes[0].segments: a cylinder of 2097152 triangles needs 300 MiB");
   const std::string grooved =

@@ -101,6 +101,11 @@ TEST(MemoryBudget, GrooveShapeEstimatesCountTheirTriangles) {
   const GroovePlate plate{60, 0.5f, 7, 3};
   EXPECT_EQ(groove_plate_triangle_count(plate),
             static_cast<double>(make_groove_plate(plate).triangle_count()));
+  const GroovePlate tiled{60, 0.5f, 7, 30};  // 30 / (8 x 0.5) = 7.5: 8 tiles along the grooves
+  EXPECT_EQ(groove_plate_tiles(tiled), 8.0);
+  EXPECT_EQ(groove_plate_triangle_count(tiled), 4.0 * 7 * 8);
+  EXPECT_EQ(groove_plate_triangle_count(tiled),
+            static_cast<double>(make_groove_plate(tiled).triangle_count()));
   EXPECT_EQ(cylinder_triangle_count(13), static_cast<double>(make_cylinder(1, 2, 13).triangle_count()));
   GroovedCylinder cylinder{1, 1, 90, 0.3f, 11};  // floor(1 / 0.3) = 3 grooves
   EXPECT_EQ(groove_count(cylinder), 3.0);

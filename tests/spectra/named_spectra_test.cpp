@@ -13,10 +13,28 @@ namespace {
 
 TEST(NamedSpectra, KnownNamesResolve) {
   const auto names = list_named_spectra();
-  EXPECT_EQ(names, (std::vector<std::string_view>{"D65", "A", "E", "cie_x", "cie_y", "cie_z", "metal-Au-eta",
-                                                  "metal-Au-k", "metal-Ag-eta", "metal-Ag-k", "metal-Cu-eta",
-                                                  "metal-Cu-k", "metal-Al-eta", "metal-Al-k", "metal-Si-eta",
-                                                  "metal-Si-k"}));
+  EXPECT_EQ(names, (std::vector<std::string_view>{"D65",
+                                                  "A",
+                                                  "E",
+                                                  "cie_x",
+                                                  "cie_y",
+                                                  "cie_z",
+                                                  "metal-Au-eta",
+                                                  "metal-Au-k",
+                                                  "metal-Ag-eta",
+                                                  "metal-Ag-k",
+                                                  "metal-Cu-eta",
+                                                  "metal-Cu-k",
+                                                  "metal-Al-eta",
+                                                  "metal-Al-k",
+                                                  "metal-Si-eta",
+                                                  "metal-Si-k",
+                                                  "pigment-hematite-n",
+                                                  "pigment-hematite-k",
+                                                  "pigment-hematite_o-n",
+                                                  "pigment-hematite_o-k",
+                                                  "pigment-hematite_e-n",
+                                                  "pigment-hematite_e-k"}));
   for (auto name : names) EXPECT_NE(named_spectrum(name), nullptr) << name;
 }
 
@@ -42,10 +60,12 @@ TEST(NamedSpectra, UnknownNameListsTheKnownOnes) {
     named_spectrum("D50");
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "unknown spectrum name 'D50' (known: D65, A, E, cie_x, cie_y, cie_z, metal-Au-eta, metal-Au-k, "
-              "metal-Ag-eta, metal-Ag-k, metal-Cu-eta, metal-Cu-k, metal-Al-eta, metal-Al-k, metal-Si-eta, "
-              "metal-Si-k)");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "unknown spectrum name 'D50' (known: D65, A, E, cie_x, cie_y, cie_z, metal-Au-eta, metal-Au-k, "
+        "metal-Ag-eta, metal-Ag-k, metal-Cu-eta, metal-Cu-k, metal-Al-eta, metal-Al-k, metal-Si-eta, "
+        "metal-Si-k, pigment-hematite-n, pigment-hematite-k, pigment-hematite_o-n, pigment-hematite_o-k, "
+        "pigment-hematite_e-n, pigment-hematite_e-k)");
   }
 }
 

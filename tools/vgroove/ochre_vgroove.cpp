@@ -7,6 +7,8 @@
 //   ochre-vgroove tables          [--csv]
 //   ochre-vgroove maps            --material NAMES|--ior n,k --alpha LIST --size PX -o OUT.png [...]
 //   ochre-vgroove profile         --material NAME|--ior n,k --alpha A -o OUT.csv [--png OUT.png]
+//   ochre-vgroove compare         --material NAMES|--ior n,k [--alpha LIST] [--theta LIST] [--phi LIST]
+//                                 [--spp N] [--resolution PX] [--seed S] [--threads N] [--scene-dir DIR]
 // Exit codes: 0 = done, 1 = a plot script failed, 2 = bad input or usage.
 #include <fmt/format.h>
 
@@ -93,6 +95,28 @@ int main(int argc, char** argv) {
   profile_cmd->add_option("-o,--output", profile.output, "CSV: phi_deg,theta_deg,model,L")->required();
   profile_cmd->add_option("--png", profile.png, "Also plot it (PNG, needs matplotlib)");
 
+  ochre::CompareArgs compare;
+  CLI::App* compare_cmd = app.add_subcommand(
+      "compare", "Render explicit grooves, vgroove and microgroove against the exact R(theta, phi)");
+  add_material(*compare_cmd, compare.material,
+               "Comma list of: Au, Ag, Cu, Al, Si, glass, paper-silver, mirror (index at 550 nm)");
+  compare_cmd->add_option("--alpha", compare.alphas, "Dihedral angles (degrees, [1, 179.9]), comma list")
+      ->capture_default_str();
+  compare_cmd
+      ->add_option("--theta", compare.thetas, "Polar angles of the views (degrees, [0, 85]), comma list")
+      ->capture_default_str();
+  compare_cmd
+      ->add_option("--phi", compare.phis, "Azimuths (degrees from the axis across the grooves), comma list")
+      ->capture_default_str();
+  compare_cmd->add_option("--spp", compare.spp, "Samples per pixel")->capture_default_str();
+  compare_cmd->add_option("--resolution", compare.resolution, "Film width and height (pixels)")
+      ->capture_default_str();
+  compare_cmd->add_option("--seed", compare.seed, "Sampler seed")->capture_default_str();
+  compare_cmd->add_option("--threads", compare.threads, "Render threads (0 = all cores)")
+      ->capture_default_str();
+  compare_cmd->add_option("--scene-dir", compare.scene_dir, "Keep the scenes rendered in this directory");
+  compare_cmd->add_flag("--csv", compare.csv, "CSV instead of aligned text (notes and summary on stderr)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -105,7 +129,8 @@ int main(int argc, char** argv) {
     if (*dir_cmd) return ochre::run_directional(dir);
     if (*tables_cmd) return ochre::run_tables(tables);
     if (*maps_cmd) return ochre::run_maps(maps);
-    return ochre::run_profile(profile);
+    if (*profile_cmd) return ochre::run_profile(profile);
+    return ochre::run_compare(compare);
   } catch (const std::exception& e) {  // InputError, ImageError: the message names the option or file
     fmt::print(stderr, "ochre-vgroove: error: {}\n", e.what());
     return 2;

@@ -51,10 +51,21 @@ struct ProfileArgs {
   std::string output, png;
 };
 
+struct CompareArgs {
+  MaterialOption material;  // facets: each material's index at 550 nm, as a constant
+  std::string alphas = "45", thetas = "10,30,50,70", phis = "0,30,60,90,135";
+  int spp = 64, resolution = 64, threads = 0;
+  unsigned long long seed = 0;
+  std::string scene_dir;  // keep the scenes there (else a temporary directory)
+  bool csv = false;
+};
+
 int run_bihemispherical(const BihemisphericalArgs& args);
 int run_directional(const DirectionalArgs& args);
 int run_tables(const TablesArgs& args);
 int run_maps(const MapsArgs& args);
 int run_profile(const ProfileArgs& args);
+// Renders explicit grooves and the two closures against the exact R (renderer/render.h).
+int run_compare(const CompareArgs& args);
 
 }  // namespace ochre

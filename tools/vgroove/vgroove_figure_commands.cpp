@@ -2,7 +2,6 @@
 // and 9). Single maps are written here (OIIO); labelled grids and plots are drawn by
 // tools/plot_vgroove.py from the maps and CSV written here.
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -19,6 +18,7 @@
 #include "tools/vgroove/vgroove_material.h"
 #include "tools/vgroove/vgroove_png.h"
 #include "tools/vgroove/vgroove_profile.h"
+#include "tools/vgroove/vgroove_scratch_dir.h"
 #include "tools/vgroove/vgroove_text_table.h"
 
 namespace ochre {
@@ -29,21 +29,6 @@ namespace fs = std::filesystem;
 
 std::string number(double x) {
   return fmt::format("{:.9g}", x);
-}
-
-// --material as a comma list of names (maps), or the one --ior.
-std::vector<VGrooveMaterial> parse_materials(const MaterialOption& option) {
-  if (!option.ior.empty() || option.name.empty()) return {VGrooveMaterial::parse(option.name, option.ior)};
-  std::vector<VGrooveMaterial> materials;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = option.name.find(',', start);
-    const std::string name = option.name.substr(start, comma == std::string::npos ? comma : comma - start);
-    if (name.empty()) throw InputError(fmt::format("--material: empty item in '{}'", option.name));
-    materials.push_back(VGrooveMaterial::named(name));
-    if (comma == std::string::npos) return materials;
-    start = comma + 1;
-  }
 }
 
 double single_alpha(const std::string& text) {
@@ -64,26 +49,6 @@ std::string panel_title(const Panel& p) {
                      model_name(p.model));
 }
 
-// A scratch directory beside `output` for the panels of a grid, removed when done (or by the signal
-// handler, renderer/signal_cleanup.h).
-class ScratchDir {
- public:
-  explicit ScratchDir(const fs::path& output)
-      : path_(output.string() + fmt::format(".panels.tmp-{}", static_cast<long>(::getpid()))),
-        registration_(path_, TemporaryKind::kDirectory) {
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-  TemporaryFileRegistration registration_;
-};
-
 // Refuses outputs that could destroy data (docs/cli.md, "Output files"): ochre-vgroove reads no file, so
 // this checks the outputs themselves and that no two are the same file.
 void check_outputs(const std::string& first, const std::string& second) {
@@ -93,7 +58,7 @@ void check_outputs(const std::string& first, const std::string& second) {
 }
 
 int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
-  const ScratchDir scratch{fs::path(args.output)};
+  const ScratchDir scratch{args.output + ".panels"};
   TextTable manifest{{"material", "alpha_deg", "model", "colour_png", "counts_png"}, {}};
   for (size_t i = 0; i < panels.size(); ++i) {
     const Panel& p = panels[i];
@@ -124,7 +89,8 @@ int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
 }  // namespace
 
 int run_maps(const MapsArgs& args) {
-  const std::vector<VGrooveMaterial> materials = parse_materials(args.material);
+  const std::vector<VGrooveMaterial> materials =
+      VGrooveMaterial::parse_list(args.material.name, args.material.ior);
   const std::vector<double> alphas = parse_number_list("--alpha", args.alphas);
   check_alphas("--alpha", alphas);
   const std::vector<ChainModel> models = parse_models("--model", args.models);

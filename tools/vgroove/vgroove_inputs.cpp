@@ -21,8 +21,9 @@ constexpr NamedModel kModels[] = {{"rigorous", ChainModel::kRigorous},
                                   {"sp", ChainModel::kSeparateSP},
                                   {"paper_literal", ChainModel::kPaperLiteral}};
 
-// The comma-separated items of text; an empty item (",," or a trailing comma) is an error.
-std::vector<std::string_view> split_items(std::string_view option, std::string_view text) {
+}  // namespace
+
+std::vector<std::string_view> split_list(std::string_view option, std::string_view text) {
   if (text.empty()) throw InputError(fmt::format("{}: give at least one value", option));
   std::vector<std::string_view> items;
   size_t start = 0;
@@ -37,11 +38,9 @@ std::vector<std::string_view> split_items(std::string_view option, std::string_v
   }
 }
 
-}  // namespace
-
 std::vector<double> parse_number_list(std::string_view option, std::string_view text) {
   std::vector<double> values;
-  for (std::string_view item : split_items(option, text)) {
+  for (std::string_view item : split_list(option, text)) {
     double value = 0.0;
     const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (error != std::errc() || end != item.data() + item.size() || !std::isfinite(value))
@@ -53,7 +52,7 @@ std::vector<double> parse_number_list(std::string_view option, std::string_view 
 
 std::vector<ChainModel> parse_models(std::string_view option, std::string_view text) {
   std::vector<ChainModel> models;
-  for (std::string_view item : split_items(option, text)) {
+  for (std::string_view item : split_list(option, text)) {
     const NamedModel* found = nullptr;
     for (const NamedModel& m : kModels)
       if (m.name == item) found = &m;

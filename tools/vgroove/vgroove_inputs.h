@@ -2,6 +2,7 @@
 // Command-line values of ochre-vgroove (docs/tools.md), parsed and checked here so that every bad value
 // is an InputError naming the option (the tool exits with 2 on it).
 //
+//   split_list("--material", "Si,Au")          -> {"Si", "Au"}: comma-separated items, none empty
 //   parse_number_list("--alpha", "45,60,90")   -> {45, 60, 90}: comma-separated finite numbers
 //   parse_models("--model", "rigorous,sp")      -> the chain models (rigorous, unpolarized, sp,
 //                                                  paper_literal), model_name() gives the name back
@@ -15,6 +16,7 @@
 
 namespace ochre {
 
+std::vector<std::string_view> split_list(std::string_view option, std::string_view text);
 std::vector<double> parse_number_list(std::string_view option, std::string_view text);
 std::vector<ChainModel> parse_models(std::string_view option, std::string_view text);
 std::string_view model_name(ChainModel model);

@@ -61,6 +61,13 @@ VGrooveMaterial VGrooveMaterial::parse(std::string_view name, std::string_view i
   return m;
 }
 
+std::vector<VGrooveMaterial> VGrooveMaterial::parse_list(std::string_view names, std::string_view ior) {
+  if (!ior.empty() || names.empty()) return {parse(names, ior)};
+  std::vector<VGrooveMaterial> materials;
+  for (std::string_view name : split_list("--material", names)) materials.push_back(named(name));
+  return materials;
+}
+
 FacetIndex VGrooveMaterial::at(double wavelength_nm) const {
   if (!eta_) return constant_;
   const float lambda = static_cast<float>(wavelength_nm);

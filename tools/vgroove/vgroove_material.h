@@ -10,6 +10,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "materials/lobes/reflection_chain.h"
 #include "spectra/spectrum.h"
@@ -21,6 +22,8 @@ class VGrooveMaterial {
   // Exactly one of name and ior must be non-empty; throws InputError naming --material or --ior.
   static VGrooveMaterial parse(std::string_view name, std::string_view ior);
   static VGrooveMaterial named(std::string_view name) { return parse(name, ""); }
+  // --material as a comma list of names, or the one --ior.
+  static std::vector<VGrooveMaterial> parse_list(std::string_view names, std::string_view ior);
 
   // The CSV label: the canonical name ("Au", "glass", ...) or "n=N k=K" for --ior.
   const std::string& label() const { return label_; }

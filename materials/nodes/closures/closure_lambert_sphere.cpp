@@ -9,6 +9,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -68,17 +69,6 @@ void emit_lambert_sphere(const NodeArgs& a) {
 
 ClosureTraits lambert_sphere_traits(std::span<const InputView>, const void*) {
   return {kLobeReflection | kLobeDiffuse, false};
-}
-
-ParamDef choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
-                      const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kString;
-  p.default_value = fallback;
-  p.choices = std::move(choices);
-  p.doc = doc;
-  return p;
 }
 
 }  // namespace

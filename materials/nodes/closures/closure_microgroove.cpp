@@ -9,6 +9,7 @@
 
 #include "materials/lobes/vgroove/microgroove_lobe.h"
 #include "materials/nodes/closures/groove_closure.h"
+#include "materials/nodes/definition_builders.h"
 
 namespace ochre {
 
@@ -68,17 +69,6 @@ ClosureTraits microgroove_traits(std::span<const InputView>, const void* payload
   return groove_traits(static_cast<const MicrogrooveSettings*>(payload)->facet);
 }
 
-ParamDef number_param(const char* name, double fallback, double min, double max, const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kFloat;
-  p.default_value = fallback;
-  p.min = min;
-  p.max = max;
-  p.doc = doc;
-  return p;
-}
-
 }  // namespace
 
 NodeDefinition microgroove_node() {
@@ -97,8 +87,8 @@ NodeDefinition microgroove_node() {
   segments.max = GrooveProfile::kMaxSegments;
   segments.doc = "rounded: chords approximating the arc";
   d.params = {
-      groove_choice_param("profile", "v", {"v", "asymmetric_v", "flat_bottom", "rounded", "v_mix"},
-                          "cross-section of one groove"),
+      choice_param("profile", "v", {"v", "asymmetric_v", "flat_bottom", "rounded", "v_mix"},
+                   "cross-section of one groove"),
       number_param("alpha", 90.0, 1.0, 179.9,
                    "v, flat_bottom, rounded: dihedral angle in degrees (rounded: between the rim "
                    "tangents)"),

@@ -11,6 +11,7 @@
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_lobe.h"
 #include "materials/nodes/closures/groove_closure.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/spectrum_source.h"
 
@@ -99,31 +100,6 @@ ClosureTraits powder_traits(std::span<const InputView>, const void*) {
   return {kLobeReflection | kLobeDiffuse | kLobeGlossy, false};
 }
 
-SocketDef input(const char* name, SocketType type, float fallback, std::optional<float> min,
-                std::optional<float> max, const char* doc) {
-  SocketDef s;
-  s.name = name;
-  s.type = type;
-  s.default_value = NodeValue::of_float(fallback);
-  s.role = SpectralRole::kNone;
-  s.min = min;
-  s.max = max;
-  s.clamped = true;
-  s.doc = doc;
-  return s;
-}
-
-ParamDef number(const char* name, double fallback, double min, double max, const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kFloat;
-  p.default_value = fallback;
-  p.min = min;
-  p.max = max;
-  p.doc = doc;
-  return p;
-}
-
 }  // namespace
 
 NodeDefinition powder_node() {
@@ -133,52 +109,47 @@ NodeDefinition powder_node() {
       "Dry powder (pigments such as hematite): enhanced-backscattering BRDF of Gerardin, Martinetto and "
       "Holzschuch 2023; the grains' albedo from Mie theory and the pigment's optical constants. A "
       "depolarizer.";
-  SocketDef rho =
-      input("rho", SocketType::kSpectrum, -1.0f, std::nullopt, 1.0f,
-            "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo (default -1)");
+  SocketDef rho = float_input(
+      "rho", SocketType::kSpectrum, -1.0f, std::nullopt, 1.0f,
+      "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo (default -1)");
   rho.clamped = false;
-  d.inputs = {
-      input("volume_amplitude", SocketType::kSpectrum, 1.0f, 0.0f, std::nullopt,
-            "A_v: scale of the volume terms (1 = physically normalised)"),
-      input("g", SocketType::kSpectrum, 0.0f, -0.99f, 0.99f, "Henyey-Greenstein anisotropy of the grains"),
-      input("kappa", SocketType::kSpectrum, 0.25f, 1e-6f, 1e6f, "extinction coefficient, 1/um"),
-      input("radius", SocketType::kFloat, 0.05f, 1e-6f, 1e6f,
-            "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
-      input("surface_amplitude", SocketType::kSpectrum, 3e-6f, 0.0f, std::nullopt,
-            "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
-      input("correlation_length", SocketType::kFloat, 2.0f, 1e-6f, 1e6f,
-            "surface correlation length l_c, um"),
-      input("thickness", SocketType::kFloat, 1e30f, 1e-9f, 1e30f,
-            "layer thickness d in um (single scattering only); default 1e30: infinite"),
-      rho};
+  d.inputs = {float_input("volume_amplitude", SocketType::kSpectrum, 1.0f, 0.0f, std::nullopt,
+                          "A_v: scale of the volume terms (1 = physically normalised)"),
+              float_input("g", SocketType::kSpectrum, 0.0f, -0.99f, 0.99f,
+                          "Henyey-Greenstein anisotropy of the grains"),
+              float_input("kappa", SocketType::kSpectrum, 0.25f, 1e-6f, 1e6f, "extinction coefficient, 1/um"),
+              float_input("radius", SocketType::kFloat, 0.05f, 1e-6f, 1e6f,
+                          "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
+              float_input("surface_amplitude", SocketType::kSpectrum, 3e-6f, 0.0f, std::nullopt,
+                          "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
+              float_input("correlation_length", SocketType::kFloat, 2.0f, 1e-6f, 1e6f,
+                          "surface correlation length l_c, um"),
+              float_input("thickness", SocketType::kFloat, 1e30f, 1e-9f, 1e30f,
+                          "layer thickness d in um (single scattering only); default 1e30: infinite"),
+              rho};
   d.params = {
-      groove_choice_param("pigment", "hematite", PigmentTable::names(),
-                          "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "
-                          "(2 o + e) / 3), or one of its rays"),
-      [] {
-        ParamDef p;
-        p.name = "pigment_file";
-        p.kind = ParamKind::kString;
-        p.doc =
-            "a CSV of the grains' optical constants with columns n and k (index n + i k); replaces `pigment`";
-        return p;
-      }(),
-      groove_choice_param("ladder", "symmetric", {"symmetric", "printed"},
-                          "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
-                          "or as printed (for comparison)"),
-      groove_choice_param("ladder_decay", "c0", {"c0", "alpha"},
-                          "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
-      groove_choice_param("normalisation", "brdf", {"brdf", "printed"},
-                          "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
-      groove_choice_param("surface", "harvey_shack", {"harvey_shack", "gaussian"},
-                          "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
-      number("surface_sigma", 5.7, 0.01, 90.0, "Gaussian surface term only: its width in degrees"),
-      groove_choice_param("tau", "paper", {"paper", "zhu_pine_weitz", "two_thirds"},
-                          "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
-                          "1991), or 2/3"),
-      groove_choice_param("sampling", "mixture", {"mixture", "cosine"},
-                          "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
-                          "comparison)")};
+      choice_param("pigment", "hematite", PigmentTable::names(),
+                   "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "
+                   "(2 o + e) / 3), or one of its rays"),
+      string_param("pigment_file",
+                   "a CSV of the grains' optical constants with columns n and k (index n + i k); replaces "
+                   "`pigment`"),
+      choice_param("ladder", "symmetric", {"symmetric", "printed"},
+                   "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
+                   "or as printed (for comparison)"),
+      choice_param("ladder_decay", "c0", {"c0", "alpha"},
+                   "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
+      choice_param("normalisation", "brdf", {"brdf", "printed"},
+                   "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
+      choice_param("surface", "harvey_shack", {"harvey_shack", "gaussian"},
+                   "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
+      number_param("surface_sigma", 5.7, 0.01, 90.0, "Gaussian surface term only: its width in degrees"),
+      choice_param("tau", "paper", {"paper", "zhu_pine_weitz", "two_thirds"},
+                   "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
+                   "1991), or 2/3"),
+      choice_param("sampling", "mixture", {"mixture", "cosine"},
+                   "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
+                   "comparison)")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the powder lobe"}};
   d.prepare = prepare_powder;
   d.eval = emit_powder;

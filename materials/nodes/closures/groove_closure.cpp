@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "materials/core/frame.h"
+#include "materials/nodes/definition_builders.h"
 #include "spectra/named_spectra.h"
 
 namespace ochre {
@@ -82,19 +83,6 @@ ClosureTraits groove_traits(const GrooveFacetSettings& s) {
   return {kLobeReflection | kLobeDelta | (groove_model_polarizes(s.model) ? kLobePolarizing : 0u), false};
 }
 
-SocketDef groove_float_input(const char* name, float fallback, std::optional<float> min,
-                             std::optional<float> max, const char* doc) {
-  SocketDef s;
-  s.name = name;
-  s.type = SocketType::kFloat;
-  s.default_value = NodeValue::of_float(fallback);
-  s.min = min;
-  s.max = max;
-  s.clamped = min.has_value();
-  s.doc = doc;
-  return s;
-}
-
 namespace {
 
 SocketDef spectrum_input(const char* name, const char* named_default, const char* doc) {
@@ -119,27 +107,16 @@ std::vector<SocketDef> groove_facet_and_direction_inputs() {
   return {
       spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
       spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
-      groove_float_input("angle", 0.0f, std::nullopt, std::nullopt,
-                         "groove direction: degrees from the reference direction, counter-clockwise about "
-                         "the normal (may be textured)"),
+      float_input("angle", SocketType::kFloat, 0.0f, std::nullopt, std::nullopt,
+                  "groove direction: degrees from the reference direction, counter-clockwise about "
+                  "the normal (may be textured)"),
       direction};
 }
 
-ParamDef groove_choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
-                             const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kString;
-  p.default_value = fallback;
-  p.choices = std::move(choices);
-  p.doc = doc;
-  return p;
-}
-
 std::vector<ParamDef> groove_common_params() {
-  ParamDef metal = groove_choice_param("metal", "", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
-                                       "built-in optical constants of the facets (mirror: reflectance 1, no "
-                                       "retardance); when given, eta and k are ignored");
+  ParamDef metal = choice_param("metal", "", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
+                                "built-in optical constants of the facets (mirror: reflectance 1, no "
+                                "retardance); when given, eta and k are ignored");
   metal.default_value = nullptr;  // absent: the eta and k inputs
   ParamDef max_reflections;
   max_reflections.name = "max_reflections";
@@ -148,16 +125,15 @@ std::vector<ParamDef> groove_common_params() {
   max_reflections.min = 0;
   max_reflections.max = 100000;
   max_reflections.doc = "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit";
-  return {
-      metal,
-      groove_choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
-                          "polarization treatment: rigorous Mueller chain; unpolarized (product of "
-                          "unpolarized reflectances); sp (s and p reflected separately, averaged); "
-                          "paper_literal (the printed Eq 33, for comparison only)"),
-      max_reflections,
-      groove_choice_param("direction_space", "uv", {"uv", "object", "world"},
-                          "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
-                          "or world space")};
+  return {metal,
+          choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
+                       "polarization treatment: rigorous Mueller chain; unpolarized (product of "
+                       "unpolarized reflectances); sp (s and p reflected separately, averaged); "
+                       "paper_literal (the printed Eq 33, for comparison only)"),
+          max_reflections,
+          choice_param("direction_space", "uv", {"uv", "object", "world"},
+                       "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
+                       "or world space")};
 }
 
 }  // namespace ochre

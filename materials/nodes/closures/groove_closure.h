@@ -41,11 +41,7 @@ Vec3 groove_local_axis(const NodeArgs& a, const GrooveFacetSettings& s, const Gr
 ClosureTraits groove_traits(const GrooveFacetSettings& s);
 
 // Socket and parameter definitions shared by the groove closures (documented in docs/nodes.md).
-SocketDef groove_float_input(const char* name, float fallback, std::optional<float> min,
-                             std::optional<float> max, const char* doc);
 std::vector<SocketDef> groove_facet_and_direction_inputs();  // eta, k, angle, direction
 std::vector<ParamDef> groove_common_params();                // metal, model, max_reflections, direction_space
-ParamDef groove_choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
-                             const char* doc);
 
 }  // namespace ochre

@@ -1,0 +1,50 @@
+#include "materials/nodes/definition_builders.h"
+
+#include <utility>
+
+namespace ochre {
+
+SocketDef float_input(const char* name, SocketType type, float fallback, std::optional<float> min,
+                      std::optional<float> max, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = type;
+  s.default_value = NodeValue::of_float(fallback);
+  s.min = min;
+  s.max = max;
+  s.clamped = min.has_value() || max.has_value();
+  s.doc = doc;
+  return s;
+}
+
+ParamDef number_param(const char* name, double fallback, double min, double max, const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kFloat;
+  p.default_value = fallback;
+  p.min = min;
+  p.max = max;
+  p.doc = doc;
+  return p;
+}
+
+ParamDef choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
+                      const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kString;
+  p.default_value = fallback;
+  p.choices = std::move(choices);
+  p.doc = doc;
+  return p;
+}
+
+ParamDef string_param(const char* name, const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kString;
+  p.doc = doc;
+  return p;
+}
+
+}  // namespace ochre

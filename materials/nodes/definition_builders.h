@@ -1,0 +1,25 @@
+#pragma once
+// Builders of the socket and parameter definitions that node types declare (node_definition.h), so that
+// each closure lists its inputs and parameters in one line apiece.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "materials/nodes/node_definition.h"
+
+namespace ochre {
+
+// A linkable number (SocketType kFloat or kSpectrum) with a default; a bound makes linked values clamped
+// to [min, max] at run time and constants outside it an error.
+SocketDef float_input(const char* name, SocketType type, float fallback, std::optional<float> min,
+                      std::optional<float> max, const char* doc);
+// A constant number parameter in [min, max].
+ParamDef number_param(const char* name, double fallback, double min, double max, const char* doc);
+// A string parameter that must be one of `choices`.
+ParamDef choice_param(const char* name, const char* fallback, std::vector<std::string> choices,
+                      const char* doc);
+// A free string parameter (a file name, ...), empty by default.
+ParamDef string_param(const char* name, const char* doc);
+
+}  // namespace ochre
