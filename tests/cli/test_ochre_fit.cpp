@@ -284,6 +284,11 @@ std::string rows_of(int count) {
 }
 const std::string kGood = rows_of(12);
 
+// The case's name for gtest's messages and ctest's test names (not its bytes).
+void PrintTo(const BadCase& c, std::ostream* out) {
+  *out << c.name;
+}
+
 class OchreFitBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(OchreFitBadInput, ExitsTwoNamingTheCauseAndWritesNothing) {

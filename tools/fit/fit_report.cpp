@@ -123,8 +123,8 @@ std::string powder_material_json(const PowderValues& values, const FitPigment& p
   j["integrator"] = {{"spp", 64}, {"max_depth", 4}};
   j["output"] = {{"exr", stem + "_preview.exr"}, {"png", stem + "_preview.png"}};
   j["materials"] = {{kFittedMaterialName, material}};
-  j["lights"] = {{{"type", "point"}, {"position", {0.4, 0.3, 5}}, {"intensity", 20}},
-                 {{"type", "environment"}, {"radiance", 0.05}}};
+  j["lights"] = {{{"type", "point"}, {"position", {0.4, 0.3, 5}}, {"intensity", 120}},
+                 {{"type", "environment"}, {"radiance", 0.3}}};
   j["shapes"] = {{{"type", "sphere"}, {"radius", 1}, {"material", kFittedMaterialName}}};
   return j.dump(2) + "\n";
 }
