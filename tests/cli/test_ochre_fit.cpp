@@ -457,6 +457,19 @@ std::string case_name(const ::testing::TestParamInfo<BadCase>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, OchreFitBadInput, ::testing::ValuesIn(kBadCases), case_name);
 
+TEST(OchreFit, MeasurementsOrPigmentThatAreNotRegularFilesAreRefused) {
+  const fs::path dir = scratch_dir();
+  make_fifo(dir / "fifo.csv");
+  write_text(dir / "data.csv", kGood);
+  for (const std::string& args : {std::string("--data fifo.csv"), std::string("--data /dev/zero"),
+                                  std::string("--data data.csv --pigment-file fifo.csv")}) {
+    const CommandResult r = run_tool(kTool, "powder " + args + " --csv fit.csv", dir, false, 20);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, "not a regular file")) << args << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir / "fit.csv")) << args;
+  }
+}
+
 TEST(OchreFit, AnOutputThatIsAnInputIsRefused) {
   const fs::path dir = scratch_dir();
   write_text(dir / "data.csv", kGood);
