@@ -26,8 +26,6 @@ struct FitProblem {
   PowderValues held{};          // the values of the parameters that are not fitted
   std::vector<int> free;        // fitted parameters, in order
 
-  bool is_free(int param) const { return std::find(free.begin(), free.end(), param) != free.end(); }
-
   PowderValues values_at(const std::vector<double>& x) const {
     PowderValues v = held;
     for (size_t k = 0; k < free.size(); ++k) v[free[k]] = from_coordinate(free[k], x[k]);
