@@ -18,6 +18,10 @@ CommandResult run_tool(const std::string& tool, const std::string& args,
     command.append("timeout -s KILL ").append(std::to_string(timeout_seconds)).append(" ");
   command.append("'").append((bin_dir() / tool).string()).append("' ").append(args);
   command.append(stdout_only ? " 2>/dev/null" : " 2>&1");
+  return run_command_line(command);
+}
+
+CommandResult run_command_line(const std::string& command) {
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

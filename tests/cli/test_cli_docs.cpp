@@ -36,6 +36,7 @@ const std::vector<ToolDoc>& tool_docs() {
       {"ochre-vgroove",
        {"bihemispherical", "directional", "tables", "maps", "profile", "compare"},
        "docs/tools.md"},
+      {"ochre-fit", {"powder"}, "docs/tools.md"},
   };
   return docs;
 }

@@ -67,6 +67,11 @@ float PigmentTable::tau_o(float lambda_nm) const {
   return tau_[l.index] + l.weight * (tau_[l.index + 1] - tau_[l.index]);
 }
 
+const std::vector<std::string>& PigmentTable::names() {
+  static const std::vector<std::string> pigments = {"hematite", "hematite_o", "hematite_e"};
+  return pigments;
+}
+
 std::shared_ptr<const PigmentTable> PigmentTable::named(const std::string& pigment, PowderTau tau) {
   static std::mutex mutex;
   static std::map<std::pair<std::string, PowderTau>, std::shared_ptr<const PigmentTable>> tables;

@@ -29,8 +29,11 @@ class PigmentTable {
   float tau_o(float lambda_nm) const;
   size_t memory_bytes() const { return (rho_.size() + tau_.size()) * sizeof(float); }
 
-  // The table of a named pigment ("hematite", "hematite_o", "hematite_e"), built on first use.
+  // The table of a named pigment (one of names()), built on first use.
   static std::shared_ptr<const PigmentTable> named(const std::string& pigment, PowderTau tau);
+  // The built-in pigments: "hematite" (Querry 1985, randomly oriented grains: (2 o + e) / 3), "hematite_o"
+  // and "hematite_e" (one ray); named_spectrum("pigment-NAME-n") and "...-k" are their optical constants.
+  static const std::vector<std::string>& names();
 
  private:
   int lambdas_ = 0;

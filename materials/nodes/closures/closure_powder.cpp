@@ -128,7 +128,7 @@ NodeDefinition powder_node() {
                           "layer thickness d in um (single scattering only); default 1e30: infinite"),
               rho};
   d.params = {
-      choice_param("pigment", "hematite", {"hematite", "hematite_o", "hematite_e"},
+      choice_param("pigment", "hematite", PigmentTable::names(),
                    "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "
                    "(2 o + e) / 3), or one of its rays"),
       string_param("pigment_file",

@@ -1,0 +1,119 @@
+// ochre-fit: fits a material model to measured BRDFs and writes a ready-to-use ochre material
+// (docs/tools.md). One model for now, the dry-powder BRDF (docs/materials/powder.md, "Fitting
+// measurements"):
+//   ochre-fit powder --data MEASUREMENTS.csv [--pigment NAME | --pigment-file NK.csv] [--fix NAME=VALUE ...]
+//                    [--start NAME=VALUE ...] [--bounds NAME=LOWER:UPPER ...] [--max-theta-i DEG]
+//                    [--residuals relative|absolute] [-o MATERIAL.json] [--plot FIT.png] [--csv FIT.csv] [-q]
+//   ochre-fit powder --synthesize OUT.csv [--params NAME=VALUE ...] [--noise 0.01] [--seed 1]
+//                    [--lambda 450,550,650 | --geometry MEASUREMENTS.csv]
+// Exit codes: 0 = done, 1 = the plot script failed (nothing written), 2 = bad input or usage.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "ochre/version.h"
+#include "renderer/image_error.h"
+#include "renderer/input_error.h"
+#include "tools/fit/fit_commands.h"
+#include "tools/unsigned_option.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ochre-fit: fit a material model to BRDF measurements and write an ochre material"};
+  app.set_version_flag("--version", "ochre-fit " OCHRE_VERSION);
+  app.require_subcommand(1);
+
+  ochre::PowderFitArgs fit;
+  ochre::PowderSynthesizeArgs synth;
+  CLI::App* powder =
+      app.add_subcommand("powder", "The dry-powder BRDF (Gerardin, Martinetto and Holzschuch 2023)");
+  CLI::Option* data =
+      powder->add_option("--data", fit.data, "Measurements: CSV theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf");
+  CLI::Option* synthesize = powder->add_option(
+      "--synthesize", synth.output, "Write synthetic measurements of known parameters to this CSV");
+  data->excludes(synthesize);
+  CLI::Option* pigment = powder->add_option("--pigment", fit.pigment.name, "Built-in pigment of the grains")
+                             ->capture_default_str();
+  powder
+      ->add_option("--pigment-file", fit.pigment.file, "CSV of the grains' optical constants (columns n, k)")
+      ->excludes(pigment);
+  powder
+      ->add_option("--fix", fit.fix,
+                   "Hold a parameter at a value: NAME=VALUE (repeatable, or comma-separated)")
+      ->delimiter(',')
+      ->needs(data);
+  powder
+      ->add_option("--start", fit.start,
+                   "Start the fit here instead of the coarse grid: NAME=VALUE (others: defaults)")
+      ->delimiter(',')
+      ->needs(data);
+  powder
+      ->add_option("--bounds", fit.bounds,
+                   "Bounds of a fitted parameter: NAME=LOWER:UPPER (default: docs/tools.md)")
+      ->delimiter(',')
+      ->needs(data);
+  powder
+      ->add_option("--max-theta-i", fit.max_theta_i, "Leave out measurements with a larger theta_i (degrees)")
+      ->capture_default_str()
+      ->needs(data);
+  powder
+      ->add_option("--residuals", fit.residuals,
+                   "relative ((fit - brdf) / brdf) or absolute (fit - brdf, the paper's)")
+      ->capture_default_str()
+      ->needs(data);
+  powder->add_option("-o,--output", fit.material, "Write the fitted material (JSON scene with a preview)")
+      ->needs(data);
+  powder->add_option("--plot", fit.plot, "Plot of data and fit in the plane of incidence (PNG)")->needs(data);
+  powder->add_option("--csv", fit.csv, "Data, fit and residual per measurement (CSV)")->needs(data);
+  powder->add_flag("-q,--quiet", fit.quiet, "No progress lines on stderr while fitting")->needs(data);
+  powder
+      ->add_option("--params", synth.params,
+                   "Parameters of the synthetic data: NAME=VALUE (default: the node's)")
+      ->delimiter(',')
+      ->needs(synthesize);
+  powder
+      ->add_option("--noise", synth.noise, "Relative standard deviation of the multiplicative Gaussian noise")
+      ->capture_default_str()
+      ->needs(synthesize);
+  powder->add_option("--seed", synth.seed, "Seed of the noise")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check())
+      ->needs(synthesize);
+  CLI::Option* lambda =
+      powder->add_option("--lambda", synth.lambdas_nm, "Wavelengths of the synthetic data (nm)")
+          ->delimiter(',')
+          ->needs(synthesize);
+  powder
+      ->add_option("--geometry", synth.geometry,
+                   "Synthesize at the geometries and wavelengths of this measurements CSV")
+      ->excludes(lambda)
+      ->needs(synthesize);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  if (fit.data.empty() == synth.output.empty()) {
+    fmt::print(stderr, "ochre-fit powder: give --data MEASUREMENTS.csv (fit) or --synthesize OUT.csv\n");
+    return 2;
+  }
+  try {
+    if (!synth.output.empty()) {
+      synth.pigment = fit.pigment;
+      return ochre::run_powder_synthesize(synth);
+    }
+    return ochre::run_powder_fit(fit);
+  } catch (const ochre::InputError& e) {  // names the file and line, or the option, at fault
+    fmt::print(stderr, "ochre-fit: error: {}\n", e.what());
+    return 2;
+  } catch (const ochre::ImageError& e) {  // an output that could not be written (nothing was)
+    fmt::print(stderr, "ochre-fit: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ochre-fit: internal error: {}\n", e.what());
+    return 1;
+  }
+}
