@@ -5,6 +5,7 @@
 
 #include "ochre/version.h"
 #include "spectra/byte_size.h"
+#include "tools/merge_command.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -18,6 +19,15 @@ bool parse_resolution(const std::string& text, int& width, int& height) {
   width = std::stoi(m[1]);
   height = std::stoi(m[2]);
   return true;
+}
+
+// --memory-limit SIZE; prints the error and returns nullopt when malformed.
+std::optional<uint64_t> parse_memory_limit(const std::string& text) {
+  const auto bytes = ochre::parse_byte_size(text);
+  if (!bytes)
+    std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
+              << text << "'\n";
+  return bytes;
 }
 
 }  // namespace
@@ -73,6 +83,37 @@ int main(int argc, char** argv) {
       "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
       "(default: the machine's memory)");
 
+  std::string sample_range, part, region;
+  auto* range_opt = render->add_option(
+      "--sample-range", sample_range, "Render samples [A, B) of every pixel into partial sums (-o PART.exr)");
+  auto* part_opt =
+      render->add_option("--part", part, "Render the I-th of N equal sample ranges (I/N, from 0)")
+          ->excludes(range_opt);
+  auto* region_opt =
+      render->add_option("--region", region, "Render the pixels [x0, x1) x [y0, y1) into partial sums");
+
+  ochre::MergeCommand merge_cmd;
+  CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
+  merge->add_option("parts", merge_cmd.parts, "Partial-sum files (ochre render --sample-range/--region)")
+      ->required();
+  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)");
+  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)");
+  merge->add_option("--sums", merge_cmd.sums,
+                    "Write the merged partial sums, to merge again with more parts");
+  merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
+  merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 2 if any)");
+  merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
+  std::string merge_ocio, merge_display, merge_view, merge_memory;
+  float merge_exposure = 0.0f;
+  auto* merge_ocio_opt =
+      merge->add_option("--ocio-config", merge_ocio, "OCIO config (default: the render's)");
+  auto* merge_display_opt =
+      merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
+  auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
+  auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
+                                 ->check(CLI::Range(-64.0, 64.0));
+  auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -80,6 +121,30 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;  // --help / --version exit 0; bad usage is bad input
   }
 
+  if (app.got_subcommand(merge)) {
+    if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
+    if (*merge_display_opt) merge_cmd.display = merge_display;
+    if (*merge_view_opt) merge_cmd.view = merge_view;
+    if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
+    if (*merge_memory_opt && !(merge_cmd.memory_limit = parse_memory_limit(merge_memory))) return 2;
+    return ochre::run_merge(merge_cmd);
+  }
+
+  if (*range_opt && !(cmd.sample_range = ochre::parse_sample_range(sample_range))) {
+    std::cerr << "ochre: error: --sample-range: expected A:B with integers 0 <= A < B < 2^32, got '"
+              << sample_range << "'\n";
+    return 2;
+  }
+  if (*part_opt && !(cmd.part = ochre::parse_part(part))) {
+    std::cerr << "ochre: error: --part: expected I/N with integers 0 <= I < N, got '" << part << "'\n";
+    return 2;
+  }
+  if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region))) {
+    std::cerr
+        << "ochre: error: --region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '"
+        << region << "'\n";
+    return 2;
+  }
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
@@ -95,14 +160,7 @@ int main(int argc, char** argv) {
     cmd.overrides.width = w;
     cmd.overrides.height = h;
   }
-  if (*memory_opt) {
-    cmd.memory_limit = ochre::parse_byte_size(memory_limit);
-    if (!cmd.memory_limit) {
-      std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
-                << memory_limit << "'\n";
-      return 2;
-    }
-  }
+  if (*memory_opt && !(cmd.memory_limit = parse_memory_limit(memory_limit))) return 2;
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;
   if (*view_opt) cmd.view = view;

@@ -7,16 +7,19 @@
 #include <new>
 #include <optional>
 
-#include "materials/graph/graph_error.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/load_progress.h"
 #include "renderer/memory_budget.h"
 #include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
+#include "renderer/partial_sums.h"
 #include "renderer/progress.h"
 #include "renderer/render.h"
+#include "renderer/render_identity.h"
 #include "renderer/render_output.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/command_errors.h"
 
 namespace ochre {
 
@@ -84,16 +87,84 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   check_outputs(out);
 }
 
+// The samples and pixels this command renders: all of them, or the part that --sample-range, --part
+// and --region select (InputError naming the option when it does not fit the scene).
+struct RenderPart {
+  PixelRect rect;
+  SampleRange samples;
+};
+
+RenderPart select_part(const RenderCommand& command, const Scene& scene) {
+  const RenderSettings& s = scene.settings;
+  RenderPart part{{0, 0, s.width, s.height}, {0, s.spp}};
+  if (command.part) {
+    const auto [index, count] = *command.part;
+    if (count > s.spp)
+      throw InputError(
+          fmt::format("--part {}/{}: more parts than the {} samples per pixel of {} (integrator.spp "
+                      "or --spp)",
+                      index, count, s.spp, command.scene));
+    part.samples = part_of_samples(index, count, s.spp);
+  }
+  if (command.sample_range) {
+    if (command.sample_range->end > s.spp)
+      throw InputError(
+          fmt::format("--sample-range {}: beyond the {} samples per pixel of {} (integrator.spp or "
+                      "--spp)",
+                      format_sample_range(*command.sample_range), s.spp, command.scene));
+    part.samples = *command.sample_range;
+  }
+  if (command.region) {
+    if (!part.rect.contains(*command.region))
+      throw InputError(fmt::format("--region {}: outside the {}x{} image", format_pixel_rect(*command.region),
+                                   s.width, s.height));
+    part.rect = *command.region;
+  }
+  if (command.split() && command.exr.empty())
+    throw InputError("--sample-range, --part and --region write partial sums: give -o PART.exr");
+  return part;
+}
+
+// The header of the partial-sum file of `part` (docs/distributed.md): the render's identity, where the
+// pixels sit, the samples held, and notes for `ochre merge` (the scene, the display settings).
+PartialSumsHeader partial_header(const Scene& scene, const std::string& content_hash, const RenderPart& part,
+                                 uint32_t samples_done, const RenderStats& stats) {
+  PartialSumsHeader h;
+  h.identity = render_identity(scene, content_hash);
+  h.image_width = scene.settings.width;
+  h.image_height = scene.settings.height;
+  h.spp = scene.settings.spp;
+  h.layers = film_layers(scene.outputs);
+  h.rect = part.rect;
+  if (samples_done > part.samples.begin) h.coverage = {{part.rect, {part.samples.begin, samples_done}}};
+  h.discarded_samples = stats.discarded;
+  h.nonfinite_values = stats.nonfinite_values;
+  std::error_code error;
+  h.notes["ochre.scene"] = std::filesystem::absolute(scene.file, error).lexically_normal().string();
+  const OutputSettings& out = scene.outputs;
+  h.notes["ochre.display.ocioConfig"] = out.ocio_config;
+  h.notes["ochre.display.display"] = out.display;
+  h.notes["ochre.display.view"] = out.view;
+  h.notes["ochre.display.exposure"] = fmt::format("{}", out.exposure);
+  return h;
+}
+
 int render_scene(const RenderCommand& command, Phase& phase) {
   const auto load_start = std::chrono::steady_clock::now();
   InputFileLog inputs;
   std::unique_ptr<Scene> scene;
   {
-    const InputFileLog::Recording recording(inputs);  // every file the scene and its outputs read
+    const InputFileLog::Recording recording(inputs);  // every file the scene reads
     scene = load_scene(command.scene, command.overrides);
+  }
+  // Only parts of a split render need the content hash (it reads every input file again).
+  const std::string content_hash = command.split() ? scene_content_hash(inputs.records()) : "";
+  {
+    const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, *scene);
   }
-  const OutputSettings& out = scene->outputs;
+  const RenderPart part = select_part(command, *scene);
+  OutputSettings out = scene->outputs;
   const std::vector<std::string> paths = output_paths(out);
   check_output_files({paths.begin(), paths.end()}, inputs);
   const double load_seconds =
@@ -101,13 +172,15 @@ int render_scene(const RenderCommand& command, Phase& phase) {
 
   if (!command.quiet) {
     print_summary(*scene);
+    if (command.split())
+      std::cerr << fmt::format("ochre: rendering samples {} of region {} into partial sums\n",
+                               format_sample_range(part.samples), format_pixel_rect(part.rect));
     std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
   }
   phase = {"allocating the film", true};
-  check_render_memory(scene->settings.width, scene->settings.height, out);
-  Film film(scene->settings.width, scene->settings.height, film_layers(out));
-  const uint64_t total =
-      static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
+  check_render_memory(part.rect.width(), part.rect.height(), out);
+  Film film(part.rect.width(), part.rect.height(), film_layers(out));
+  const uint64_t total = static_cast<uint64_t>(part.rect.width()) * part.rect.height() * part.samples.size();
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
     try {
@@ -117,15 +190,28 @@ int render_scene(const RenderCommand& command, Phase& phase) {
     }
   }
   phase = {"rendering", false};
-  const RenderStats stats = render(*scene, film, [&](uint64_t done) {
+  const RenderStats stats = render_range(*scene, film, part.rect, part.samples, [&](uint64_t done) {
     if (progress) progress->advance(done);
   });
   if (progress) progress->finish();
   if (!command.quiet) print_stats(stats);
 
   phase = {"writing the outputs", true};
-  for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
-    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  OutputTransaction transaction;
+  std::vector<std::string> written;
+  if (command.split()) {
+    const PartialSumsHeader header = partial_header(*scene, content_hash, part, part.samples.end, stats);
+    write_partial_sums(transaction.add(out.exr), header, film);
+    written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {})", out.exr,
+                                  format_sample_range(part.samples), format_pixel_rect(part.rect)));
+    out.exr.clear();  // the display images of the part, when asked for, follow
+  }
+  for (const std::string& line :
+       add_outputs(transaction, film, out, scene->settings, stats, scene->file.string()))
+    written.push_back(line);
+  transaction.commit();
+  if (!command.quiet)
+    for (const std::string& line : written) std::cerr << "ochre: " << line << "\n";
   return 0;
 }
 
@@ -144,18 +230,8 @@ int run_render(const RenderCommand& command) {
     std::cerr << fmt::format("ochre: {}: {}: out of memory while {} (see --memory-limit in docs/cli.md)\n",
                              phase.from_input_size ? "error" : "internal error", command.scene, phase.what);
     return phase.from_input_size ? 2 : 1;
-  } catch (const InputError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const GraphError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const ImageError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ochre: internal error: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return report_current_exception();
   }
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "renderer/render_split.h"
 #include "renderer/scene_loader.h"
 
 namespace ochre {
@@ -22,6 +23,12 @@ struct RenderCommand {
   bool stokes = false;                        // Stokes layers in the EXR
   std::string polarization_png;               // false-colour DoLP / AoLP PNG
   std::optional<std::uint64_t> memory_limit;  // bytes (--memory-limit); default: the machine's memory
+
+  // A part of a split render (docs/distributed.md): -o then names the file of its partial sums.
+  std::optional<SampleRange> sample_range;            // --sample-range A:B
+  std::optional<std::pair<uint32_t, uint32_t>> part;  // --part I/N: the I-th of N sample ranges
+  std::optional<PixelRect> region;                    // --region x0,y0,x1,y1
+  bool split() const { return sample_range || part || region; }
 };
 
 int run_render(const RenderCommand& command);
