@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -18,8 +19,11 @@
 #include "renderer/render.h"
 #include "renderer/render_identity.h"
 #include "renderer/render_output.h"
+#include "renderer/render_passes.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/checkpoint_resume.h"
 #include "tools/command_errors.h"
+#include "tools/render_part.h"
 
 namespace ochre {
 
@@ -65,6 +69,13 @@ struct Phase {
 // transform reads the OCIO config).
 void apply_output_options(const RenderCommand& command, Scene& scene) {
   OutputSettings& out = scene.outputs;
+  if (command.split()) {
+    // A part's display images are previews, written only when asked for: the scene's own paths are for the
+    // final image, which `ochre merge` writes (with the Stokes layers a polarization PNG implies).
+    if (!out.polarization_png.empty()) out.stokes = true;
+    out.png.clear();
+    out.polarization_png.clear();
+  }
   if (!command.exr.empty()) out.exr = command.exr;
   if (!command.png.empty()) out.png = command.png;
   if (command.ocio_config) out.ocio_config = *command.ocio_config;
@@ -87,100 +98,95 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   check_outputs(out);
 }
 
-// The samples and pixels this command renders: all of them, or the part that --sample-range, --part
-// and --region select (InputError naming the option when it does not fit the scene).
-struct RenderPart {
-  PixelRect rect;
-  SampleRange samples;
+// The files of a render that checkpoints, and how it writes them.
+struct Checkpointing {
+  std::filesystem::path path;
+  const Scene* scene = nullptr;
+  std::string content_hash;
+  RenderPart part;
+  bool split = false;
+  bool preview = false;  // refresh the display PNG with each checkpoint
+  OutputSettings out;
+  uint32_t written_at = UINT32_MAX;  // the sample the last checkpoint written ends at
+
+  // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
+  void write(const Film& film, uint32_t next, const RenderStats& stats) {
+    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    add_checkpoint_notes(header, part, split, out);
+    OutputTransaction transaction;
+    write_partial_sums(transaction.add(path), header, film);
+    if (preview && !out.png.empty()) {
+      OutputSettings png_only;
+      png_only.png = out.png;
+      png_only.colorspace = out.colorspace;
+      png_only.ocio_config = out.ocio_config;
+      png_only.display = out.display;
+      png_only.view = out.view;
+      png_only.exposure = out.exposure;
+      add_outputs(transaction, film, png_only, scene->settings, stats, scene->file.string());
+    }
+    transaction.commit();
+    written_at = next;
+  }
 };
 
-RenderPart select_part(const RenderCommand& command, const Scene& scene) {
-  const RenderSettings& s = scene.settings;
-  RenderPart part{{0, 0, s.width, s.height}, {0, s.spp}};
-  if (command.part) {
-    const auto [index, count] = *command.part;
-    if (count > s.spp)
-      throw InputError(
-          fmt::format("--part {}/{}: more parts than the {} samples per pixel of {} (integrator.spp "
-                      "or --spp)",
-                      index, count, s.spp, command.scene));
-    part.samples = part_of_samples(index, count, s.spp);
-  }
-  if (command.sample_range) {
-    if (command.sample_range->end > s.spp)
-      throw InputError(
-          fmt::format("--sample-range {}: beyond the {} samples per pixel of {} (integrator.spp or "
-                      "--spp)",
-                      format_sample_range(*command.sample_range), s.spp, command.scene));
-    part.samples = *command.sample_range;
-  }
-  if (command.region) {
-    if (!part.rect.contains(*command.region))
-      throw InputError(fmt::format("--region {}: outside the {}x{} image", format_pixel_rect(*command.region),
-                                   s.width, s.height));
-    part.rect = *command.region;
-  }
-  if (command.split() && command.exr.empty())
-    throw InputError("--sample-range, --part and --region write partial sums: give -o PART.exr");
-  return part;
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The header of the partial-sum file of `part` (docs/distributed.md): the render's identity, where the
-// pixels sit, the samples held, and notes for `ochre merge` (the scene, the display settings).
-PartialSumsHeader partial_header(const Scene& scene, const std::string& content_hash, const RenderPart& part,
-                                 uint32_t samples_done, const RenderStats& stats) {
-  PartialSumsHeader h;
-  h.identity = render_identity(scene, content_hash);
-  h.image_width = scene.settings.width;
-  h.image_height = scene.settings.height;
-  h.spp = scene.settings.spp;
-  h.layers = film_layers(scene.outputs);
-  h.rect = part.rect;
-  if (samples_done > part.samples.begin) h.coverage = {{part.rect, {part.samples.begin, samples_done}}};
-  h.discarded_samples = stats.discarded;
-  h.nonfinite_values = stats.nonfinite_values;
-  std::error_code error;
-  h.notes["ochre.scene"] = std::filesystem::absolute(scene.file, error).lexically_normal().string();
-  const OutputSettings& out = scene.outputs;
-  h.notes["ochre.display.ocioConfig"] = out.ocio_config;
-  h.notes["ochre.display.display"] = out.display;
-  h.notes["ochre.display.view"] = out.view;
-  h.notes["ochre.display.exposure"] = fmt::format("{}", out.exposure);
-  return h;
-}
+int render_scene(const RenderCommand& given, Phase& phase) {
+  const auto start = std::chrono::steady_clock::now();
+  // A resumed render takes its scene, settings and outputs from the checkpoint.
+  std::optional<PartialSumsFile> resumed;
+  if (!given.resume.empty()) resumed.emplace(given.resume);
+  const RenderCommand command = resumed ? resumed_command(given, *resumed) : given;
 
-int render_scene(const RenderCommand& command, Phase& phase) {
-  const auto load_start = std::chrono::steady_clock::now();
   InputFileLog inputs;
   std::unique_ptr<Scene> scene;
   {
     const InputFileLog::Recording recording(inputs);  // every file the scene reads
     scene = load_scene(command.scene, command.overrides);
   }
-  // Only parts of a split render need the content hash (it reads every input file again).
-  const std::string content_hash = command.split() ? scene_content_hash(inputs.records()) : "";
+  // Only partial sums need the content hash (it reads every input file again).
+  const bool partial_sums = command.split() || command.checkpointing();
+  const std::string content_hash = partial_sums ? scene_content_hash(inputs.records()) : "";
   {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, *scene);
   }
+  if (resumed) check_resumable(*resumed, render_identity(*scene, content_hash));
   const RenderPart part = select_part(command, *scene);
   OutputSettings out = scene->outputs;
-  const std::vector<std::string> paths = output_paths(out);
-  check_output_files({paths.begin(), paths.end()}, inputs);
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+  Checkpointing checkpoints{command.checkpoint.empty() ? default_checkpoint_path(out) : std::filesystem::path(command.checkpoint),
+                            scene.get(), content_hash, part, command.split(), command.preview, out};
+  std::vector<std::filesystem::path> paths;
+  for (const std::string& path : output_paths(out)) paths.emplace_back(path);
+  if (command.checkpointing()) {
+    check_output_writable(checkpoints.path);
+    paths.push_back(checkpoints.path);
+  }
+  check_output_files(paths, inputs);
 
   if (!command.quiet) {
     print_summary(*scene);
     if (command.split())
       std::cerr << fmt::format("ochre: rendering samples {} of region {} into partial sums\n",
                                format_sample_range(part.samples), format_pixel_rect(part.rect));
-    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
+    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", seconds_since(start));
   }
   phase = {"allocating the film", true};
   check_render_memory(part.rect.width(), part.rect.height(), out);
-  Film film(part.rect.width(), part.rect.height(), film_layers(out));
-  const uint64_t total = static_cast<uint64_t>(part.rect.width()) * part.rect.height() * part.samples.size();
+  Film film = resumed ? resumed->read_film() : Film(part.rect.width(), part.rect.height(), film_layers(out));
+  const uint32_t first = resumed ? resume_point(*resumed, part) : part.samples.begin;
+  RenderStats stats;  // the NaN/Inf counts include the checkpoint's
+  if (resumed) {
+    stats.discarded = resumed->header().discarded_samples;
+    stats.nonfinite_values = resumed->header().nonfinite_values;
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: resuming {}: samples {}:{} of {} done\n", given.resume, part.samples.begin,
+                               first, format_sample_range(part.samples));
+  }
+  const uint64_t total = static_cast<uint64_t>(part.rect.width()) * part.rect.height() * (part.samples.end - first);
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
     try {
@@ -190,28 +196,90 @@ int render_scene(const RenderCommand& command, Phase& phase) {
     }
   }
   phase = {"rendering", false};
-  const RenderStats stats = render_range(*scene, film, part.rect, part.samples, [&](uint64_t done) {
+  const ProgressCallback advance = [&](uint64_t done) {
     if (progress) progress->advance(done);
-  });
-  if (progress) progress->finish();
+  };
+  uint32_t next = part.samples.end;
+  PassStop stop = PassStop::finished;
+  if (!command.checkpointing()) {
+    stats.add(render_range(*scene, film, part.rect, {first, part.samples.end}, advance));
+  } else {
+    GracefulStop signals;  // the first SIGINT / SIGTERM ends the render at a pass boundary
+    PassSchedule schedule;
+    schedule.checkpoint_interval = command.checkpoint_interval.value_or(0.0);
+    if (command.time_limit) {
+      // Writing the image and the checkpoint follows the last pass: about 1 us per pixel and 5 accumulators
+      // (docs/distributed.md, Figures), reserved so that the command ends before the limit.
+      const double reserve = 0.5 + 2e-7 * part.rect.width() * part.rect.height() * film.accumulator_names().size();
+      schedule.deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(*command.time_limit - reserve));
+    }
+    const RenderStats before = stats;
+    const PassResult result = render_in_passes(
+        *scene, film, part.rect, {first, part.samples.end}, schedule, advance,
+        [&](uint32_t at, const RenderStats& passes) {
+          RenderStats so_far = before;
+          so_far.add(passes);
+          checkpoints.write(film, at, so_far);
+        },
+        [] { return GracefulStop::requested_signal() != 0; });
+    stats.add(result.stats);
+    next = result.next;
+    stop = result.stop;
+    if (stop == PassStop::stop_requested) {
+      if (checkpoints.written_at != next) checkpoints.write(film, next, stats);
+      if (!command.quiet)
+        std::cerr << fmt::format("\nochre: stopped by a signal after samples {}:{}; wrote {}; continue with: ochre "
+                                 "render --resume {}\n",
+                                 part.samples.begin, next, checkpoints.path.string(), checkpoints.path.string());
+      progress.reset();
+      signals.end_by_signal();
+    }
+  }
+  if (progress && stop == PassStop::finished) progress->finish();
+  progress.reset();
   if (!command.quiet) print_stats(stats);
 
   phase = {"writing the outputs", true};
   OutputTransaction transaction;
   std::vector<std::string> written;
-  if (command.split()) {
-    const PartialSumsHeader header = partial_header(*scene, content_hash, part, part.samples.end, stats);
+  if (stop == PassStop::deadline) {
+    // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
+    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    add_checkpoint_notes(header, part, command.split(), out);
+    write_partial_sums(transaction.add(checkpoints.path), header, film);
+    written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {})", checkpoints.path.string(),
+                                  part.samples.begin, next, format_sample_range(part.samples)));
+    if (command.split()) out.exr.clear();
+  } else if (command.split()) {
+    const PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
     write_partial_sums(transaction.add(out.exr), header, film);
     written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {})", out.exr,
                                   format_sample_range(part.samples), format_pixel_rect(part.rect)));
     out.exr.clear();  // the display images of the part, when asked for, follow
   }
-  for (const std::string& line :
-       add_outputs(transaction, film, out, scene->settings, stats, scene->file.string()))
-    written.push_back(line);
+  RenderSettings done = scene->settings;  // the EXR header names the samples it holds
+  done.sample_begin = part.samples.begin;
+  done.spp = next - part.samples.begin;
+  if (!out.exr.empty() || !out.png.empty() || !out.polarization_png.empty())
+    for (const std::string& line : add_outputs(transaction, film, out, done, stats, scene->file.string()))
+      written.push_back(line);
   transaction.commit();
   if (!command.quiet)
     for (const std::string& line : written) std::cerr << "ochre: " << line << "\n";
+  if (stop == PassStop::deadline) {
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: time limit reached; continue with: ochre render --resume {}\n",
+                               checkpoints.path.string());
+    return 3;
+  }
+  // Finished: the checkpoint (this render's, or the one resumed) has served.
+  std::error_code error;
+  const bool ours = checkpoints.written_at != UINT32_MAX || resumed;
+  if (ours && std::filesystem::exists(checkpoints.path, error) &&
+      !std::filesystem::remove(checkpoints.path, error) && !command.quiet)
+    std::cerr << fmt::format("ochre: warning: could not remove the checkpoint {}: {}\n", checkpoints.path.string(),
+                             error.message());
   return 0;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code:
-// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error.
+// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error,
+// 3 stopped at --time-limit with the image of the samples done and a checkpoint written.
 
 #include <cstdint>
 #include <optional>
@@ -29,6 +30,14 @@ struct RenderCommand {
   std::optional<std::pair<uint32_t, uint32_t>> part;  // --part I/N: the I-th of N sample ranges
   std::optional<PixelRect> region;                    // --region x0,y0,x1,y1
   bool split() const { return sample_range || part || region; }
+
+  // Checkpoints (docs/distributed.md): on when any of these is given.
+  std::string checkpoint;                     // --checkpoint FILE (default: beside the first output)
+  std::optional<double> checkpoint_interval;  // --checkpoint-interval, seconds
+  std::optional<double> time_limit;           // --time-limit, seconds from the start of the command
+  std::string resume;                         // --resume CHECKPOINT
+  bool preview = false;                       // --preview: refresh the PNG at each checkpoint
+  bool checkpointing() const { return !checkpoint.empty() || checkpoint_interval || time_limit || !resume.empty(); }
 };
 
 int run_render(const RenderCommand& command);

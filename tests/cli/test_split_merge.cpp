@@ -59,7 +59,7 @@ TEST(SplitMerge, SampleRangesMergeToTheSingleRenderWithAovsAndSpectralLayers) {
 TEST(SplitMerge, PartsMergeToTheSingleRenderWithStokesAndSpectralStokesLayers) {
   const fs::path dir = scratch_dir();
   const std::string layers = kSmall + " --stokes --spectral-bins 3";
-  render(dir, kPolarized, layers + " -o single.exr");
+  render(dir, kPolarized, layers + " -o single.exr --png single.png");  // not the scene's PNG path
   for (int i = 0; i < 3; ++i)
     render(dir, kPolarized, layers + " --part " + std::to_string(i) + "/3 -o p" + std::to_string(i) + ".exr");
   const CommandResult r = merge(dir, "p0.exr p1.exr p2.exr -o merged.exr");
@@ -69,7 +69,7 @@ TEST(SplitMerge, PartsMergeToTheSingleRenderWithStokesAndSpectralStokesLayers) {
 
 TEST(SplitMerge, RegionsMergeByPlacementAlsoCombinedWithSampleRanges) {
   const fs::path dir = scratch_dir();
-  render(dir, kCornell, kSmall + " --aovs -o single.exr");
+  render(dir, kCornell, kSmall + " --aovs -o single.exr --png single.png");
   render(dir, kCornell, kSmall + " --aovs --region 0,0,17,11 -o r0.exr");
   render(dir, kCornell, kSmall + " --aovs --region 17,0,40,11 -o r1.exr");
   render(dir, kCornell, kSmall + " --aovs --region 0,11,40,28 --sample-range 0:3 -o r2.exr");
@@ -81,7 +81,7 @@ TEST(SplitMerge, RegionsMergeByPlacementAlsoCombinedWithSampleRanges) {
 
 TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
   const fs::path dir = scratch_dir();
-  render(dir, kCornell, kSmall + " -o single.exr");
+  render(dir, kCornell, kSmall + " -o single.exr --png single.png");
   for (int i = 0; i < 4; ++i)
     render(dir, kCornell, kSmall + " --part " + std::to_string(i) + "/4 -o p" + std::to_string(i) + ".exr");
   ASSERT_EQ(merge(dir, "p0.exr p2.exr --sums s02.exr").exit_code, 0);
@@ -98,7 +98,7 @@ TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
 // the samples; without --partial the missing samples are an error and nothing is written.
 TEST(SplitMerge, PartialMergeIsTheLowerSampleImageAndNeedsTheFlag) {
   const fs::path dir = scratch_dir();
-  render(dir, kCornell, "--resolution 40x28 --spp 6 -q -o half.exr");
+  render(dir, kCornell, "--resolution 40x28 --spp 6 -q -o half.exr --png half.png");
   render(dir, kCornell, kSmall + " --sample-range 0:4 -o a.exr");
   render(dir, kCornell, kSmall + " --sample-range 4:6 -o b.exr");
   write_old_file(dir / "merged.exr", "previous");
@@ -206,7 +206,7 @@ TEST_F(BadParts, AMalformedField) {
 }
 
 TEST_F(BadParts, AnEXRThatIsNotAPart) {
-  render(dir, kCornell, kSmall + " -o image.exr");
+  render(dir, kCornell, kSmall + " -o image.exr --png image.png");
   expect_refused("p0.exr image.exr", "image.exr: ochre.partialSums: missing: not a partial-sum file");
 }
 
