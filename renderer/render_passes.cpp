@@ -45,7 +45,8 @@ PassResult render_in_passes(const Scene& scene, Film& film, const PixelRect& rec
     }
     if (schedule.deadline) {
       const double left = seconds_between(now, *schedule.deadline);
-      const uint32_t fit = seconds_per_sample > 0.0 ? samples_in(left, seconds_per_sample) : (left > 0.0 ? 1 : 0);
+      const uint32_t fit =
+          seconds_per_sample > 0.0 ? samples_in(left, seconds_per_sample) : (left > 0.0 ? 1 : 0);
       if (fit == 0) {
         result.stop = PassStop::deadline;
         return result;

@@ -17,8 +17,8 @@ namespace ochre {
 
 struct PassSchedule {
   using Clock = std::chrono::steady_clock;
-  double pass_seconds = 1.0;                 // aimed duration of a pass
-  double checkpoint_interval = 0.0;          // seconds between checkpoints; 0: none on the way
+  double pass_seconds = 1.0;                  // aimed duration of a pass
+  double checkpoint_interval = 0.0;           // seconds between checkpoints; 0: none on the way
   std::optional<Clock::time_point> deadline;  // no pass may end after it (--time-limit)
 };
 

@@ -24,9 +24,10 @@ const std::string& note(const PartialSumsFile& checkpoint, const std::string& na
   const auto& notes = checkpoint.header().notes;
   const auto it = notes.find(name);
   if (it == notes.end())
-    throw InputError(fmt::format("{}: {}: missing: not a checkpoint of ochre render (a part of a split render "
-                                 "is merged with ochre merge, not resumed)",
-                                 checkpoint.path().string(), name));
+    throw InputError(
+        fmt::format("{}: {}: missing: not a checkpoint of ochre render (a part of a split render "
+                    "is merged with ochre merge, not resumed)",
+                    checkpoint.path().string(), name));
   return it->second;
 }
 
@@ -44,7 +45,8 @@ T number(const PartialSumsFile& checkpoint, const std::string& name) {
 
 }  // namespace
 
-void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split, const OutputSettings& out) {
+void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
+                          const OutputSettings& out) {
   header.notes["ochre.checkpoint.target"] = format_sample_range(part.samples);
   header.notes["ochre.checkpoint.partialSums"] = std::string(split ? "1" : "0");
   header.notes["ochre.checkpoint.exr"] = absolute_or_empty(out.exr);

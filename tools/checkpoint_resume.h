@@ -15,7 +15,8 @@ struct OutputSettings;
 
 // Records the resume notes in a checkpoint's header: the samples aimed at (`part`), whether the outputs
 // are partial sums (`split`), the output paths (absolute).
-void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split, const OutputSettings& out);
+void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
+                          const OutputSettings& out);
 
 // The command a checkpoint continues: its scene (unless `given` names the scene at another path),
 // settings, layers and outputs, with what the resuming command line may set (outputs, display, threads,

@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
   std::string polarization, sampler;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
-  render->add_option("scene", cmd.scene, "Scene file (JSON, docs/scene-format.md); with --resume: the scene moved");
+  render->add_option("scene", cmd.scene,
+                     "Scene file (JSON, docs/scene-format.md); with --resume: the scene moved");
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
   render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
@@ -99,8 +100,9 @@ int main(int argc, char** argv) {
                      "Checkpoint file (default: beside the output, NAME.checkpoint.exr)");
   auto* interval_opt = render->add_option("--checkpoint-interval", checkpoint_interval,
                                           "Write a checkpoint every DURATION (e.g. 600, 10m, 1h30m)");
-  auto* time_limit_opt = render->add_option(
-      "--time-limit", time_limit, "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
+  auto* time_limit_opt =
+      render->add_option("--time-limit", time_limit,
+                         "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
   auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds");
   render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
 
@@ -145,19 +147,21 @@ int main(int argc, char** argv) {
   for (auto [option, text, value] : {std::tuple{interval_opt, &checkpoint_interval, &cmd.checkpoint_interval},
                                      std::tuple{time_limit_opt, &time_limit, &cmd.time_limit}})
     if (*option && !(*value = ochre::parse_duration(*text))) {
-      std::cerr << "ochre: error: " << option->get_name() << ": expected a duration such as 90, 90s, 10m, 1h30m or "
+      std::cerr << "ochre: error: " << option->get_name()
+                << ": expected a duration such as 90, 90s, 10m, 1h30m or "
                 << "1.5h (at most a year), got '" << *text << "'\n";
       return 2;
     }
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
-    for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt, part_opt,
-                                     region_opt, render->get_option("--spectral-bins"), render->get_option("--aovs"),
-                                     render->get_option("--stokes")})
+    for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt,
+                                     part_opt, region_opt, render->get_option("--spectral-bins"),
+                                     render->get_option("--aovs"), render->get_option("--stokes")})
       if (*fixed) {
-        std::cerr << "ochre: error: " << fixed->get_name()
-                  << ": a resumed render keeps the settings of its checkpoint (give only outputs, display and "
-                     "checkpoint options, --threads, --memory-limit, -q)\n";
+        std::cerr
+            << "ochre: error: " << fixed->get_name()
+            << ": a resumed render keeps the settings of its checkpoint (give only outputs, display and "
+               "checkpoint options, --threads, --memory-limit, -q)\n";
         return 2;
       }
   } else if (cmd.scene.empty()) {

@@ -157,8 +157,14 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   if (resumed) check_resumable(*resumed, render_identity(*scene, content_hash));
   const RenderPart part = select_part(command, *scene);
   OutputSettings out = scene->outputs;
-  Checkpointing checkpoints{command.checkpoint.empty() ? default_checkpoint_path(out) : std::filesystem::path(command.checkpoint),
-                            scene.get(), content_hash, part, command.split(), command.preview, out};
+  Checkpointing checkpoints{
+      command.checkpoint.empty() ? default_checkpoint_path(out) : std::filesystem::path(command.checkpoint),
+      scene.get(),
+      content_hash,
+      part,
+      command.split(),
+      command.preview,
+      out};
   std::vector<std::filesystem::path> paths;
   for (const std::string& path : output_paths(out)) paths.emplace_back(path);
   if (command.checkpointing()) {
@@ -183,10 +189,11 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     stats.discarded = resumed->header().discarded_samples;
     stats.nonfinite_values = resumed->header().nonfinite_values;
     if (!command.quiet)
-      std::cerr << fmt::format("ochre: resuming {}: samples {}:{} of {} done\n", given.resume, part.samples.begin,
-                               first, format_sample_range(part.samples));
+      std::cerr << fmt::format("ochre: resuming {}: samples {}:{} of {} done\n", given.resume,
+                               part.samples.begin, first, format_sample_range(part.samples));
   }
-  const uint64_t total = static_cast<uint64_t>(part.rect.width()) * part.rect.height() * (part.samples.end - first);
+  const uint64_t total =
+      static_cast<uint64_t>(part.rect.width()) * part.rect.height() * (part.samples.end - first);
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
     try {
@@ -210,7 +217,8 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     if (command.time_limit) {
       // Writing the image and the checkpoint follows the last pass: about 1 us per pixel and 5 accumulators
       // (docs/distributed.md, Figures), reserved so that the command ends before the limit.
-      const double reserve = 0.5 + 2e-7 * part.rect.width() * part.rect.height() * film.accumulator_names().size();
+      const double reserve =
+          0.5 + 2e-7 * part.rect.width() * part.rect.height() * film.accumulator_names().size();
       schedule.deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(*command.time_limit - reserve));
     }
@@ -229,9 +237,10 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     if (stop == PassStop::stop_requested) {
       if (checkpoints.written_at != next) checkpoints.write(film, next, stats);
       if (!command.quiet)
-        std::cerr << fmt::format("\nochre: stopped by a signal after samples {}:{}; wrote {}; continue with: ochre "
-                                 "render --resume {}\n",
-                                 part.samples.begin, next, checkpoints.path.string(), checkpoints.path.string());
+        std::cerr << fmt::format(
+            "\nochre: stopped by a signal after samples {}:{}; wrote {}; continue with: ochre "
+            "render --resume {}\n",
+            part.samples.begin, next, checkpoints.path.string(), checkpoints.path.string());
       progress.reset();
       signals.end_by_signal();
     }
@@ -278,8 +287,8 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   const bool ours = checkpoints.written_at != UINT32_MAX || resumed;
   if (ours && std::filesystem::exists(checkpoints.path, error) &&
       !std::filesystem::remove(checkpoints.path, error) && !command.quiet)
-    std::cerr << fmt::format("ochre: warning: could not remove the checkpoint {}: {}\n", checkpoints.path.string(),
-                             error.message());
+    std::cerr << fmt::format("ochre: warning: could not remove the checkpoint {}: {}\n",
+                             checkpoints.path.string(), error.message());
   return 0;
 }
 

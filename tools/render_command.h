@@ -37,7 +37,9 @@ struct RenderCommand {
   std::optional<double> time_limit;           // --time-limit, seconds from the start of the command
   std::string resume;                         // --resume CHECKPOINT
   bool preview = false;                       // --preview: refresh the PNG at each checkpoint
-  bool checkpointing() const { return !checkpoint.empty() || checkpoint_interval || time_limit || !resume.empty(); }
+  bool checkpointing() const {
+    return !checkpoint.empty() || checkpoint_interval || time_limit || !resume.empty();
+  }
 };
 
 int run_render(const RenderCommand& command);

@@ -56,9 +56,11 @@ PartialSumsHeader partial_header(const Scene& scene, const std::string& content_
   std::error_code error;
   h.notes["ochre.scene"] = std::filesystem::absolute(scene.file, error).lexically_normal().string();
   const OutputSettings& out = scene.outputs;
-  const bool config_path = !out.ocio_config.empty() && out.ocio_config != "builtin" && out.ocio_config != "none";
+  const bool config_path =
+      !out.ocio_config.empty() && out.ocio_config != "builtin" && out.ocio_config != "none";
   h.notes["ochre.display.ocioConfig"] =
-      config_path ? std::filesystem::absolute(out.ocio_config, error).lexically_normal().string() : out.ocio_config;
+      config_path ? std::filesystem::absolute(out.ocio_config, error).lexically_normal().string()
+                  : out.ocio_config;
   h.notes["ochre.display.display"] = out.display;
   h.notes["ochre.display.view"] = out.view;
   h.notes["ochre.display.exposure"] = fmt::format("{}", out.exposure);

@@ -43,7 +43,8 @@ void expect_stopped_by_signal_then_resumed(int signal_number) {
   const pid_t pid = start_tool(dir, "ochre",
                                "render " + scene(kPolarized) + " " + kLayers +
                                    " --spp 300 -o out.exr --png out.png --checkpoint-interval 0.2 --preview");
-  ASSERT_TRUE(wait_until(pid, [&] { return fs::exists(dir / "out.checkpoint.exr"); })) << "no checkpoint seen";
+  ASSERT_TRUE(wait_until(pid, [&] { return fs::exists(dir / "out.checkpoint.exr"); }))
+      << "no checkpoint seen";
   ASSERT_EQ(::kill(pid, signal_number), 0);
   const int status = wait_for(pid);
   ASSERT_TRUE(WIFSIGNALED(status)) << "ochre must end by the signal, status " << status;
@@ -75,10 +76,12 @@ TEST(Checkpoint, SigintMidRenderThenResumeGivesTheUninterruptedBits) {
 // checkpoint; resuming (again under a limit, then without) finishes the render.
 TEST(Checkpoint, TimeLimitStopsWithAValidImageAndACheckpoint) {
   const fs::path dir = scratch_dir();
-  const std::string args = "render " + scene("cornell-box.json") + " --resolution 64x64 --spp 4000 -o out.exr --png out.png";
+  const std::string args =
+      "render " + scene("cornell-box.json") + " --resolution 64x64 --spp 4000 -o out.exr --png out.png";
   const CommandResult stopped = run_ochre(args + " --time-limit 1.5", dir);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
-  EXPECT_TRUE(contains(stopped.output, "time limit reached; continue with: ochre render --resume out.checkpoint.exr"))
+  EXPECT_TRUE(
+      contains(stopped.output, "time limit reached; continue with: ochre render --resume out.checkpoint.exr"))
       << stopped.output;
   const ExrImage image = read_exr(dir / "out.exr");
   const std::string range = image.string_attributes.at("ochre.sampleRange");  // "0-N"
@@ -99,7 +102,8 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
   const std::string cornell = scene("cornell-box.json") + " --resolution 40x24 --spp 600 -q";
   ASSERT_EQ(run_ochre("render " + cornell + " -o single.exr --png single.png", dir).exit_code, 0);
   ASSERT_EQ(run_ochre("render " + cornell + " --part 0/2 -o p0.exr", dir).exit_code, 0);
-  const CommandResult stopped = run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 1.5", dir);
+  const CommandResult stopped =
+      run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 1.5", dir);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
   EXPECT_FALSE(fs::exists(dir / "p1.exr")) << "a part's partial sums are written when complete";
   ASSERT_TRUE(fs::exists(dir / "p1.checkpoint.exr"));
@@ -116,9 +120,10 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
 class BadResume : public ::testing::Test {
  protected:
   void SetUp() override {
-    const CommandResult r = run_ochre("render '" + (copy / "cornell-box.json").string() +
-                                          "' --resolution 32x16 --spp 100000 -o out.exr --png out.png --time-limit 0.6",
-                                      dir);
+    const CommandResult r =
+        run_ochre("render '" + (copy / "cornell-box.json").string() +
+                      "' --resolution 32x16 --spp 100000 -o out.exr --png out.png --time-limit 0.6",
+                  dir);
     ASSERT_EQ(r.exit_code, 3) << r.output;
     ASSERT_TRUE(fs::exists(dir / "out.checkpoint.exr"));
     before = snapshot(dir / "out.exr");
@@ -143,23 +148,26 @@ TEST_F(BadResume, AMissingCheckpoint) {
 }
 
 TEST_F(BadResume, APartIsNotACheckpoint) {
-  ASSERT_EQ(run_ochre("render '" + (copy / "cornell-box.json").string() + "' --resolution 32x16 --spp 2 --part 0/2 -o part.exr -q", dir)
+  ASSERT_EQ(run_ochre("render '" + (copy / "cornell-box.json").string() +
+                          "' --resolution 32x16 --spp 2 --part 0/2 -o part.exr -q",
+                      dir)
                 .exit_code,
             0);
   expect_refused("--resume part.exr", "part.exr: ochre.checkpoint.target: missing: not a checkpoint");
 }
 
 TEST_F(BadResume, SettingsThatChangeTheImage) {
-  expect_refused("--resume out.checkpoint.exr --spp 5", "--spp: a resumed render keeps the settings of its checkpoint");
+  expect_refused("--resume out.checkpoint.exr --spp 5",
+                 "--spp: a resumed render keeps the settings of its checkpoint");
   expect_refused("--resume out.checkpoint.exr --aovs", "--aovs: a resumed render keeps the settings");
   expect_refused("--resume out.checkpoint.exr --part 0/2", "--part: a resumed render keeps the settings");
 }
 
 TEST_F(BadResume, AReferencedFileChangedSinceTheCheckpoint) {
   std::ofstream(copy / "spectra/red.csv", std::ios::app) << "701,0.6\n";
+  expect_refused("--resume out.checkpoint.exr", "out.checkpoint.exr: ochre.sceneHash: '");
   expect_refused("--resume out.checkpoint.exr",
-                 "out.checkpoint.exr: ochre.sceneHash: '");
-  expect_refused("--resume out.checkpoint.exr", "the scene or a file it references changed since the checkpoint");
+                 "the scene or a file it references changed since the checkpoint");
 }
 
 TEST_F(BadResume, ADamagedCheckpoint) {
@@ -171,8 +179,9 @@ TEST_F(BadResume, ADamagedCheckpoint) {
 
 TEST(CheckpointOptions, MalformedDurationsAndAMissingSceneAreRefused) {
   const fs::path dir = scratch_dir();
-  for (const std::string& args : {std::string("--time-limit 0"), std::string("--time-limit 5x"),
-                                  std::string("--checkpoint-interval -3"), std::string("--checkpoint-interval 1h30")}) {
+  for (const std::string& args :
+       {std::string("--time-limit 0"), std::string("--time-limit 5x"),
+        std::string("--checkpoint-interval -3"), std::string("--checkpoint-interval 1h30")}) {
     const CommandResult r = run_ochre("render " + scene("cornell-box.json") + " -o out.exr " + args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
     EXPECT_TRUE(contains(r.output, "expected a duration such as 90, 90s, 10m, 1h30m")) << r.output;

@@ -32,12 +32,13 @@ TEST(RenderPasses, AStopRequestEndsAtAPassBoundaryThatResumesBitForBit) {
   PassSchedule one_sample_passes;
   one_sample_passes.pass_seconds = 1e-9;
   const PassResult first = render_in_passes(
-      *scene, passes, rect, {2, 9}, one_sample_passes, {}, [](uint32_t, const RenderStats&) { FAIL() << "no interval"; },
-      [&] { return ++asked > 2; });
+      *scene, passes, rect, {2, 9}, one_sample_passes, {},
+      [](uint32_t, const RenderStats&) { FAIL() << "no interval"; }, [&] { return ++asked > 2; });
   EXPECT_EQ(first.stop, PassStop::stop_requested);
   EXPECT_EQ(first.next, 4u);  // two passes of one sample
   EXPECT_EQ(passes.sample_count(0, 0), first.next - 2);
-  const PassResult rest = render_in_passes(*scene, passes, rect, {first.next, 9}, {}, {}, {}, [] { return false; });
+  const PassResult rest =
+      render_in_passes(*scene, passes, rect, {first.next, 9}, {}, {}, {}, [] { return false; });
   EXPECT_EQ(rest.stop, PassStop::finished);
   EXPECT_EQ(rest.next, 9u);
   expect_same_film(whole, passes);
@@ -81,8 +82,8 @@ TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
   EXPECT_EQ(parse_duration("1.5h"), 5400.0);
   EXPECT_EQ(parse_duration("1h30m"), 5400.0);
   EXPECT_EQ(parse_duration("2h0m5s"), 7205.0);
-  for (const char* bad : {"", "0", "0s", "-5", "5x", "m", "1m2h", "1h1h", "1h30", "1e3", "0x10", " 5", "5 ", "inf",
-                          "nan", "400d", "9000h"})
+  for (const char* bad : {"", "0", "0s", "-5", "5x", "m", "1m2h", "1h1h", "1h30", "1e3", "0x10", " 5", "5 ",
+                          "inf", "nan", "400d", "9000h"})
     EXPECT_FALSE(parse_duration(bad)) << bad;
 }
 
