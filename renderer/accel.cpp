@@ -273,8 +273,7 @@ TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   t.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
   const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
   // A point of the triangle is no farther from a corner than the longest edge.
-  const float reach =
-      std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
+  const float reach = std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
   t.p_error =
       (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
   const Vec3 n = cross(e1, e2);

@@ -28,7 +28,7 @@ struct OutputSettings {
   std::string display, view;          // OCIO display and view ("" = the config's defaults)
   float exposure = 0.0f;              // stops applied to the display image only
   bool aovs = false;
-  bool stokes = false;           // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
+  bool stokes = false;  // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
   std::string polarization_png;  // false-colour PNG of DoLP / AoLP (empty = none)
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
   float spectral_min = 360.0f,
