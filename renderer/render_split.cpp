@@ -63,6 +63,28 @@ std::optional<std::pair<uint32_t, uint32_t>> parse_part(std::string_view text) {
   return std::pair{static_cast<uint32_t>(*index), static_cast<uint32_t>(*count)};
 }
 
+std::optional<GridTile> parse_grid_tile(std::string_view text) {
+  const std::vector<std::string_view> fields = split(text, '/');
+  if (fields.size() != 2) return std::nullopt;
+  const std::vector<std::string_view> grid = split(fields[1], 'x');
+  if (grid.size() != 2) return std::nullopt;
+  const auto index = parse_count(fields[0], kMaxCoordinate);
+  const auto columns = parse_count(grid[0], kMaxCoordinate), rows = parse_count(grid[1], kMaxCoordinate);
+  if (!index || !columns || !rows || *columns < 1 || *rows < 1 || *index >= *columns * *rows)
+    return std::nullopt;
+  return GridTile{static_cast<uint32_t>(*index), static_cast<uint32_t>(*columns),
+                  static_cast<uint32_t>(*rows)};
+}
+
+PixelRect tile_rect(const GridTile& tile, int width, int height) {
+  const auto bound = [](uint64_t i, uint64_t size, uint64_t count) {
+    return static_cast<int>(i * size / count);
+  };
+  const uint32_t column = tile.index % tile.columns, row = tile.index / tile.columns;
+  return {bound(column, width, tile.columns), bound(row, height, tile.rows),
+          bound(column + 1, width, tile.columns), bound(row + 1, height, tile.rows)};
+}
+
 std::string format_sample_range(const SampleRange& range) {
   return fmt::format("{}:{}", range.begin, range.end);
 }

@@ -36,6 +36,16 @@ std::optional<PixelRect> parse_pixel_rect(std::string_view text);
 // "I/N" with 0 <= I < N: the I-th of N parts.
 std::optional<std::pair<uint32_t, uint32_t>> parse_part(std::string_view text);
 
+// Tile `index` (row by row from the top left, from 0) of a grid of `columns` x `rows` tiles.
+struct GridTile {
+  uint32_t index = 0, columns = 1, rows = 1;
+};
+// "I/CxR" with C, R >= 1 and 0 <= I < C R; nullopt otherwise.
+std::optional<GridTile> parse_grid_tile(std::string_view text);
+// The pixels of the tile in a width x height image: columns [c W / C, (c + 1) W / C), rows likewise; the
+// tiles of a grid cover the image exactly once. Empty when the grid has more columns or rows than pixels.
+PixelRect tile_rect(const GridTile& tile, int width, int height);
+
 std::string format_sample_range(const SampleRange& range);  // "A:B"
 std::string format_pixel_rect(const PixelRect& rect);       // "x0,y0,x1,y1"
 

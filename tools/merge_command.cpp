@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -13,6 +14,7 @@
 #include "renderer/output_files.h"
 #include "renderer/output_transaction.h"
 #include "renderer/partial_sums.h"
+#include "renderer/progress.h"
 #include "renderer/render_output.h"
 #include "renderer/signal_cleanup.h"
 #include "tools/command_errors.h"
@@ -144,6 +146,7 @@ int merge(const MergeCommand& command) {
         film_description(rect.width(), rect.height(), first.layers));
   Film film(rect.width(), rect.height(), first.layers);
   RenderStats stats;
+  const auto read_start = std::chrono::steady_clock::now();
   for (const PartialSumsFile& part : parts) {
     const PixelRect& r = part.header().rect;
     part.add_to(film, r.x0 - rect.x0, r.y0 - rect.y0);
@@ -151,16 +154,19 @@ int merge(const MergeCommand& command) {
     stats.nonfinite_values += part.header().nonfinite_values;
   }
 
+  std::vector<std::string> written = {
+      fmt::format("added the sums of {} parts in {:.2f} s", parts.size(), seconds_since(read_start))};
   OutputTransaction transaction;
-  std::vector<std::string> written;
   if (!command.sums.empty()) {
+    const auto write_start = std::chrono::steady_clock::now();
     PartialSumsHeader merged = first;
     merged.rect = rect;
     merged.coverage = simplify_coverage(pieces);
     merged.discarded_samples = stats.discarded;
     merged.nonfinite_values = stats.nonfinite_values;
     write_partial_sums(transaction.add(command.sums), merged, film);
-    written.push_back(fmt::format("wrote {} (partial sums of {} parts)", command.sums, parts.size()));
+    written.push_back(fmt::format("wrote {} (partial sums of {} parts, {:.2f} s)", command.sums, parts.size(),
+                                  seconds_since(write_start)));
   }
   if (final_image)
     for (const std::string& line :

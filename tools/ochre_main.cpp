@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
       "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
       "(default: the machine's memory)");
 
-  std::string sample_range, part, region;
+  std::string sample_range, part, region, tile;
   auto* range_opt = render->add_option(
       "--sample-range", sample_range, "Render samples [A, B) of every pixel into partial sums (-o PART.exr)");
   auto* part_opt =
@@ -94,6 +94,9 @@ int main(int argc, char** argv) {
           ->excludes(range_opt);
   auto* region_opt =
       render->add_option("--region", region, "Render the pixels [x0, x1) x [y0, y1) into partial sums");
+  auto* tile_opt =
+      render->add_option("--tile", tile, "Render tile I (from 0, row by row) of a C x R grid (I/CxR)")
+          ->excludes(region_opt);
 
   std::string checkpoint_interval, time_limit;
   render->add_option("--checkpoint", cmd.checkpoint,
@@ -155,7 +158,7 @@ int main(int argc, char** argv) {
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt,
-                                     part_opt, region_opt, render->get_option("--spectral-bins"),
+                                     part_opt, region_opt, tile_opt, render->get_option("--spectral-bins"),
                                      render->get_option("--aovs"), render->get_option("--stokes")})
       if (*fixed) {
         std::cerr
@@ -175,6 +178,11 @@ int main(int argc, char** argv) {
   }
   if (*part_opt && !(cmd.part = ochre::parse_part(part))) {
     std::cerr << "ochre: error: --part: expected I/N with integers 0 <= I < N, got '" << part << "'\n";
+    return 2;
+  }
+  if (*tile_opt && !(cmd.tile = ochre::parse_grid_tile(tile))) {
+    std::cerr << "ochre: error: --tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '"
+              << tile << "'\n";
     return 2;
   }
   if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region))) {

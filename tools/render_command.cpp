@@ -130,10 +130,6 @@ struct Checkpointing {
   }
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 int render_scene(const RenderCommand& given, Phase& phase) {
   const auto start = std::chrono::steady_clock::now();
   // A resumed render takes its scene, settings and outputs from the checkpoint.
@@ -256,15 +252,19 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
     PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
     add_checkpoint_notes(header, part, command.split(), out);
+    const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(checkpoints.path), header, film);
-    written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {})", checkpoints.path.string(),
-                                  part.samples.begin, next, format_sample_range(part.samples)));
+    written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {}, {:.2f} s)",
+                                  checkpoints.path.string(), part.samples.begin, next,
+                                  format_sample_range(part.samples), seconds_since(write_start)));
     if (command.split()) out.exr.clear();
   } else if (command.split()) {
     const PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(out.exr), header, film);
-    written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {})", out.exr,
-                                  format_sample_range(part.samples), format_pixel_rect(part.rect)));
+    written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {}, {:.2f} s)", out.exr,
+                                  format_sample_range(part.samples), format_pixel_rect(part.rect),
+                                  seconds_since(write_start)));
     out.exr.clear();  // the display images of the part, when asked for, follow
   }
   RenderSettings done = scene->settings;  // the EXR header names the samples it holds

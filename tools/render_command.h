@@ -29,7 +29,8 @@ struct RenderCommand {
   std::optional<SampleRange> sample_range;            // --sample-range A:B
   std::optional<std::pair<uint32_t, uint32_t>> part;  // --part I/N: the I-th of N sample ranges
   std::optional<PixelRect> region;                    // --region x0,y0,x1,y1
-  bool split() const { return sample_range || part || region; }
+  std::optional<GridTile> tile;                       // --tile I/CxR: a region of a grid of tiles
+  bool split() const { return sample_range || part || region || tile; }
 
   // Checkpoints (docs/distributed.md): on when any of these is given.
   std::string checkpoint;                     // --checkpoint FILE (default: beside the first output)

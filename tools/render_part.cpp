@@ -36,8 +36,15 @@ RenderPart select_part(const RenderCommand& command, const Scene& scene) {
                                    s.width, s.height));
     part.rect = *command.region;
   }
+  if (command.tile) {
+    const GridTile& t = *command.tile;
+    part.rect = tile_rect(t, s.width, s.height);
+    if (part.rect.empty())
+      throw InputError(fmt::format("--tile {}/{}x{}: more columns or rows than the {}x{} image has pixels",
+                                   t.index, t.columns, t.rows, s.width, s.height));
+  }
   if (command.split() && command.exr.empty())
-    throw InputError("--sample-range, --part and --region write partial sums: give -o PART.exr");
+    throw InputError("--sample-range, --part, --region and --tile write partial sums: give -o PART.exr");
   return part;
 }
 

@@ -37,12 +37,12 @@ void render_reference(const fs::path& dir, const std::string& args) {
 
 void expect_stopped_by_signal_then_resumed(int signal_number) {
   const fs::path dir = scratch_dir();
-  render_reference(dir, kLayers + " --spp 300 -o single.exr --png single.png");
+  render_reference(dir, kLayers + " --spp 600 -o single.exr --png single.png");
   write_old_file(dir / "out.exr", "the previous EXR");
   const FileSnapshot before = snapshot(dir / "out.exr");
   const pid_t pid = start_tool(dir, "ochre",
                                "render " + scene(kPolarized) + " " + kLayers +
-                                   " --spp 300 -o out.exr --png out.png --checkpoint-interval 0.2 --preview");
+                                   " --spp 600 -o out.exr --png out.png --checkpoint-interval 0.2 --preview");
   ASSERT_TRUE(wait_until(pid, [&] { return fs::exists(dir / "out.checkpoint.exr"); }))
       << "no checkpoint seen";
   ASSERT_EQ(::kill(pid, signal_number), 0);
@@ -54,7 +54,7 @@ void expect_stopped_by_signal_then_resumed(int signal_number) {
   EXPECT_TRUE(fs::exists(dir / "out.png")) << "--preview refreshes the display image with each checkpoint";
   const ExrImage checkpoint = read_exr(dir / "out.checkpoint.exr");
   const std::string& coverage = checkpoint.string_attributes.at("ochre.coverage");
-  EXPECT_NE(coverage, "0,0,48,32:0:300") << "stopped before the end";
+  EXPECT_NE(coverage, "0,0,48,32:0:600") << "stopped before the end";
 
   const CommandResult resumed = run_ochre("render --resume out.checkpoint.exr", dir);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
@@ -97,22 +97,26 @@ TEST(Checkpoint, TimeLimitStopsWithAValidImageAndACheckpoint) {
   EXPECT_TRUE(temporaries_in(dir).empty());
 }
 
+// A part stopped at its time limit writes only its checkpoint (which merges with --partial meanwhile);
+// resumed under a limit again, then without, it finishes and merges to the single render's bits.
 TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
   const fs::path dir = scratch_dir();
-  const std::string cornell = scene("cornell-box.json") + " --resolution 40x24 --spp 600 -q";
+  const std::string cornell = scene("cornell-box.json") + " --resolution 40x24 --spp 2000 -q";
   ASSERT_EQ(run_ochre("render " + cornell + " -o single.exr --png single.png", dir).exit_code, 0);
   ASSERT_EQ(run_ochre("render " + cornell + " --part 0/2 -o p0.exr", dir).exit_code, 0);
+  // 0.6 s, of which 0.5 s are reserved for writing: far less than the part needs.
   const CommandResult stopped =
-      run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 1.5", dir);
+      run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 0.6", dir);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
   EXPECT_FALSE(fs::exists(dir / "p1.exr")) << "a part's partial sums are written when complete";
   ASSERT_TRUE(fs::exists(dir / "p1.checkpoint.exr"));
-  // The checkpoint merges as a partial part meanwhile.
   EXPECT_EQ(run_ochre("merge p0.exr p1.checkpoint.exr --partial -o preview.exr -q", dir).exit_code, 0);
-  int exit_code = 3;
-  for (int round = 0; round < 30 && exit_code == 3; ++round)
-    exit_code = run_ochre("render --resume p1.checkpoint.exr -q --time-limit 1.5", dir).exit_code;
-  ASSERT_EQ(exit_code, 0);
+  const int again = run_ochre("render --resume p1.checkpoint.exr -q --time-limit 1.5", dir).exit_code;
+  EXPECT_TRUE(again == 0 || again == 3) << again;
+  if (again == 3) {
+    ASSERT_EQ(run_ochre("render --resume p1.checkpoint.exr -q", dir).exit_code, 0);
+  }
+  EXPECT_FALSE(fs::exists(dir / "p1.checkpoint.exr"));
   ASSERT_EQ(run_ochre("merge p0.exr p1.exr -o merged.exr -q", dir).exit_code, 0);
   EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
 }

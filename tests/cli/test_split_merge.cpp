@@ -79,6 +79,21 @@ TEST(SplitMerge, RegionsMergeByPlacementAlsoCombinedWithSampleRanges) {
   EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
 }
 
+TEST(SplitMerge, GridTilesTimesSampleRangesMergeToTheSingleRender) {
+  const fs::path dir = scratch_dir();
+  render(dir, kCornell, kSmall + " -o single.exr --png single.png");
+  std::string parts;
+  for (int t = 0; t < 6; ++t)
+    for (int p = 0; p < 2; ++p) {
+      const std::string name = fmt::format("t{}p{}.exr", t, p);
+      render(dir, kCornell, fmt::format("{} --tile {}/3x2 --part {}/2 -o {}", kSmall, t, p, name));
+      parts += " " + name;
+    }
+  const CommandResult r = merge(dir, parts + " -o merged.exr");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+}
+
 TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
   const fs::path dir = scratch_dir();
   render(dir, kCornell, kSmall + " -o single.exr --png single.png");
@@ -238,6 +253,10 @@ TEST(SplitOptions, MalformedOrOutOfRangeValuesAreRefused) {
            Case{"--region 0,0,40", "--region: expected x0,y0,x1,y1"},
            Case{"--region 5,0,5,10", "got '5,0,5,10'"},
            Case{"--region 0,0,41,28", "--region 0,0,41,28: outside the 40x28 image"},
+           Case{"--tile 6/3x2",
+                "--tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '6/3x2'"},
+           Case{"--tile 0/41x1", "--tile 0/41x1: more columns or rows than the 40x28 image has pixels"},
+           Case{"--tile 0/2x2 --region 0,0,2,2", "--region excludes --tile"},
        }) {
     const CommandResult r =
         run_ochre("render " + scene_path(kCornell) + " " + kSmall + " -o out.exr " + c.args, dir);
@@ -248,7 +267,7 @@ TEST(SplitOptions, MalformedOrOutOfRangeValuesAreRefused) {
   const CommandResult no_output =
       run_ochre("render " + scene_path(kCornell) + " " + kSmall + " --part 0/2", dir);
   EXPECT_EQ(no_output.exit_code, 2);
-  EXPECT_TRUE(contains(no_output.output, "write partial sums: give -o PART.exr")) << no_output.output;
+  EXPECT_TRUE(contains(no_output.output, "--tile write partial sums: give -o PART.exr")) << no_output.output;
 }
 
 }  // namespace

@@ -36,6 +36,22 @@ TEST(RenderSplit, PartsOfSamplesTileTheRange) {
     }
 }
 
+TEST(RenderSplit, GridTilesCoverTheImageExactlyOnce) {
+  EXPECT_EQ(parse_grid_tile("5/3x2")->index, 5u);
+  EXPECT_EQ(parse_grid_tile("5/3x2")->columns, 3u);
+  EXPECT_EQ(parse_grid_tile("0/1x1")->rows, 1u);
+  for (const char* bad : {"6/3x2", "0/0x2", "0/2x0", "1/2", "1/2x", "a/2x2", "1/2x2x2", "-1/2x2"})
+    EXPECT_FALSE(parse_grid_tile(bad)) << bad;
+  EXPECT_EQ(tile_rect({4, 3, 2}, 100, 51), (PixelRect{33, 25, 66, 51}));
+  for (const auto& [columns, rows] : {std::pair{3u, 2u}, std::pair{7u, 5u}, std::pair{1u, 9u}}) {
+    std::vector<SourcedPiece> tiles;
+    for (uint32_t i = 0; i < columns * rows; ++i)
+      tiles.push_back({{tile_rect({i, columns, rows}, 23, 17), {0, 4}}, "t"});
+    EXPECT_TRUE(check_coverage(tiles, 23, 17, 4).complete()) << columns << "x" << rows;
+  }
+  EXPECT_TRUE(tile_rect({0, 30, 1}, 20, 10).empty());
+}
+
 TEST(Coverage, TextFormRoundTrips) {
   const std::vector<CoveragePiece> pieces = {{{0, 0, 8, 4}, {0, 3}}, {{2, 1, 5, 4}, {3, 9}}};
   EXPECT_EQ(format_coverage(pieces), "0,0,8,4:0:3;2,1,5,4:3:9");

@@ -104,9 +104,10 @@ class Slurm : public ::testing::Test {
     return text.substr(0, text.find('\n'));
   }
 
-  std::string new_job_args(const std::string& name) const {
-    return quoted(source_dir() / kScene) + " --parts 4 " + kSettings + " --dir " + name + " --png " + name +
-           "/final.png --ochre " + quoted(bin_dir() / "ochre");
+  // A job of 4 tasks: `split` is "--parts 4" or, e.g., "--tiles 2x1 --parts 2".
+  std::string new_job_args(const std::string& split, const std::string& name) const {
+    return quoted(source_dir() / kScene) + " " + split + " " + kSettings + " --dir " + name + " --png " +
+           name + "/final.png --ochre " + quoted(bin_dir() / "ochre");
   }
 
   static constexpr const char* kScene = "scenes/cornell-box/cornell-box.json";
@@ -116,7 +117,7 @@ class Slurm : public ::testing::Test {
 };
 
 TEST_F(Slurm, FourTaskArrayAndMergeGiveTheSingleProcessImage) {
-  auto ids = ochre_slurm(new_job_args("job"));
+  auto ids = ochre_slurm(new_job_args("--parts 4", "job"));
   ASSERT_EQ(ids.size(), 3u);
   const std::string merge_states = wait(ids["merge"]);
   EXPECT_TRUE(merge_states.find(ids["merge"] + " COMPLETED") != std::string::npos) << merge_states;
@@ -127,8 +128,9 @@ TEST_F(Slurm, FourTaskArrayAndMergeGiveTheSingleProcessImage) {
 }
 
 TEST_F(Slurm, ACancelledTaskIsReportedByTheMergeAndResubmittedAlone) {
-  // Held at submission, so that task 2 is cancelled before it runs.
-  auto ids = ochre_slurm(new_job_args("job") + " -- --hold");
+  // Two tiles times two sample ranges; held at submission, so that task 2 (tile 1, samples 0:8) is
+  // cancelled before it runs.
+  auto ids = ochre_slurm(new_job_args("--tiles 2x1 --parts 2", "job") + " -- --hold");
   ASSERT_EQ(ids.size(), 3u);
   ASSERT_EQ(shell("scancel " + ids["array"] + "_2").exit_code, 0);
   ASSERT_EQ(shell("scontrol release " + ids["array"] + "," + ids["merge"] + "," + ids["report"]).exit_code,
@@ -139,7 +141,7 @@ TEST_F(Slurm, ACancelledTaskIsReportedByTheMergeAndResubmittedAlone) {
   std::string report;
   for (const auto& entry : fs::directory_iterator(work / "job/logs"))
     if (entry.path().filename().string().rfind("report-", 0) == 0) report = read_text_file(entry.path());
-  EXPECT_TRUE(report.find("missing: samples 8:12 of every pixel") != std::string::npos) << report;
+  EXPECT_TRUE(report.find("missing: samples 0:8 of region 32,0,64,48") != std::string::npos) << report;
   EXPECT_TRUE(report.find("parts without a file: 2 (of 4)") != std::string::npos) << report;
   EXPECT_TRUE(report.find("ochre-slurm --resubmit") != std::string::npos) << report;
   EXPECT_FALSE(fs::exists(work / "job/cornell-box.exr"));
