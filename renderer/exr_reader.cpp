@@ -3,16 +3,12 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include <cerrno>
-#include <cstring>
-
+#include "renderer/exr_input_stream.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/memory_budget.h"
@@ -21,31 +17,6 @@
 namespace ochre {
 
 namespace {
-
-// OpenEXR's view of a checked input file (spectra/input_file.h): the library never opens the path.
-class InputFileIStream final : public Imf::IStream {
- public:
-  explicit InputFileIStream(InputFile& file) : Imf::IStream(file.path().c_str()), file_(file) {}
-  bool read(char c[], int n) override {
-    size_t done = 0;
-    while (done < static_cast<size_t>(n)) {
-      const ssize_t got =
-          ::pread(file_.fd(), c + done, static_cast<size_t>(n) - done, static_cast<off_t>(position_ + done));
-      if (got < 0 && errno == EINTR) continue;
-      if (got < 0) throw std::runtime_error(std::strerror(errno));
-      if (got == 0) throw std::runtime_error("unexpected end of file");
-      done += static_cast<size_t>(got);
-    }
-    position_ += done;
-    return position_ < file_.size();
-  }
-  uint64_t tellg() override { return position_; }
-  void seekg(uint64_t position) override { position_ = position; }
-
- private:
-  InputFile& file_;
-  uint64_t position_ = 0;
-};
 
 void read_string_attributes(const Imf::Header& header, ExrImage& image) {
   for (auto it = header.begin(); it != header.end(); ++it) {

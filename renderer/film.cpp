@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -158,23 +159,78 @@ float Film::mean_spectral(int x, int y, int bin, int component) const {
   return static_cast<float>(from_fixed(spectral_[i]) / n);
 }
 
-void Film::merge(const Film& other) {
-  for (size_t i = 0; i < pixels_.size(); ++i) {
-    for (int c = 0; c < 3; ++c) pixels_[i].xyz[c] += other.pixels_[i].xyz[c];
-    pixels_[i].y2 += other.pixels_[i].y2;
-    pixels_[i].count += other.pixels_[i].count;
+FilmLayers Film::layers() const {
+  FilmLayers layers;
+  layers.aovs = has_aovs();
+  layers.stokes = has_stokes();
+  layers.spectral_bins = spectral_bins_;
+  if (spectral_bins_ > 0) {
+    layers.spectral_min = lambda_min_;
+    layers.spectral_max = lambda_min_ + bin_width_ * static_cast<float>(spectral_bins_);
   }
-  for (size_t i = 0; i < spectral_.size() && i < other.spectral_.size(); ++i)
-    spectral_[i] += other.spectral_[i];
-  for (size_t i = 0; i < stokes_.size() && i < other.stokes_.size(); ++i) stokes_[i] += other.stokes_[i];
-  for (size_t i = 0; i < aovs_.size() && i < other.aovs_.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      aovs_[i].albedo[c] += other.aovs_[i].albedo[c];
-      aovs_[i].normal[c] += other.aovs_[i].normal[c];
+  return layers;
+}
+
+void Film::merge(const Film& other, int x0, int y0) {
+  const std::vector<std::string> names = accumulator_names();
+  if (names != other.accumulator_names() || x0 < 0 || y0 < 0 || x0 + other.width_ > width_ ||
+      y0 + other.height_ > height_)
+    throw std::invalid_argument("Film::merge: the films' layers or sizes do not fit");
+  for (int y = 0; y < other.height_; ++y)
+    for (int x = 0; x < other.width_; ++x) {
+      const size_t from = other.index(x, y), to = index(x0 + x, y0 + y);
+      for (size_t a = 0; a < names.size(); ++a)
+        set_accumulator(a, to, accumulator(a, to) + other.accumulator(a, from));
     }
-    aovs_[i].depth += other.aovs_[i].depth;
-    aovs_[i].hits += other.aovs_[i].hits;
+}
+
+std::vector<std::string> Film::accumulator_names() const {
+  std::vector<std::string> names = {"X", "Y", "Z", "Y2", "count"};
+  if (has_aovs())
+    names.insert(names.end(), {"albedo.X", "albedo.Y", "albedo.Z", "normal.X", "normal.Y", "normal.Z",
+                               "depth", "depthHits"});
+  if (has_stokes())
+    for (int c = 1; c <= 3; ++c)
+      for (const char* xyz : {"X", "Y", "Z"}) names.push_back(fmt::format("S{}.{}", c, xyz));
+  for (int c = 0; c < stokes_components_ && spectral_bins_ > 0; ++c)
+    for (int b = 0; b < spectral_bins_; ++b) names.push_back(fmt::format("S{}.bin{}", c, b));
+  return names;
+}
+
+Film::AccumulatorRef Film::accumulator_ref(size_t index, size_t pixel) {
+  Pixel& p = pixels_[pixel];
+  if (index < 3) return {&p.xyz[index], nullptr};
+  if (index == 3) return {&p.y2, nullptr};
+  if (index == 4) return {nullptr, &p.count};
+  index -= 5;
+  if (has_aovs()) {
+    AovPixel& a = aovs_[pixel];
+    if (index < 3) return {&a.albedo[index], nullptr};
+    if (index < 6) return {&a.normal[index - 3], nullptr};
+    if (index == 6) return {&a.depth, nullptr};
+    if (index == 7) return {nullptr, &a.hits};
+    index -= 8;
   }
+  if (has_stokes()) {
+    if (index < 9) return {&stokes_[pixel * 9 + index], nullptr};
+    index -= 9;
+  }
+  const size_t per_pixel = static_cast<size_t>(spectral_bins_) * stokes_components_;
+  if (index < per_pixel) return {&spectral_[pixel * per_pixel + index], nullptr};
+  throw std::out_of_range("Film: no accumulator " + std::to_string(index));
+}
+
+__int128 Film::accumulator(size_t index, size_t pixel) const {
+  const AccumulatorRef ref = const_cast<Film*>(this)->accumulator_ref(index, pixel);
+  return ref.sum ? *ref.sum : static_cast<__int128>(*ref.count);
+}
+
+void Film::set_accumulator(size_t index, size_t pixel, __int128 value) {
+  const AccumulatorRef ref = accumulator_ref(index, pixel);
+  if (ref.sum)
+    *ref.sum = value;
+  else
+    *ref.count = static_cast<uint64_t>(value);
 }
 
 XYZ Film::mean(int x, int y) const {

@@ -76,8 +76,18 @@ class Film {
   // Mean XYZ-weighted Stokes component c in 1..3.
   XYZ mean_stokes(int x, int y, int c) const;
 
-  // Adds the sums of another film over the same pixels (a disjoint sample range).
-  void merge(const Film& other);
+  // Adds the sums of another film with the same layers over the same pixels (a disjoint sample range),
+  // or, with an offset, over the pixels [x0, x0 + other.width()) x [y0, y0 + other.height()) of this
+  // film (a tile of a region split; the tile must fit).
+  void merge(const Film& other, int x0 = 0, int y0 = 0);
+  FilmLayers layers() const;
+
+  // The exact sums, for partial-render files (renderer/partial_sums.h): a list of named accumulators
+  // that depends on the layers ("X", "Y", "Z", "Y2", "count", then "albedo.X", ..., "S1.X", ...,
+  // "S0.bin0", ...), each one integer per pixel (pixel = y * width + x).
+  std::vector<std::string> accumulator_names() const;
+  __int128 accumulator(size_t index, size_t pixel) const;
+  void set_accumulator(size_t index, size_t pixel, __int128 value);
 
   uint64_t sample_count(int x, int y) const { return pixels_[index(x, y)].count; }
   // Mean XYZ of the pixel (0 with no samples).
@@ -98,6 +108,12 @@ class Film {
     uint64_t count = 0;
   };
   size_t index(int x, int y) const { return static_cast<size_t>(y) * width_ + x; }
+  // Accumulator `index` of a pixel: a 128-bit sum or a 64-bit count (exactly one is set).
+  struct AccumulatorRef {
+    __int128* sum = nullptr;
+    uint64_t* count = nullptr;
+  };
+  AccumulatorRef accumulator_ref(size_t index, size_t pixel);
 
   int width_, height_;
   std::vector<Pixel> pixels_;

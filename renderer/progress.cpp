@@ -159,4 +159,8 @@ void ProgressReporter::print_step() {
   out_ << format_progress_line(label_, done, total_, elapsed_seconds()) << '\n' << std::flush;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace ochre

@@ -38,6 +38,9 @@ std::string format_progress_bar(std::string_view label, std::uint64_t done, std:
 
 bool stderr_is_terminal();
 
+// Seconds from `start` to now (steady clock), for timings the tools print.
+double seconds_since(std::chrono::steady_clock::time_point start);
+
 class ProgressReporter {
  public:
   // `start`: when the work began (elapsed times and ETAs count from it).

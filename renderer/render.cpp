@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 
 #include "renderer/path_integrator.h"
 #include "renderer/surface_shading.h"
@@ -59,9 +60,15 @@ bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWa
   return false;
 }
 
+// One tile of the rendered rectangle: image pixels [x0, x1) x [y0, y1).
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
 template <class Sampler>
-void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
-                 TileCounters& counters, const ProgressCallback& progress) {
+void render_tile(const Scene& scene, const PathIntegrator& integrator, const Tile& tile,
+                 const PixelRect& rect, SampleRange samples, Film& film, TileCounters& counters,
+                 const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
   thread_local LobeArena arena;
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
@@ -70,13 +77,13 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
   uint64_t discarded = 0;
-  const int x_end = std::min(s.width, (tile_x + 1) * kTileSize);
-  const int y_end = std::min(s.height, (tile_y + 1) * kTileSize);
-  for (int y = tile_y * kTileSize; y < y_end; ++y) {
-    for (int x = tile_x * kTileSize; x < x_end; ++x) {
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      // Random numbers and rays follow the pixel's place in the image; the film holds only the rectangle.
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
-      for (uint32_t k = 0; k < s.spp; ++k) {
-        const Sampler sampler(s.seed, pixel_index, s.sample_begin + k);
+      const int fx = x - rect.x0, fy = y - rect.y0;
+      for (uint32_t k = samples.begin; k < samples.end; ++k) {
+        const Sampler sampler(s.seed, pixel_index, k);
         const SampledWavelengths lambda =
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
         const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
@@ -84,8 +91,8 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
         FirstHit first;
         const SensorStokes S =
             integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
-        if (film.has_aovs()) add_aovs(film, x, y, first, lambda);
-        if (add_sample(film, x, y, S, lambda)) ++discarded;
+        if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
+        if (add_sample(film, fx, fy, S, lambda)) ++discarded;
       }
     }
   }
@@ -93,11 +100,20 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
   counters.nonfinite_values += nonfinite.values - nonfinite_before;
-  if (progress)
-    progress(static_cast<uint64_t>(x_end - tile_x * kTileSize) * (y_end - tile_y * kTileSize) * s.spp);
+  if (progress) progress(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * samples.size());
 }
 
 }  // namespace
+
+void RenderStats::add(const RenderStats& pass) {
+  seconds += pass.seconds;
+  samples += pass.samples;
+  rays += pass.rays;
+  shadow_rays += pass.shadow_rays;
+  discarded += pass.discarded;
+  nonfinite_values += pass.nonfinite_values;
+  threads = pass.threads;
+}
 
 PolarizationChoice polarization_for(const Scene& scene) {
   return choose_polarization_mode(scene.settings.polarization,
@@ -107,12 +123,26 @@ PolarizationChoice polarization_for(const Scene& scene) {
 
 RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress) {
   const RenderSettings& s = scene.settings;
+  return render_range(scene, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
+                      progress);
+}
+
+RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
+                         const ProgressCallback& progress) {
+  const RenderSettings& s = scene.settings;
+  if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
+      film.height() != rect.height())
+    throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
   const PathIntegrator integrator(scene, polarization_for(scene).mode);
   TileCounters counters;
-  const int tiles_x = (s.width + kTileSize - 1) / kTileSize;
-  const int tiles_y = (s.height + kTileSize - 1) / kTileSize;
+  const int tiles_x = (rect.width() + kTileSize - 1) / kTileSize;
+  const int tiles_y = (rect.height() + kTileSize - 1) / kTileSize;
+  const auto tile_at = [&](int t) {
+    const int x0 = rect.x0 + (t % tiles_x) * kTileSize, y0 = rect.y0 + (t / tiles_x) * kTileSize;
+    return Tile{x0, y0, std::min(rect.x1, x0 + kTileSize), std::min(rect.y1, y0 + kTileSize)};
+  };
 
   const auto start = std::chrono::steady_clock::now();
   tbb::parallel_for(
@@ -120,15 +150,15 @@ RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progr
       [&](const tbb::blocked_range<int>& range) {
         for (int t = range.begin(); t != range.end(); ++t)
           if (s.sampler == "sobol")
-            render_tile<SobolSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress);
+            render_tile<SobolSampler>(scene, integrator, tile_at(t), rect, samples, film, counters, progress);
           else
-            render_tile<IndependentSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters,
+            render_tile<IndependentSampler>(scene, integrator, tile_at(t), rect, samples, film, counters,
                                             progress);
       },
       tbb::simple_partitioner());
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.samples = static_cast<uint64_t>(s.width) * s.height * s.spp;
+  stats.samples = static_cast<uint64_t>(rect.width()) * rect.height() * samples.size();
   stats.rays = counters.rays;
   stats.shadow_rays = counters.shadow_rays;
   stats.discarded = counters.discarded;

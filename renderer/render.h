@@ -7,6 +7,7 @@
 
 #include "renderer/film.h"
 #include "renderer/polarization_mode.h"
+#include "renderer/render_split.h"
 #include "renderer/scene.h"
 
 namespace ochre {
@@ -21,6 +22,8 @@ struct RenderStats {
   int threads = 0;
   double samples_per_second() const { return seconds > 0 ? samples / seconds : 0.0; }
   double rays_per_second() const { return seconds > 0 ? (rays + shadow_rays) / seconds : 0.0; }
+  // Adds the figures of another render of the same scene (a later pass of samples).
+  void add(const RenderStats& pass);
 };
 
 // Called with the number of pixel-samples finished since the last call (thread-safe use).
@@ -31,5 +34,12 @@ PolarizationChoice polarization_for(const Scene& scene);
 
 // Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film`.
 RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress = {});
+
+// Renders samples `samples` of the pixels `rect` of the image into `film`, which is rect.width() x
+// rect.height() (film pixel (0, 0) is image pixel (rect.x0, rect.y0)). Random numbers depend on the image
+// pixel and the sample index only, so any split into rectangles and sample ranges, merged
+// (Film::merge), gives the bits of one render.
+RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
+                         const ProgressCallback& progress = {});
 
 }  // namespace ochre

@@ -161,8 +161,16 @@ std::vector<std::string> output_paths(const OutputSettings& outputs) {
 std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
                                        const RenderSettings& settings, const RenderStats& stats,
                                        const std::string& scene_file) {
-  std::vector<std::string> written;
   OutputTransaction transaction;  // every file is complete before any existing one is replaced
+  std::vector<std::string> written = add_outputs(transaction, film, outputs, settings, stats, scene_file);
+  transaction.commit();
+  return written;
+}
+
+std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film& film,
+                                     const OutputSettings& outputs, const RenderSettings& settings,
+                                     const RenderStats& stats, const std::string& scene_file) {
+  std::vector<std::string> written;
   const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
   if (!outputs.exr.empty()) {
     ExrImage image;
@@ -203,7 +211,6 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     written.push_back(fmt::format("wrote {} ({})", outputs.png, report.description));
     for (const std::string& w : report.warnings) written.push_back("warning: " + w);
   }
-  transaction.commit();
   return written;
 }
 

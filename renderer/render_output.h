@@ -16,6 +16,8 @@
 
 namespace ochre {
 
+class OutputTransaction;
+
 // Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
 
@@ -52,5 +54,9 @@ std::vector<std::string> output_paths(const OutputSettings& outputs);
 std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
                                        const RenderSettings& settings, const RenderStats& stats,
                                        const std::string& scene_file);
+// The same into `transaction`, which the caller commits (with other files of its own).
+std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film& film,
+                                     const OutputSettings& outputs, const RenderSettings& settings,
+                                     const RenderStats& stats, const std::string& scene_file);
 
 }  // namespace ochre

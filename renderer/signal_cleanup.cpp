@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 
@@ -32,6 +33,8 @@ std::array<Slot, kSlots> slots;
 
 std::atomic<int> deferrals{0};
 std::atomic<int> pending_signal{0};
+std::atomic<bool> graceful_active{false};
+std::atomic<int> graceful_signal{0};
 
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 
@@ -75,6 +78,12 @@ void remove_temporaries_and_reraise(int signal_number) {
 
 extern "C" void on_signal(int signal_number) {
   const int saved_errno = errno;
+  // A graceful stop records the first signal only; the render acts on it at its next pass boundary.
+  int none = 0;
+  if (graceful_active.load() && graceful_signal.compare_exchange_strong(none, signal_number)) {
+    errno = saved_errno;
+    return;
+  }
   // Pending first, then the check: a deferral ending concurrently then sees the signal (and acts on it).
   pending_signal.store(signal_number);
   if (deferrals.load() > 0) {
@@ -125,6 +134,25 @@ void TemporaryFileRegistration::release() {
   if (slot_ < 0) return;
   slots[slot_].state.store(kFree, std::memory_order_release);
   slot_ = -1;
+}
+
+GracefulStop::GracefulStop() {
+  graceful_signal.store(0);
+  graceful_active.store(true);
+}
+
+GracefulStop::~GracefulStop() {
+  graceful_active.store(false);
+}
+
+int GracefulStop::requested_signal() {
+  return graceful_signal.load();
+}
+
+void GracefulStop::end_by_signal() {
+  graceful_active.store(false);
+  remove_temporaries_and_reraise(graceful_signal.load());
+  std::abort();  // not reached: the signal's default action ends the process
 }
 
 SignalDeferral::SignalDeferral() {

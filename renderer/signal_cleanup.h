@@ -42,6 +42,22 @@ class TemporaryFileRegistration {
   int slot_ = -1;
 };
 
+// While a GracefulStop lives, the first SIGINT, SIGTERM or SIGHUP does not end the process: it is recorded,
+// so that a render can stop at its next pass boundary, write a checkpoint and then end by the signal
+// (end_by_signal). A second signal ends the process at once, as without it (temporaries removed). One
+// GracefulStop at a time.
+class GracefulStop {
+ public:
+  GracefulStop();
+  ~GracefulStop();
+  GracefulStop(const GracefulStop&) = delete;
+  GracefulStop& operator=(const GracefulStop&) = delete;
+  // The signal recorded, 0 while none arrived (async-signal-safe, any thread).
+  static int requested_signal();
+  // Removes the registered temporaries and ends the process by the recorded signal.
+  [[noreturn]] void end_by_signal();
+};
+
 // Holds back the handled signals while several renames must all happen (renderer/output_transaction.h):
 // a signal arriving meanwhile is acted on when the last SignalDeferral ends.
 class SignalDeferral {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "renderer/atomic_file.h"
+#include "renderer/fnv1a.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mip_pyramid.h"
 #include "renderer/periodic_texture_coordinate.h"
@@ -73,16 +74,6 @@ bool make_writable_directory(const fs::path& dir) {
   }
   fs::remove(probe, error);
   return writable;
-}
-
-// FNV-1a, 64 bit (Fowler, Noll, Vo): stable across compilers and runs, unlike std::hash.
-std::uint64_t fnv1a64(const std::string& text) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 0x100000001b3ull;
-  }
-  return hash;
 }
 
 // ------------------------------------------------------------------------------------ source files

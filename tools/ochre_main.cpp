@@ -2,9 +2,12 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <regex>
+#include <tuple>
 
 #include "ochre/version.h"
+#include "renderer/duration.h"
 #include "spectra/byte_size.h"
+#include "tools/merge_command.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -18,6 +21,15 @@ bool parse_resolution(const std::string& text, int& width, int& height) {
   width = std::stoi(m[1]);
   height = std::stoi(m[2]);
   return true;
+}
+
+// --memory-limit SIZE; prints the error and returns nullopt when malformed.
+std::optional<uint64_t> parse_memory_limit(const std::string& text) {
+  const auto bytes = ochre::parse_byte_size(text);
+  if (!bytes)
+    std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
+              << text << "'\n";
+  return bytes;
 }
 
 }  // namespace
@@ -36,7 +48,8 @@ int main(int argc, char** argv) {
   std::string polarization, sampler;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
-  render->add_option("scene", cmd.scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  render->add_option("scene", cmd.scene,
+                     "Scene file (JSON, docs/scene-format.md); with --resume: the scene moved");
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
   render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
@@ -73,6 +86,51 @@ int main(int argc, char** argv) {
       "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
       "(default: the machine's memory)");
 
+  std::string sample_range, part, region, tile;
+  auto* range_opt = render->add_option(
+      "--sample-range", sample_range, "Render samples [A, B) of every pixel into partial sums (-o PART.exr)");
+  auto* part_opt =
+      render->add_option("--part", part, "Render the I-th of N equal sample ranges (I/N, from 0)")
+          ->excludes(range_opt);
+  auto* region_opt =
+      render->add_option("--region", region, "Render the pixels [x0, x1) x [y0, y1) into partial sums");
+  auto* tile_opt =
+      render->add_option("--tile", tile, "Render tile I (from 0, row by row) of a C x R grid (I/CxR)")
+          ->excludes(region_opt);
+
+  std::string checkpoint_interval, time_limit;
+  render->add_option("--checkpoint", cmd.checkpoint,
+                     "Checkpoint file (default: beside the output, NAME.checkpoint.exr)");
+  auto* interval_opt = render->add_option("--checkpoint-interval", checkpoint_interval,
+                                          "Write a checkpoint every DURATION (e.g. 600, 10m, 1h30m)");
+  auto* time_limit_opt =
+      render->add_option("--time-limit", time_limit,
+                         "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
+  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds");
+  render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
+
+  ochre::MergeCommand merge_cmd;
+  CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
+  merge->add_option("parts", merge_cmd.parts, "Partial-sum files (ochre render --sample-range/--region)")
+      ->required();
+  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)");
+  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)");
+  merge->add_option("--sums", merge_cmd.sums,
+                    "Write the merged partial sums, to merge again with more parts");
+  merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
+  merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 2 if any)");
+  merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
+  std::string merge_ocio, merge_display, merge_view, merge_memory;
+  float merge_exposure = 0.0f;
+  auto* merge_ocio_opt =
+      merge->add_option("--ocio-config", merge_ocio, "OCIO config (default: the render's)");
+  auto* merge_display_opt =
+      merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
+  auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
+  auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
+                                 ->check(CLI::Range(-64.0, 64.0));
+  auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -80,6 +138,59 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;  // --help / --version exit 0; bad usage is bad input
   }
 
+  if (app.got_subcommand(merge)) {
+    if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
+    if (*merge_display_opt) merge_cmd.display = merge_display;
+    if (*merge_view_opt) merge_cmd.view = merge_view;
+    if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
+    if (*merge_memory_opt && !(merge_cmd.memory_limit = parse_memory_limit(merge_memory))) return 2;
+    return ochre::run_merge(merge_cmd);
+  }
+
+  for (auto [option, text, value] : {std::tuple{interval_opt, &checkpoint_interval, &cmd.checkpoint_interval},
+                                     std::tuple{time_limit_opt, &time_limit, &cmd.time_limit}})
+    if (*option && !(*value = ochre::parse_duration(*text))) {
+      std::cerr << "ochre: error: " << option->get_name()
+                << ": expected a duration such as 90, 90s, 10m, 1h30m or "
+                << "1.5h (at most a year), got '" << *text << "'\n";
+      return 2;
+    }
+  if (*resume_opt) {
+    // A resumed render is the render the checkpoint holds: what changes the image cannot change.
+    for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt,
+                                     part_opt, region_opt, tile_opt, render->get_option("--spectral-bins"),
+                                     render->get_option("--aovs"), render->get_option("--stokes")})
+      if (*fixed) {
+        std::cerr
+            << "ochre: error: " << fixed->get_name()
+            << ": a resumed render keeps the settings of its checkpoint (give only outputs, display and "
+               "checkpoint options, --threads, --memory-limit, -q)\n";
+        return 2;
+      }
+  } else if (cmd.scene.empty()) {
+    std::cerr << "ochre: error: render: give a scene file (or --resume CHECKPOINT)\n";
+    return 2;
+  }
+  if (*range_opt && !(cmd.sample_range = ochre::parse_sample_range(sample_range))) {
+    std::cerr << "ochre: error: --sample-range: expected A:B with integers 0 <= A < B < 2^32, got '"
+              << sample_range << "'\n";
+    return 2;
+  }
+  if (*part_opt && !(cmd.part = ochre::parse_part(part))) {
+    std::cerr << "ochre: error: --part: expected I/N with integers 0 <= I < N, got '" << part << "'\n";
+    return 2;
+  }
+  if (*tile_opt && !(cmd.tile = ochre::parse_grid_tile(tile))) {
+    std::cerr << "ochre: error: --tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '"
+              << tile << "'\n";
+    return 2;
+  }
+  if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region))) {
+    std::cerr
+        << "ochre: error: --region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '"
+        << region << "'\n";
+    return 2;
+  }
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
@@ -95,14 +206,7 @@ int main(int argc, char** argv) {
     cmd.overrides.width = w;
     cmd.overrides.height = h;
   }
-  if (*memory_opt) {
-    cmd.memory_limit = ochre::parse_byte_size(memory_limit);
-    if (!cmd.memory_limit) {
-      std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
-                << memory_limit << "'\n";
-      return 2;
-    }
-  }
+  if (*memory_opt && !(cmd.memory_limit = parse_memory_limit(memory_limit))) return 2;
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;
   if (*view_opt) cmd.view = view;

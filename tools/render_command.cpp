@@ -3,20 +3,27 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <optional>
 
-#include "materials/graph/graph_error.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/load_progress.h"
 #include "renderer/memory_budget.h"
 #include "renderer/output_files.h"
+#include "renderer/output_transaction.h"
+#include "renderer/partial_sums.h"
 #include "renderer/progress.h"
 #include "renderer/render.h"
+#include "renderer/render_identity.h"
 #include "renderer/render_output.h"
+#include "renderer/render_passes.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/checkpoint_resume.h"
+#include "tools/command_errors.h"
+#include "tools/render_part.h"
 
 namespace ochre {
 
@@ -62,6 +69,13 @@ struct Phase {
 // transform reads the OCIO config).
 void apply_output_options(const RenderCommand& command, Scene& scene) {
   OutputSettings& out = scene.outputs;
+  if (command.split()) {
+    // A part's display images are previews, written only when asked for: the scene's own paths are for the
+    // final image, which `ochre merge` writes (with the Stokes layers a polarization PNG implies).
+    if (!out.polarization_png.empty()) out.stokes = true;
+    out.png.clear();
+    out.polarization_png.clear();
+  }
   if (!command.exr.empty()) out.exr = command.exr;
   if (!command.png.empty()) out.png = command.png;
   if (command.ocio_config) out.ocio_config = *command.ocio_config;
@@ -84,30 +98,98 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   check_outputs(out);
 }
 
-int render_scene(const RenderCommand& command, Phase& phase) {
-  const auto load_start = std::chrono::steady_clock::now();
+// The files of a render that checkpoints, and how it writes them.
+struct Checkpointing {
+  std::filesystem::path path;
+  const Scene* scene = nullptr;
+  std::string content_hash;
+  RenderPart part;
+  bool split = false;
+  bool preview = false;  // refresh the display PNG with each checkpoint
+  OutputSettings out;
+  uint32_t written_at = UINT32_MAX;  // the sample the last checkpoint written ends at
+
+  // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
+  void write(const Film& film, uint32_t next, const RenderStats& stats) {
+    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    add_checkpoint_notes(header, part, split, out);
+    OutputTransaction transaction;
+    write_partial_sums(transaction.add(path), header, film);
+    if (preview && !out.png.empty()) {
+      OutputSettings png_only;
+      png_only.png = out.png;
+      png_only.colorspace = out.colorspace;
+      png_only.ocio_config = out.ocio_config;
+      png_only.display = out.display;
+      png_only.view = out.view;
+      png_only.exposure = out.exposure;
+      add_outputs(transaction, film, png_only, scene->settings, stats, scene->file.string());
+    }
+    transaction.commit();
+    written_at = next;
+  }
+};
+
+int render_scene(const RenderCommand& given, Phase& phase) {
+  const auto start = std::chrono::steady_clock::now();
+  // A resumed render takes its scene, settings and outputs from the checkpoint.
+  std::optional<PartialSumsFile> resumed;
+  if (!given.resume.empty()) resumed.emplace(given.resume);
+  const RenderCommand command = resumed ? resumed_command(given, *resumed) : given;
+
   InputFileLog inputs;
   std::unique_ptr<Scene> scene;
   {
-    const InputFileLog::Recording recording(inputs);  // every file the scene and its outputs read
+    const InputFileLog::Recording recording(inputs);  // every file the scene reads
     scene = load_scene(command.scene, command.overrides);
+  }
+  // Only partial sums need the content hash (it reads every input file again).
+  const bool partial_sums = command.split() || command.checkpointing();
+  const std::string content_hash = partial_sums ? scene_content_hash(inputs.records()) : "";
+  {
+    const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, *scene);
   }
-  const OutputSettings& out = scene->outputs;
-  const std::vector<std::string> paths = output_paths(out);
-  check_output_files({paths.begin(), paths.end()}, inputs);
-  const double load_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+  if (resumed) check_resumable(*resumed, render_identity(*scene, content_hash));
+  const RenderPart part = select_part(command, *scene);
+  OutputSettings out = scene->outputs;
+  Checkpointing checkpoints{
+      command.checkpoint.empty() ? default_checkpoint_path(out) : std::filesystem::path(command.checkpoint),
+      scene.get(),
+      content_hash,
+      part,
+      command.split(),
+      command.preview,
+      out};
+  std::vector<std::filesystem::path> paths;
+  for (const std::string& path : output_paths(out)) paths.emplace_back(path);
+  if (command.checkpointing()) {
+    check_output_writable(checkpoints.path);
+    paths.push_back(checkpoints.path);
+  }
+  check_output_files(paths, inputs);
 
   if (!command.quiet) {
     print_summary(*scene);
-    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
+    if (command.split())
+      std::cerr << fmt::format("ochre: rendering samples {} of region {} into partial sums\n",
+                               format_sample_range(part.samples), format_pixel_rect(part.rect));
+    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", seconds_since(start));
   }
   phase = {"allocating the film", true};
-  check_render_memory(scene->settings.width, scene->settings.height, out);
-  Film film(scene->settings.width, scene->settings.height, film_layers(out));
+  check_render_memory(part.rect.width(), part.rect.height(), out);
+  Film film = resumed ? resumed->read_film() : Film(part.rect.width(), part.rect.height(), film_layers(out));
+  const uint32_t first = resumed ? resume_point(*resumed, part) : part.samples.begin;
+  RenderStats stats;  // the NaN/Inf counts include the checkpoint's
+  if (resumed) {
+    stats.discarded = resumed->header().discarded_samples;
+    stats.nonfinite_values = resumed->header().nonfinite_values;
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: resuming {}: samples {}:{} of {} done\n", given.resume,
+                               part.samples.begin, first, format_sample_range(part.samples));
+  }
   const uint64_t total =
-      static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
+      static_cast<uint64_t>(part.rect.width()) * part.rect.height() * (part.samples.end - first);
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
     try {
@@ -117,15 +199,96 @@ int render_scene(const RenderCommand& command, Phase& phase) {
     }
   }
   phase = {"rendering", false};
-  const RenderStats stats = render(*scene, film, [&](uint64_t done) {
+  const ProgressCallback advance = [&](uint64_t done) {
     if (progress) progress->advance(done);
-  });
-  if (progress) progress->finish();
+  };
+  uint32_t next = part.samples.end;
+  PassStop stop = PassStop::finished;
+  if (!command.checkpointing()) {
+    stats.add(render_range(*scene, film, part.rect, {first, part.samples.end}, advance));
+  } else {
+    GracefulStop signals;  // the first SIGINT / SIGTERM ends the render at a pass boundary
+    PassSchedule schedule;
+    schedule.checkpoint_interval = command.checkpoint_interval.value_or(0.0);
+    if (command.time_limit) {
+      // Writing the image and the checkpoint follows the last pass: about 1 us per pixel and 5 accumulators
+      // (docs/distributed.md, Figures), reserved so that the command ends before the limit.
+      const double reserve =
+          0.5 + 2e-7 * part.rect.width() * part.rect.height() * film.accumulator_names().size();
+      schedule.deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(*command.time_limit - reserve));
+    }
+    const RenderStats before = stats;
+    const PassResult result = render_in_passes(
+        *scene, film, part.rect, {first, part.samples.end}, schedule, advance,
+        [&](uint32_t at, const RenderStats& passes) {
+          RenderStats so_far = before;
+          so_far.add(passes);
+          checkpoints.write(film, at, so_far);
+        },
+        [] { return GracefulStop::requested_signal() != 0; });
+    stats.add(result.stats);
+    next = result.next;
+    stop = result.stop;
+    if (stop == PassStop::stop_requested) {
+      if (checkpoints.written_at != next) checkpoints.write(film, next, stats);
+      if (!command.quiet)
+        std::cerr << fmt::format(
+            "\nochre: stopped by a signal after samples {}:{}; wrote {}; continue with: ochre "
+            "render --resume {}\n",
+            part.samples.begin, next, checkpoints.path.string(), checkpoints.path.string());
+      progress.reset();
+      signals.end_by_signal();
+    }
+  }
+  if (progress && stop == PassStop::finished) progress->finish();
+  progress.reset();
   if (!command.quiet) print_stats(stats);
 
   phase = {"writing the outputs", true};
-  for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
-    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  OutputTransaction transaction;
+  std::vector<std::string> written;
+  if (stop == PassStop::deadline) {
+    // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
+    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    add_checkpoint_notes(header, part, command.split(), out);
+    const auto write_start = std::chrono::steady_clock::now();
+    write_partial_sums(transaction.add(checkpoints.path), header, film);
+    written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {}, {:.2f} s)",
+                                  checkpoints.path.string(), part.samples.begin, next,
+                                  format_sample_range(part.samples), seconds_since(write_start)));
+    if (command.split()) out.exr.clear();
+  } else if (command.split()) {
+    const PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    const auto write_start = std::chrono::steady_clock::now();
+    write_partial_sums(transaction.add(out.exr), header, film);
+    written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {}, {:.2f} s)", out.exr,
+                                  format_sample_range(part.samples), format_pixel_rect(part.rect),
+                                  seconds_since(write_start)));
+    out.exr.clear();  // the display images of the part, when asked for, follow
+  }
+  RenderSettings done = scene->settings;  // the EXR header names the samples it holds
+  done.sample_begin = part.samples.begin;
+  done.spp = next - part.samples.begin;
+  if (!out.exr.empty() || !out.png.empty() || !out.polarization_png.empty())
+    for (const std::string& line : add_outputs(transaction, film, out, done, stats, scene->file.string()))
+      written.push_back(line);
+  transaction.commit();
+  if (!command.quiet)
+    for (const std::string& line : written) std::cerr << "ochre: " << line << "\n";
+  if (stop == PassStop::deadline) {
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: time limit reached; continue with: ochre render --resume {}\n",
+                               checkpoints.path.string());
+    return 3;
+  }
+  // Finished: the checkpoint (this render's, or the one resumed) has served.
+  std::error_code error;
+  const bool ours = checkpoints.written_at != UINT32_MAX || resumed;
+  if (ours && std::filesystem::exists(checkpoints.path, error) &&
+      !std::filesystem::remove(checkpoints.path, error) && !command.quiet)
+    std::cerr << fmt::format("ochre: warning: could not remove the checkpoint {}: {}\n",
+                             checkpoints.path.string(), error.message());
   return 0;
 }
 
@@ -144,18 +307,8 @@ int run_render(const RenderCommand& command) {
     std::cerr << fmt::format("ochre: {}: {}: out of memory while {} (see --memory-limit in docs/cli.md)\n",
                              phase.from_input_size ? "error" : "internal error", command.scene, phase.what);
     return phase.from_input_size ? 2 : 1;
-  } catch (const InputError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const GraphError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const ImageError& e) {
-    std::cerr << "ochre: error: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ochre: internal error: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return report_current_exception();
   }
 }
 

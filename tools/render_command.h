@@ -1,11 +1,13 @@
 #pragma once
 // `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code:
-// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error.
+// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error,
+// 3 stopped at --time-limit with the image of the samples done and a checkpoint written.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "renderer/render_split.h"
 #include "renderer/scene_loader.h"
 
 namespace ochre {
@@ -22,6 +24,23 @@ struct RenderCommand {
   bool stokes = false;                        // Stokes layers in the EXR
   std::string polarization_png;               // false-colour DoLP / AoLP PNG
   std::optional<std::uint64_t> memory_limit;  // bytes (--memory-limit); default: the machine's memory
+
+  // A part of a split render (docs/distributed.md): -o then names the file of its partial sums.
+  std::optional<SampleRange> sample_range;            // --sample-range A:B
+  std::optional<std::pair<uint32_t, uint32_t>> part;  // --part I/N: the I-th of N sample ranges
+  std::optional<PixelRect> region;                    // --region x0,y0,x1,y1
+  std::optional<GridTile> tile;                       // --tile I/CxR: a region of a grid of tiles
+  bool split() const { return sample_range || part || region || tile; }
+
+  // Checkpoints (docs/distributed.md): on when any of these is given.
+  std::string checkpoint;                     // --checkpoint FILE (default: beside the first output)
+  std::optional<double> checkpoint_interval;  // --checkpoint-interval, seconds
+  std::optional<double> time_limit;           // --time-limit, seconds from the start of the command
+  std::string resume;                         // --resume CHECKPOINT
+  bool preview = false;                       // --preview: refresh the PNG at each checkpoint
+  bool checkpointing() const {
+    return !checkpoint.empty() || checkpoint_interval || time_limit || !resume.empty();
+  }
 };
 
 int run_render(const RenderCommand& command);

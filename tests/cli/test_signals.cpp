@@ -14,42 +14,13 @@
 
 #include "cli/cli_runner.h"
 #include "cli/file_test_support.h"
+#include "cli/process_control.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-// Starts `TOOL ARGS` in dir (output discarded) and returns its pid.
-pid_t start_tool(const fs::path& dir, const std::string& tool, const std::string& args) {
-  const std::string command = "exec '" + (bin_dir() / tool).string() + "' " + args + " >/dev/null 2>&1";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    ::setenv("OCHRE_PROGRESS", "none", 1);
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
-// Waits for pid (killing it after a minute) and returns its wait status.
-int wait_for(pid_t pid) {
-  const auto deadline = Clock::now() + std::chrono::seconds(60);
-  int status = 0;
-  while (::waitpid(pid, &status, WNOHANG) == 0) {
-    if (Clock::now() > deadline) {
-      ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
-      ADD_FAILURE() << "ochre did not end within a minute of the signal";
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return status;
-}
 
 struct Outputs {
   fs::path dir = scratch_dir();
@@ -86,15 +57,6 @@ TEST(Signals, SigintDuringARender) {
 
 TEST(Signals, SigtermDuringARender) {
   expect_signal_during_render_is_clean(SIGTERM);
-}
-
-// Waits until `ready` holds or the process ends (a minute at most); true when `ready` held.
-template <class Ready>
-bool wait_until(pid_t pid, Ready&& ready) {
-  const auto deadline = Clock::now() + std::chrono::seconds(60);
-  while (!ready() && Clock::now() < deadline && ::waitpid(pid, nullptr, WNOHANG) == 0)
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  return ready();
 }
 
 // The signal arrives once a temporary output exists, i.e. while the outputs are written.

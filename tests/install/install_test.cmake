@@ -24,9 +24,10 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 run(ignored ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX})
 
 set(tools ochre ochre-diff ochre-regress ochre-converge ochre-bench ochre-brdf ochre-halfspace ochre-vgroove
-          ochre-fit)
+          ochre-fit ochre-slurm)
 set(expected_files
     share/ochre/scripts/plot_brdf.py share/ochre/scripts/plot_convergence.py share/ochre/scripts/plot_fit.py
+    share/ochre/scripts/one_node_cluster.sh
     share/ochre/scenes/default/default.json share/ochre/scenes/cornell-box/cornell-box.json
     share/doc/ochre/LICENSE share/doc/ochre/README.md share/doc/ochre/cli.md share/doc/ochre/scene-format.md)
 foreach(tool IN LISTS tools)

@@ -61,3 +61,46 @@ TEST(Film, SumIsIndependentOfOrderAndSplit) {
 
 }  // namespace
 }  // namespace ochre
+
+namespace ochre {
+namespace {
+
+// The accumulators round-trip exactly (partial-sum files rely on it), also negative and 128-bit values.
+TEST(Film, AccumulatorsRoundTripEveryLayer) {
+  FilmLayers layers;
+  layers.aovs = true;
+  layers.stokes = true;
+  layers.spectral_bins = 3;
+  Film film(2, 1, layers), copy(2, 1, layers);
+  const std::vector<std::string> names = film.accumulator_names();
+  ASSERT_EQ(names.size(), 5u + 8u + 9u + 3u * 4u);
+  EXPECT_EQ(names[4], "count");
+  EXPECT_EQ(names[12], "depthHits");
+  EXPECT_EQ(names.back(), "S3.bin2");
+  for (size_t a = 0; a < names.size(); ++a)
+    for (size_t p = 0; p < 2; ++p) {
+      const bool count = names[a] == "count" || names[a] == "depthHits";
+      const __int128 value =
+          count ? static_cast<__int128>(a * 7 + p) : -(static_cast<__int128>(a + 1) << 100) + p;
+      film.set_accumulator(a, p, value);
+    }
+  copy.merge(film);
+  for (size_t a = 0; a < names.size(); ++a)
+    for (size_t p = 0; p < 2; ++p) EXPECT_TRUE(copy.accumulator(a, p) == film.accumulator(a, p)) << names[a];
+}
+
+TEST(Film, MergeAtAnOffsetPlacesATile) {
+  Film whole(4, 3), tile(2, 1);
+  tile.add_sample(1, 0, {1, 2, 3});
+  whole.merge(tile, 2, 2);
+  EXPECT_EQ(whole.sample_count(3, 2), 1u);
+  EXPECT_EQ(whole.mean(3, 2).y, 2.0f);
+  EXPECT_EQ(whole.sample_count(1, 0), 0u);
+  EXPECT_THROW(whole.merge(tile, 3, 2), std::invalid_argument);
+  FilmLayers aovs;
+  aovs.aovs = true;
+  EXPECT_THROW(whole.merge(Film(4, 3, aovs)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ochre

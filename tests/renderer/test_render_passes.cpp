@@ -1,0 +1,91 @@
+// Renders in passes stop at clean sample boundaries and sum to the bits of one render.
+#include <gtest/gtest.h>
+
+#include "renderer/duration.h"
+#include "renderer/render_passes.h"
+#include "renderer/scene_loader.h"
+#include "support/test_paths.h"
+
+namespace ochre {
+namespace {
+
+std::unique_ptr<Scene> small_cornell() {
+  SceneOverrides o;
+  o.width = 20;
+  o.height = 12;
+  o.spp = 9;
+  return load_scene(test::source_dir() / "scenes/cornell-box/cornell-box.json", o);
+}
+
+void expect_same_film(const Film& a, const Film& b) {
+  for (size_t k = 0; k < a.accumulator_names().size(); ++k)
+    for (size_t p = 0; p < static_cast<size_t>(a.width()) * a.height(); ++p)
+      ASSERT_TRUE(a.accumulator(k, p) == b.accumulator(k, p)) << a.accumulator_names()[k] << " pixel " << p;
+}
+
+TEST(RenderPasses, AStopRequestEndsAtAPassBoundaryThatResumesBitForBit) {
+  const auto scene = small_cornell();
+  const PixelRect rect{3, 2, 17, 11};
+  Film whole(rect.width(), rect.height()), passes(rect.width(), rect.height());
+  render_range(*scene, whole, rect, {2, 9});
+  int asked = 0;
+  PassSchedule one_sample_passes;
+  one_sample_passes.pass_seconds = 1e-9;
+  const PassResult first = render_in_passes(
+      *scene, passes, rect, {2, 9}, one_sample_passes, {},
+      [](uint32_t, const RenderStats&) { FAIL() << "no interval"; }, [&] { return ++asked > 2; });
+  EXPECT_EQ(first.stop, PassStop::stop_requested);
+  EXPECT_EQ(first.next, 4u);  // two passes of one sample
+  EXPECT_EQ(passes.sample_count(0, 0), first.next - 2);
+  const PassResult rest =
+      render_in_passes(*scene, passes, rect, {first.next, 9}, {}, {}, {}, [] { return false; });
+  EXPECT_EQ(rest.stop, PassStop::finished);
+  EXPECT_EQ(rest.next, 9u);
+  expect_same_film(whole, passes);
+}
+
+TEST(RenderPasses, APassedDeadlineRendersNothing) {
+  const auto scene = small_cornell();
+  Film film(20, 12);
+  PassSchedule schedule;
+  schedule.deadline = PassSchedule::Clock::now() - std::chrono::seconds(1);
+  const PassResult r =
+      render_in_passes(*scene, film, {0, 0, 20, 12}, {0, 9}, schedule, {}, {}, [] { return false; });
+  EXPECT_EQ(r.stop, PassStop::deadline);
+  EXPECT_EQ(r.next, 0u);
+  EXPECT_EQ(film.sample_count(5, 5), 0u);
+}
+
+TEST(RenderPasses, CheckpointsComeAtIntervalsAndNeverAfterTheLastPass) {
+  const auto scene = small_cornell();
+  Film film(20, 12);
+  PassSchedule schedule;
+  schedule.checkpoint_interval = 1e-9;  // after every pass
+  schedule.pass_seconds = 1e-9;         // one sample per pass
+  std::vector<uint32_t> at;
+  const PassResult r = render_in_passes(
+      *scene, film, {0, 0, 20, 12}, {0, 9}, schedule, {},
+      [&](uint32_t next, const RenderStats& so_far) {
+        at.push_back(next);
+        EXPECT_EQ(so_far.samples, 20u * 12u * next);
+      },
+      [] { return false; });
+  EXPECT_EQ(r.next, 9u);
+  EXPECT_EQ(at, (std::vector<uint32_t>{1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
+  EXPECT_EQ(parse_duration("90"), 90.0);
+  EXPECT_EQ(parse_duration("90s"), 90.0);
+  EXPECT_EQ(parse_duration("0.5"), 0.5);
+  EXPECT_EQ(parse_duration("10m"), 600.0);
+  EXPECT_EQ(parse_duration("1.5h"), 5400.0);
+  EXPECT_EQ(parse_duration("1h30m"), 5400.0);
+  EXPECT_EQ(parse_duration("2h0m5s"), 7205.0);
+  for (const char* bad : {"", "0", "0s", "-5", "5x", "m", "1m2h", "1h1h", "1h30", "1e3", "0x10", " 5", "5 ",
+                          "inf", "nan", "400d", "9000h"})
+    EXPECT_FALSE(parse_duration(bad)) << bad;
+}
+
+}  // namespace
+}  // namespace ochre
