@@ -116,13 +116,9 @@ struct Checkpointing {
     OutputTransaction transaction;
     write_partial_sums(transaction.add(path), header, film);
     if (preview && !out.png.empty()) {
-      OutputSettings png_only;
-      png_only.png = out.png;
-      png_only.colorspace = out.colorspace;
-      png_only.ocio_config = out.ocio_config;
-      png_only.display = out.display;
-      png_only.view = out.view;
-      png_only.exposure = out.exposure;
+      OutputSettings png_only = out;
+      png_only.exr.clear();
+      png_only.polarization_png.clear();
       add_outputs(transaction, film, png_only, scene->settings, stats, scene->file.string());
     }
     transaction.commit();
