@@ -158,7 +158,10 @@ void write_partial_sums(AtomicOutput& output, const PartialSumsHeader& header, c
     throw ImageError(fmt::format("cannot write {}: the film is not the size of the region", file));
   Imf::Header exr(Imath::Box2i({0, 0}, {header.image_width - 1, header.image_height - 1}),
                   Imath::Box2i({rect.x0, rect.y0}, {rect.x1 - 1, rect.y1 - 1}));
-  exr.compression() = Imf::ZIP_COMPRESSION;
+  // RLE: the high words of the sums are nearly all 0 (or all ones) and compress to nothing, the low words
+  // are noise that nothing compresses. Measured on a 1024x1024 part: RLE writes in a quarter of ZIP's time and
+  // reads in half, for files 15 % larger (docs/distributed.md, Figures).
+  exr.compression() = Imf::RLE_COMPRESSION;
   const std::vector<std::string> accumulators = film.accumulator_names();
   for (const char* c : {"R", "G", "B"}) exr.channels().insert(c, Imf::Channel(Imf::FLOAT));
   for (const std::string& a : accumulators)

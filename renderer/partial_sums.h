@@ -5,8 +5,8 @@
 //
 // - Each film accumulator (Film::accumulator_names(): XYZ, Y^2, the sample count, the AOV, Stokes and
 //   spectral sums) is four UINT channels "sums.<name>.w0" .. "w3", the 32-bit words of its 128-bit
-//   two's-complement value, least significant first. R, G, B hold the mean in the working space as a
-//   preview any EXR viewer shows.
+//   two's-complement value, least significant first, RLE-compressed. R, G, B hold the mean in the working
+//   space as a preview any EXR viewer shows.
 // - The data window is the rectangle of pixels held, inside a display window that is the whole image.
 // - String attributes: the render identity (renderer/render_identity.h), "ochre.partialSums" (format
 //   version "1"), "ochre.coverage" (the pieces held, renderer/coverage.h), the NaN/Inf counts, and

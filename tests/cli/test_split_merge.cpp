@@ -42,6 +42,13 @@ std::string read_bytes(const fs::path& path) {
 
 const std::string kSmall = "--resolution 40x28 --spp 12 -q";
 
+// Merges `parts` in dir into merged.exr and expects the bits of single.exr.
+void expect_merge_gives_the_single_render(const fs::path& dir, const std::string& parts) {
+  const CommandResult r = merge(dir, parts + " -o merged.exr");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+}
+
 TEST(SplitMerge, SampleRangesMergeToTheSingleRenderWithAovsAndSpectralLayers) {
   const fs::path dir = scratch_dir();
   const std::string layers = kSmall + " --aovs --spectral-bins 5";
@@ -62,9 +69,7 @@ TEST(SplitMerge, PartsMergeToTheSingleRenderWithStokesAndSpectralStokesLayers) {
   render(dir, kPolarized, layers + " -o single.exr --png single.png");  // not the scene's PNG path
   for (int i = 0; i < 3; ++i)
     render(dir, kPolarized, layers + " --part " + std::to_string(i) + "/3 -o p" + std::to_string(i) + ".exr");
-  const CommandResult r = merge(dir, "p0.exr p1.exr p2.exr -o merged.exr");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+  expect_merge_gives_the_single_render(dir, "p0.exr p1.exr p2.exr");
 }
 
 TEST(SplitMerge, RegionsMergeByPlacementAlsoCombinedWithSampleRanges) {
@@ -74,9 +79,7 @@ TEST(SplitMerge, RegionsMergeByPlacementAlsoCombinedWithSampleRanges) {
   render(dir, kCornell, kSmall + " --aovs --region 17,0,40,11 -o r1.exr");
   render(dir, kCornell, kSmall + " --aovs --region 0,11,40,28 --sample-range 0:3 -o r2.exr");
   render(dir, kCornell, kSmall + " --aovs --region 0,11,40,28 --sample-range 3:12 -o r3.exr");
-  const CommandResult r = merge(dir, "r3.exr r1.exr r0.exr r2.exr -o merged.exr");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+  expect_merge_gives_the_single_render(dir, "r3.exr r1.exr r0.exr r2.exr");
 }
 
 TEST(SplitMerge, GridTilesTimesSampleRangesMergeToTheSingleRender) {
@@ -89,9 +92,7 @@ TEST(SplitMerge, GridTilesTimesSampleRangesMergeToTheSingleRender) {
       render(dir, kCornell, fmt::format("{} --tile {}/3x2 --part {}/2 -o {}", kSmall, t, p, name));
       parts += " " + name;
     }
-  const CommandResult r = merge(dir, parts + " -o merged.exr");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+  expect_merge_gives_the_single_render(dir, parts);
 }
 
 TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
@@ -101,9 +102,7 @@ TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
     render(dir, kCornell, kSmall + " --part " + std::to_string(i) + "/4 -o p" + std::to_string(i) + ".exr");
   ASSERT_EQ(merge(dir, "p0.exr p2.exr --sums s02.exr").exit_code, 0);
   ASSERT_EQ(merge(dir, "s02.exr p3.exr --sums s023.exr").exit_code, 0);
-  const CommandResult r = merge(dir, "s023.exr p1.exr -o merged.exr");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
+  expect_merge_gives_the_single_render(dir, "s023.exr p1.exr");
   const CommandResult check = merge(dir, "--check s02.exr p3.exr");
   EXPECT_EQ(check.exit_code, 2);
   EXPECT_TRUE(contains(check.output, "missing: samples 3:6 of every pixel")) << check.output;
