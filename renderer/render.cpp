@@ -61,7 +61,7 @@ bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWa
 
 template <class Sampler>
 void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_x, int tile_y, Film& film,
-                 TileCounters& counters, const ProgressCallback& progress) {
+                 TileCounters& counters, const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   const RenderSettings& s = scene.settings;
   thread_local LobeArena arena;
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
@@ -74,12 +74,13 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, int tile_
   const int y_end = std::min(s.height, (tile_y + 1) * kTileSize);
   for (int y = tile_y * kTileSize; y < y_end; ++y) {
     for (int x = tile_x * kTileSize; x < x_end; ++x) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       for (uint32_t k = 0; k < s.spp; ++k) {
         const Sampler sampler(s.seed, pixel_index, s.sample_begin + k);
         const SampledWavelengths lambda =
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
-        const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
+        const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
         const SensorStokes S =
@@ -105,7 +106,8 @@ PolarizationChoice polarization_for(const Scene& scene) {
                                   scene.outputs.stokes);
 }
 
-RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress) {
+RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress,
+                   const std::atomic<bool>* cancel) {
   const RenderSettings& s = scene.settings;
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
@@ -120,10 +122,11 @@ RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progr
       [&](const tbb::blocked_range<int>& range) {
         for (int t = range.begin(); t != range.end(); ++t)
           if (s.sampler == "sobol")
-            render_tile<SobolSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress);
+            render_tile<SobolSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters, progress,
+                                      cancel);
           else
             render_tile<IndependentSampler>(scene, integrator, t % tiles_x, t / tiles_x, film, counters,
-                                            progress);
+                                            progress, cancel);
       },
       tbb::simple_partitioner());
   RenderStats stats;
@@ -134,6 +137,7 @@ RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progr
   stats.discarded = counters.discarded;
   stats.nonfinite_values = counters.nonfinite_values;
   stats.threads = threads;
+  stats.cancelled = cancel && cancel->load();
   return stats;
 }
 

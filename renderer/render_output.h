@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/exr_writer.h"
 #include "renderer/film.h"
 #include "renderer/render.h"
 #include "renderer/render_settings.h"
@@ -14,6 +15,12 @@ namespace ochre {
 
 // Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+
+// The EXR write_outputs() writes, in memory: R, G, B (`rgb`, film_to_rgb(film, colorspace)), then the AOV,
+// spectral and Stokes layers the film has, and the render's settings and statistics in the header.
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const std::string& colorspace,
+                          const RenderSettings& settings, const RenderStats& stats,
+                          const std::string& scene_file);
 
 // Throws InputError when an output directory is missing or not writable, or the display
 // transform cannot be built (unknown config, display or view).

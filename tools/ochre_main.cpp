@@ -36,7 +36,10 @@ int main(int argc, char** argv) {
   std::string polarization, sampler;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
-  render->add_option("scene", cmd.scene, "Scene file (JSON, docs/scene-format.md)")->required();
+  render->add_option("scene", cmd.scene, "Scene file (JSON, docs/scene-format.md; or Mitsuba 3 XML, .xml)")
+      ->required();
+  std::vector<std::string> defines;
+  render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
   render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
@@ -80,6 +83,14 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;  // --help / --version exit 0; bad usage is bad input
   }
 
+  for (const std::string& define : defines) {
+    const size_t equals = define.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      std::cerr << "ochre: error: -D: expected NAME=VALUE, got '" << define << "'\n";
+      return 2;
+    }
+    cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
+  }
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
