@@ -236,13 +236,12 @@ class Translator {
     const std::string& type = obj.type();
     std::vector<std::string> supported = {"to_world", "flip_normals", "bsdf", "emitter"};
     if (type == "obj" || type == "ply") {
-      const std::optional<std::string> file = obj.string("filename");
-      if (!file) obj.fail("a mesh needs <string name=\"filename\" value=\"...\"/>");
+      const std::string file = obj.required_string("filename");
       const bool face_normals = obj.boolean("face_normals", false);
       // Mitsuba flips the v of OBJ uvs by default (flip_tex_coords: true), not of PLY ones; ochre's v runs
       // up, Mitsuba's down the image: an OBJ needs no flip in ochre, a PLY one.
       const bool flip_tex_coords = obj.boolean("flip_tex_coords", type == "obj");
-      s = {{"type", "mesh"}, {"file", mitsuba_file_for_json(document_, element, *file)}};
+      s = {{"type", "mesh"}, {"file", mitsuba_file_for_json(document_, element, file)}};
       if (face_normals)
         s["face_normals"] = true;
       else
@@ -340,8 +339,7 @@ class Translator {
   // the same turned by 180 degrees about +y (its centre column looks along -z, docs/scene-format.md), so
   // a Mitsuba to_world turning by theta about +y is ochre's rotation theta + 180.
   nlohmann::json environment_map(MitsubaObject& obj) {
-    const std::optional<std::string> file = obj.string("filename");
-    if (!file) obj.fail("an envmap needs <string name=\"filename\" value=\"...\"/>");
+    const std::string file = obj.required_string("filename");
     const Matrix4d m = obj.transform("to_world").value_or(Matrix4d());
     require_rotation(m, obj, "environment map");
     if (std::abs(m(1, 1) - 1.0) > 1e-6)
@@ -353,7 +351,7 @@ class Translator {
     double rotation = theta + 180.0;
     if (rotation > 180.0) rotation -= 360.0;
     return {{"type", "environment"},
-            {"file", mitsuba_file_for_json(document_, obj.element(), *file)},
+            {"file", mitsuba_file_for_json(document_, obj.element(), file)},
             {"scale", scale},
             {"rotation", rotation}};
   }

@@ -105,8 +105,7 @@ class BsdfTranslator {
     MitsubaObject obj(element, document_);
     if (obj.type() != "bitmap")
       obj.fail(fmt::format("unsupported texture type \"{}\" (ochre reads: bitmap)", obj.type()));
-    const std::optional<std::string> file = obj.string("filename");
-    if (!file) obj.fail("a bitmap texture needs <string name=\"filename\" value=\"...\"/>");
+    const std::string file = obj.required_string("filename");
     const bool raw = obj.boolean("raw", false);
     const std::string filter = obj.string("filter_type", "bilinear");
     if (filter != "bilinear")
@@ -125,7 +124,7 @@ class BsdfTranslator {
     obj.finish({"filename", "raw", "filter_type", "wrap_mode", "to_uv", "format", "accel"});
 
     nlohmann::json node = {{"type", "texture"},
-                           {"file", mitsuba_file_for_json(document_, element, *file)},
+                           {"file", mitsuba_file_for_json(document_, element, file)},
                            {"colorspace", raw ? "linear" : "auto"}};
     if (to_uv && !to_uv->is_identity()) node["uv"] = {{"link", uv_transform(*to_uv, element)}};
     graph_.textured = true;

@@ -110,6 +110,14 @@ std::optional<std::string> MitsubaObject::string(const std::string& name) {
   return *value;
 }
 
+std::string MitsubaObject::required_string(const std::string& name) {
+  const std::optional<std::string> value = string(name);
+  if (!value)
+    fail(
+        fmt::format("<{} type=\"{}\"> needs <string name=\"{}\" value=\"...\"/>", element_.tag, type_, name));
+  return *value;
+}
+
 std::optional<Vec3d> MitsubaObject::point(const std::string& name) {
   if (!has(name)) return std::nullopt;
   return vector_value(typed(name, {"point", "vector"}, "a <point> or <vector>"));

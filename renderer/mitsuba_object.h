@@ -38,6 +38,8 @@ class MitsubaObject {
   std::string string(const std::string& name, const std::string& fallback) {
     return string(name).value_or(fallback);
   }
+  // A <string> the object cannot do without (a file name): its absence is an error showing how to write it.
+  std::string required_string(const std::string& name);
   std::optional<Vec3d> point(const std::string& name);
   std::optional<Matrix4d> transform(const std::string& name);
   // A colour, spectrum or number property (textures are refused here).

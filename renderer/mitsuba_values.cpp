@@ -87,21 +87,28 @@ double parse_number(const std::string& text, const MitsubaElement& element, cons
   fail_at(element, fmt::format("{}: \"{}\" is not a finite number", what, text));
 }
 
+namespace {
+
+// The words of a list: separated by commas and/or white space, as Mitsuba's tokenizer splits them.
+std::vector<std::string> list_items(const std::string& text) {
+  std::vector<std::string> items(1);
+  for (char c : text) {
+    if (c == ',' || std::isspace(static_cast<unsigned char>(c))) {
+      if (!items.back().empty()) items.emplace_back();
+    } else {
+      items.back() += c;
+    }
+  }
+  if (items.back().empty()) items.pop_back();
+  return items;
+}
+
+}  // namespace
+
 std::vector<double> parse_numbers(const std::string& text, const MitsubaElement& element,
                                   const std::string& what) {
   std::vector<double> numbers;
-  std::string token;
-  auto flush = [&] {
-    if (!token.empty()) numbers.push_back(parse_number(token, element, what));
-    token.clear();
-  };
-  for (char c : text) {
-    if (c == ',' || std::isspace(static_cast<unsigned char>(c)))
-      flush();
-    else
-      token += c;
-  }
-  flush();
+  for (const std::string& item : list_items(text)) numbers.push_back(parse_number(item, element, what));
   return numbers;
 }
 
@@ -250,23 +257,13 @@ nlohmann::json spectrum_table(const std::vector<std::pair<double, double>>& pair
 
 std::vector<std::pair<double, double>> inline_pairs(const std::string& text, const MitsubaElement& element) {
   std::vector<std::pair<double, double>> pairs;
-  std::string token;
-  auto flush = [&] {
-    if (token.empty()) return;
-    const size_t colon = token.find(':');
-    if (colon == std::string::npos || token.find(':', colon + 1) != std::string::npos)
-      fail_at(element, fmt::format("value: \"{}\" is not a wavelength:value pair", token));
-    pairs.emplace_back(parse_number(token.substr(0, colon), element, "wavelength"),
-                       parse_number(token.substr(colon + 1), element, "value"));
-    token.clear();
-  };
-  for (char c : text) {
-    if (c == ',' || std::isspace(static_cast<unsigned char>(c)))
-      flush();
-    else
-      token += c;
+  for (const std::string& item : list_items(text)) {
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos || item.find(':', colon + 1) != std::string::npos)
+      fail_at(element, fmt::format("value: \"{}\" is not a wavelength:value pair", item));
+    pairs.emplace_back(parse_number(item.substr(0, colon), element, "wavelength"),
+                       parse_number(item.substr(colon + 1), element, "value"));
   }
-  flush();
   return pairs;
 }
 

@@ -15,6 +15,7 @@ namespace ochre {
 namespace {
 
 constexpr int kMaxIncludeDepth = 15;  // as Mitsuba 3
+constexpr int kMaxNesting = 100;      // elements within elements: scenes use a handful; bounds the recursion
 
 // One file's text, for line numbers of elements and of syntax errors.
 struct SourceFile {
@@ -194,6 +195,13 @@ class XmlReader {
   }
 
   void read_children(pugi::xml_node node, const SourceFile& source, MitsubaElement& parent, int depth) {
+    struct Level {
+      int& n;
+      explicit Level(int& count) : n(++count) {}
+      ~Level() { --n; }
+    } level(nesting_);
+    if (nesting_ > kMaxNesting)
+      fail(parent, fmt::format("elements are nested more than {} deep", kMaxNesting));
     for (pugi::xml_node child : node.children()) {
       if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
         MitsubaElement where = parent;
@@ -268,6 +276,7 @@ class XmlReader {
   std::vector<std::unique_ptr<SourceFile>> sources_;
   std::vector<std::unique_ptr<pugi::xml_document>> documents_;
   std::vector<std::filesystem::path> include_stack_;
+  int nesting_ = 0;
 };
 
 void register_ids(const MitsubaElement& element, MitsubaDocument& document) {

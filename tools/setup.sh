@@ -9,13 +9,13 @@ cd "$(dirname "$0")/.."
 # Build: compilers, CMake, Ninja and the libraries of CMakeLists.txt; openimageio-tools because Debian's
 # OpenImageIO CMake config refuses to load without its executables (iinfo, oiiotool, ...). Tests:
 # libgtest-dev (Debian's GTest config needs no gmock). Mitsuba 3 XML scenes (docs/mitsuba-import.md):
-# libpugixml-dev. Plots of ochre-brdf / ochre-converge
+# libpugixml-dev. The Python module (docs/python.md): pybind11-dev, python3-dev. Plots of ochre-brdf / ochre-converge
 # (tools/plot_*.py): python3 with numpy and matplotlib.
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libopenimageio-dev openimageio-tools libopencolorio-dev libembree-dev libopenexr-dev
   libimath-dev libosd-dev libtbb-dev libassimp-dev nlohmann-json3-dev libcli11-dev libfmt-dev libpugixml-dev
-  libgtest-dev python3 python3-numpy python3-matplotlib
+  libgtest-dev python3 python3-numpy python3-matplotlib pybind11-dev python3-dev
   # Fuzzing (tests/fuzz, tools/fuzz.sh): clang with libFuzzer and the sanitizer runtimes.
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )

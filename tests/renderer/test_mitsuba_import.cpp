@@ -84,7 +84,7 @@ TEST(MitsubaImport, EveryElementOfTheTestSceneTranslates) {
   EXPECT_EQ(node_of_type(m["textured"], "texture")["colorspace"], "auto");
 
   const json& shapes = s["shapes"];
-  ASSERT_EQ(shapes.size(), 7u);
+  ASSERT_EQ(shapes.size(), 8u);
   EXPECT_EQ(shapes[0]["type"], "mesh");
   EXPECT_EQ(shapes[0]["smooth_normals"], true);
   EXPECT_FALSE(shapes[0].contains("flip_uv_v"));  // OBJ: Mitsuba flips v by default, as ochre reads it
@@ -101,6 +101,10 @@ TEST(MitsubaImport, EveryElementOfTheTestSceneTranslates) {
   const json& glow = m[shapes[5]["material"].get<std::string>()];
   EXPECT_EQ(node_of_type(glow, "emission")["color"], json({4.0, 3.5, 3.0}));
   EXPECT_EQ(node_of_type(glow, "lambert")["color"], 0.5);
+  EXPECT_EQ(shapes[7]["flip_normals"], true);
+  EXPECT_EQ(shapes[7]["material"], "grey");                       // through <alias id="grey" as="grey-too"/>
+  EXPECT_EQ(node_of_type(m["mirror"], "conductor")["eta"], 0.0);  // Mitsuba's default conductor: a mirror
+  EXPECT_EQ(node_of_type(m["mirror"], "conductor")["k"], 1.0);
 
   const json& lights = s["lights"];
   ASSERT_EQ(lights.size(), 3u);
@@ -113,7 +117,7 @@ TEST(MitsubaImport, EveryElementOfTheTestSceneTranslates) {
 
   // The translated scene loads through ochre's JSON loader.
   const auto scene = load_scene(data_dir() / "elements.xml");
-  EXPECT_EQ(scene->meshes.size(), 7u);
+  EXPECT_EQ(scene->meshes.size(), 8u);
   EXPECT_EQ(scene->lights.size(), 4u);  // the emissive disk is an area light
 }
 
@@ -332,6 +336,9 @@ std::vector<Refusal> refusals() {
        scene_xml(
            R"(<bsdf type="diffuse" id="d"><spectrum name="reflectance" value="400:0.5, 700:-0.1"/></bsdf>)"),
        {"negative value -0.1"}},
+      {"no file name",
+       scene_xml(R"(<shape type="ply"/>)"),
+       {"<shape type=\"ply\"> needs <string name=\"filename\" value=\"...\"/>"}},
       {"missing mesh",
        scene_xml(R"(<shape type="obj"><string name="filename" value="gone.obj"/></shape>)"),
        {"<shape type=\"obj\">", "\"gone.obj\" not found"}},
@@ -349,6 +356,15 @@ INSTANTIATE_TEST_SUITE_P(All, MitsubaRefusal, ::testing::ValuesIn(refusals()),
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
                          });
+
+TEST(MitsubaImport, DeepNestingIsRefusedNotACrash) {
+  std::string text = "<scene version=\"3.0.0\">\n";
+  for (int i = 0; i < 100000; ++i) text += "<bsdf type=\"twosided\">";
+  for (int i = 0; i < 100000; ++i) text += "</bsdf>";
+  text += "\n</scene>\n";
+  const std::string message = test::input_error_of([&] { translate_mitsuba_scene(write_scene(text)); });
+  EXPECT_NE(message.find("nested more than 100 deep"), std::string::npos) << message.substr(0, 300);
+}
 
 TEST(MitsubaImport, IncludeCyclesAreRefused) {
   const auto dir = test::scratch_dir();
