@@ -143,6 +143,24 @@ class SameBitsAsTheCommandLine(unittest.TestCase):
         self.assertTrue(np.array_equal(scene.render(threads=1).rgb, scene.render(threads=2).rgb))
 
 
+class Concurrency(unittest.TestCase):
+    def test_two_threads_rendering_one_scene_get_their_own_settings(self):
+        scene = ochre.load_scene(BOX, resolution=(16, 16))
+        results = {}
+
+        def render(spp):
+            results[spp] = scene.render(spp=spp, seed=3)
+
+        threads = [threading.Thread(target=render, args=(spp,)) for spp in (1, 7)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertEqual(results[1].stats["samples"], 16 * 16)
+        self.assertEqual(results[7].stats["samples"], 16 * 16 * 7)
+        self.assertTrue(np.array_equal(results[7].rgb, scene.render(spp=7, seed=3).rgb))
+
+
 class Progress(unittest.TestCase):
     def test_progress_reaches_the_total(self):
         calls = []

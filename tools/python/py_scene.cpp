@@ -197,6 +197,13 @@ class PyScene {
   // Renders with the GIL released on a worker thread; this thread wakes every 0.1 s to report progress and
   // to let Python see Ctrl-C (KeyboardInterrupt), which stops the render at a pixel boundary.
   std::unique_ptr<RenderResult> render(const RenderOptions& o, const py::object& progress) {
+    // One render of a scene at a time (a render changes its settings for a while); wait for it without the
+    // GIL, so that the render under way can report its progress.
+    std::unique_lock busy(rendering_, std::defer_lock);
+    {
+      py::gil_scoped_release release;
+      busy.lock();
+    }
     Scene& s = *scene_;
     const RenderSettings saved_settings = s.settings;
     const OutputSettings saved_outputs = s.outputs;
@@ -284,6 +291,7 @@ class PyScene {
 
  private:
   std::unique_ptr<Scene> scene_;
+  std::mutex rendering_;
 };
 
 // {"spp": 64, ...}: the values of Mitsuba $parameters, written as str() writes them.
