@@ -14,6 +14,31 @@ CameraBasis camera_basis_look_at(const Vec3& eye, const Vec3& target, const Vec3
   return b;
 }
 
+double fov_across_shorter_axis(double fov_degrees, FovAxis axis, int width, int height) {
+  if (axis == FovAxis::Smaller) return fov_degrees;
+  // The tangents of the half-angles scale with the film extents (a pinhole's image plane).
+  const double shorter = std::min(width, height), w = width, h = height;
+  double extent = shorter;
+  switch (axis) {
+    case FovAxis::X:
+      extent = w;
+      break;
+    case FovAxis::Y:
+      extent = h;
+      break;
+    case FovAxis::Diagonal:
+      extent = std::sqrt(w * w + h * h);
+      break;
+    case FovAxis::Larger:
+      extent = std::max(w, h);
+      break;
+    case FovAxis::Smaller:
+      break;
+  }
+  const double half = std::tan(0.5 * fov_degrees * M_PI / 180.0) * shorter / extent;
+  return 2.0 * std::atan(half) * 180.0 / M_PI;
+}
+
 namespace {
 // Half extents of the film for a given half-extent of its shorter axis.
 void film_half_extents(float shorter_half, int width, int height, float& hw, float& hh) {

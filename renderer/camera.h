@@ -12,6 +12,14 @@ struct CameraBasis {
   Vec3 right, up, forward;  // orthonormal, right-handed: right x up = -forward
 };
 
+// The film axis a field of view is measured across (the "fov_axis" of a camera, as in Mitsuba 3):
+// x (width), y (height), the diagonal, or the smaller / larger of width and height.
+enum class FovAxis { X, Y, Diagonal, Smaller, Larger };
+
+// The field of view in degrees across the shorter film axis that equals `fov_degrees` across `axis` of a
+// width x height film (the same angle for Smaller).
+double fov_across_shorter_axis(double fov_degrees, FovAxis axis, int width, int height);
+
 // Basis looking from eye at target; `up` need not be orthogonal to the view direction.
 CameraBasis camera_basis_look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
 

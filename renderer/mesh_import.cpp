@@ -200,6 +200,7 @@ Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
   unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   if (options.smooth_normals) flags |= aiProcess_GenSmoothNormals;
   if (options.flip_uv_v) flags |= aiProcess_FlipUVs;
+  if (options.face_normals) flags |= aiProcess_DropNormals;
   const aiScene* scene = read_mesh_file(importer, file, flags);
   std::vector<Mesh> parts;
   if (scene->mRootNode != nullptr) {

@@ -35,6 +35,7 @@ namespace ochre {
 struct MeshImportOptions {
   bool smooth_normals = false;  // generate smooth normals for meshes that have none
   bool flip_uv_v = false;       // v -> 1 - v after import
+  bool face_normals = false;    // drop the file's normals: flat shading (Mitsuba's face_normals)
 };
 
 Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,

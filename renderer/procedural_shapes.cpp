@@ -70,6 +70,47 @@ Mesh make_disk(float radius, int segments) {
   return mesh;
 }
 
+Mesh make_cube(Vec3 size) {
+  require_positive(size.x, "cube", "size.x");
+  require_positive(size.y, "cube", "size.y");
+  require_positive(size.z, "cube", "size.z");
+  // Mitsuba 3's cube (src/shapes/cube.cpp): four corners per face, each face two triangles (a, b, c) and
+  // (d, a, c) over its corners a, b, c, d, whose Mitsuba uvs are (0,1), (1,1), (1,0), (0,0).
+  static constexpr float kCorners[6][4][3] = {{{1, -1, -1}, {1, -1, 1}, {-1, -1, 1}, {-1, -1, -1}},
+                                              {{1, 1, -1}, {-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}},
+                                              {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+                                              {{1, -1, 1}, {1, 1, 1}, {-1, 1, 1}, {-1, -1, 1}},
+                                              {{-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}, {-1, -1, -1}},
+                                              {{1, 1, -1}, {1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}}};
+  static constexpr float kNormals[6][3] = {{0, -1, 0}, {0, 1, 0},  {1, 0, 0},
+                                           {0, 0, 1},  {-1, 0, 0}, {0, 0, -1}};
+  static constexpr Vec2 kUv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // 1 - v of Mitsuba's
+  Mesh mesh;
+  mesh.name = "cube";
+  const Vec3 half = size * 0.5f;
+  for (int face = 0; face < 6; ++face) {
+    const Vec3 n{kNormals[face][0], kNormals[face][1], kNormals[face][2]};
+    for (int corner = 0; corner < 4; ++corner) {
+      const float* c = kCorners[face][corner];
+      add_vertex(mesh, {c[0] * half.x, c[1] * half.y, c[2] * half.z}, n, kUv[corner]);
+    }
+    const auto base = static_cast<uint32_t>(4 * face);
+    add_triangle(mesh, base, base + 1, base + 2);
+    add_triangle(mesh, base + 3, base, base + 2);
+  }
+  mesh.reserve_vertex_padding();
+  return mesh;
+}
+
+void flip_normals(Mesh& mesh) {
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+  for (Vec3& n : mesh.normals) n = -n;
+}
+
+void flip_uv_v(Mesh& mesh) {
+  for (Vec2& uv : mesh.uvs) uv.y = 1.0f - uv.y;
+}
+
 double sphere_triangle_count(int subdivisions) {
   const double s = subdivisions;
   return 4.0 * s * s - 4.0 * s;  // 2 per grid cell, but one at each pole

@@ -25,6 +25,17 @@ Mesh make_disk(float radius, int segments = 64);
 // with bit-identical positions, so the surface is watertight.
 Mesh make_sphere(float radius, int subdivisions);
 
+// Box size.x by size.y by size.z centred at the origin, 24 vertices (flat faces), 12 triangles, normals
+// outward. The faces, their winding and their uvs are those of Mitsuba 3's cube (each face maps [0,1]^2)
+// with v measured upward (v_ochre = 1 - v_Mitsuba), so an image appears on each face as in Mitsuba.
+Mesh make_cube(Vec3 size);
+
+// Reverses every triangle's winding and negates the normals: the surface faces the other way (which
+// side emits, where a dielectric's outside is).
+void flip_normals(Mesh& mesh);
+// v -> 1 - v for every uv.
+void flip_uv_v(Mesh& mesh);
+
 // Triangles of make_sphere(radius, subdivisions), and the peak memory of building them with their BVH
 // (renderer/memory_budget.h), checked before a scene asks for a sphere.
 double sphere_triangle_count(int subdivisions);

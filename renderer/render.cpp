@@ -68,7 +68,7 @@ struct Tile {
 template <class Sampler>
 void render_tile(const Scene& scene, const PathIntegrator& integrator, const Tile& tile,
                  const PixelRect& rect, SampleRange samples, Film& film, TileCounters& counters,
-                 const ProgressCallback& progress) {
+                 const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   const RenderSettings& s = scene.settings;
   thread_local LobeArena arena;
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
@@ -79,6 +79,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, const Til
   uint64_t discarded = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
       // Random numbers and rays follow the pixel's place in the image; the film holds only the rectangle.
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       const int fx = x - rect.x0, fy = y - rect.y0;
@@ -86,7 +87,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, const Til
         const Sampler sampler(s.seed, pixel_index, k);
         const SampledWavelengths lambda =
             SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
-        const Vec2 jitter = sampler.get_2d(SampleDims::kPixelJitter);
+        const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
         const SensorStokes S =
@@ -121,14 +122,15 @@ PolarizationChoice polarization_for(const Scene& scene) {
                                   scene.outputs.stokes);
 }
 
-RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress) {
+RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress,
+                   const std::atomic<bool>* cancel) {
   const RenderSettings& s = scene.settings;
   return render_range(scene, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
-                      progress);
+                      progress, cancel);
 }
 
 RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
-                         const ProgressCallback& progress) {
+                         const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   const RenderSettings& s = scene.settings;
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
@@ -150,10 +152,11 @@ RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, 
       [&](const tbb::blocked_range<int>& range) {
         for (int t = range.begin(); t != range.end(); ++t)
           if (s.sampler == "sobol")
-            render_tile<SobolSampler>(scene, integrator, tile_at(t), rect, samples, film, counters, progress);
+            render_tile<SobolSampler>(scene, integrator, tile_at(t), rect, samples, film, counters, progress,
+                                      cancel);
           else
             render_tile<IndependentSampler>(scene, integrator, tile_at(t), rect, samples, film, counters,
-                                            progress);
+                                            progress, cancel);
       },
       tbb::simple_partitioner());
   RenderStats stats;
@@ -164,6 +167,7 @@ RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, 
   stats.discarded = counters.discarded;
   stats.nonfinite_values = counters.nonfinite_values;
   stats.threads = threads;
+  stats.cancelled = cancel && cancel->load();
   return stats;
 }
 

@@ -105,6 +105,35 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) 
   return rgb;
 }
 
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const std::string& colorspace,
+                          const RenderSettings& settings, const RenderStats& stats,
+                          const std::string& scene_file) {
+  ExrImage image;
+  image.width = film.width();
+  image.height = film.height();
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> channel(n);
+    for (size_t i = 0; i < n; ++i) channel[i] = rgb[i * 3 + c];
+    image.channels.emplace_back(names[c], std::move(channel));
+  }
+  if (film.has_aovs()) add_aov_channels(film, colorspace, image);
+  if (film.spectral_bins() > 0) add_spectral_channels(film, image);
+  if (film.has_stokes()) add_stokes_channels(film, image);
+  image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+  image.string_attributes["software"] = "ochre " OCHRE_VERSION;
+  image.string_attributes["ochre.scene"] = scene_file;
+  image.string_attributes["ochre.colorspace"] = colorspace;
+  image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
+  image.string_attributes["ochre.sampleRange"] =
+      fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
+  image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+  image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+  image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
+  return image;
+}
+
 void check_outputs(const OutputSettings& outputs) {
   try {
     if (outputs.exr.empty() && outputs.png.empty())
@@ -173,29 +202,7 @@ std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film&
   std::vector<std::string> written;
   const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
   if (!outputs.exr.empty()) {
-    ExrImage image;
-    image.width = film.width();
-    image.height = film.height();
-    const size_t n = static_cast<size_t>(image.width) * image.height;
-    const char* names[3] = {"R", "G", "B"};
-    for (int c = 0; c < 3; ++c) {
-      std::vector<float> channel(n);
-      for (size_t i = 0; i < n; ++i) channel[i] = rgb[i * 3 + c];
-      image.channels.emplace_back(names[c], std::move(channel));
-    }
-    if (film.has_aovs()) add_aov_channels(film, outputs.colorspace, image);
-    if (film.spectral_bins() > 0) add_spectral_channels(film, image);
-    if (film.has_stokes()) add_stokes_channels(film, image);
-    image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
-    image.string_attributes["software"] = "ochre " OCHRE_VERSION;
-    image.string_attributes["ochre.scene"] = scene_file;
-    image.string_attributes["ochre.colorspace"] = outputs.colorspace;
-    image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
-    image.string_attributes["ochre.sampleRange"] =
-        fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
-    image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
-    image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
-    image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
+    const ExrImage image = render_exr_image(film, rgb, outputs.colorspace, settings, stats, scene_file);
     write_exr(transaction.add(outputs.exr), image);
     written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
                                   image.height));

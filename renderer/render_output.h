@@ -33,6 +33,12 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
 // attributes to image (film.spectral_bins() > 0).
 void add_spectral_channels(const Film& film, ExrImage& image);
 
+// The EXR write_outputs() writes, in memory: R, G, B (`rgb`, film_to_rgb(film, colorspace)), then the AOV,
+// spectral and Stokes layers the film has, and the render's settings and statistics in the header.
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const std::string& colorspace,
+                          const RenderSettings& settings, const RenderStats& stats,
+                          const std::string& scene_file);
+
 // Throws InputError when an output directory is missing or not writable, or the display
 // transform cannot be built (unknown config, display or view).
 void check_outputs(const OutputSettings& outputs);

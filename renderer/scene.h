@@ -14,6 +14,7 @@
 #include "renderer/distribution_1d.h"
 #include "renderer/environment_light.h"
 #include "renderer/mesh.h"
+#include "renderer/pixel_filter.h"
 #include "renderer/render_settings.h"
 #include "renderer/texture_system.h"
 
@@ -25,6 +26,7 @@ struct Scene {
   RenderSettings settings;
   OutputSettings outputs;
   Camera camera;
+  PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
 
   std::vector<std::shared_ptr<const CompiledMaterial>> materials;
   std::vector<std::string> material_names;

@@ -17,6 +17,7 @@
 #include "renderer/json_file.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mesh_import.h"
+#include "renderer/mitsuba_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/spectrum_json.h"
@@ -58,11 +59,25 @@ std::pair<double, double> number_pair(const JsonFields& f, const char* key, cons
           json_number(pair[1], where + "[1]", min, max, min_exclusive)};
 }
 
+// "filter": {"type": "box", "radius": 0.5} or {"type": "gaussian", "stddev": 0.5} (pixel_filter.h).
+PixelFilter parse_pixel_filter(const JsonFields& f) {
+  const std::string type = f.required_string("type");
+  if (type == "box") {
+    f.check_known({"type", "radius"});
+    return PixelFilter::box(static_cast<float>(f.number("radius", 0.5, 0.0, 64.0, true)));
+  }
+  if (type == "gaussian") {
+    f.check_known({"type", "stddev"});
+    return PixelFilter::gaussian(static_cast<float>(f.number("stddev", 0.5, 0.0, 64.0, true)));
+  }
+  f.fail("type", fmt::format("unknown filter '{}' (known: box, gaussian)", type));
+}
+
 void load_settings(const JsonFields& top, Scene& scene) {
   RenderSettings& s = scene.settings;
   if (top.has("film")) {
     const JsonFields f(top.require("film"), top.child("film"));
-    f.check_known({"resolution", "colorspace"});
+    f.check_known({"resolution", "colorspace", "filter"});
     if (f.has("resolution")) {
       const std::string where = f.child("resolution");
       const nlohmann::json& r = json_array(f.require("resolution"), where, 2, "[width, height]");
@@ -70,6 +85,8 @@ void load_settings(const JsonFields& top, Scene& scene) {
       s.height = static_cast<int>(json_integer(r[1], where + "[1]", 1, kMaxResolution));
     }
     scene.outputs.colorspace = f.string("colorspace", scene.outputs.colorspace);
+    if (f.has("filter"))
+      scene.pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
   }
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
@@ -150,13 +167,24 @@ std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
   return rotated_element(static_cast<float>(degrees * M_PI / 180.0), linear_polarizer());
 }
 
+FovAxis parse_fov_axis(const JsonFields& f) {
+  const std::string axis = f.string("fov_axis", "smaller");
+  if (axis == "smaller") return FovAxis::Smaller;
+  if (axis == "larger") return FovAxis::Larger;
+  if (axis == "x") return FovAxis::X;
+  if (axis == "y") return FovAxis::Y;
+  if (axis == "diagonal") return FovAxis::Diagonal;
+  f.fail("fov_axis", fmt::format("unknown axis '{}' (known: smaller, larger, x, y, diagonal)", axis));
+}
+
 Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
-  f.check_known({"type", "fov", "size", "eye", "target", "up", "transform", "polarizer"});
+  f.check_known({"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer"});
   // Every given field is checked, also those the chosen placement or type does not use.
   const std::string type = f.string("type", "perspective");
-  const auto fov = static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true));
+  const auto fov = static_cast<float>(
+      fov_across_shorter_axis(f.number("fov", 40.0, 0.0, 179.0, true), parse_fov_axis(f), s.width, s.height));
   const auto size = static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true));
   CameraBasis basis;
   if (f.has("transform") && (f.has("eye") || f.has("target") || f.has("up")))
@@ -287,19 +315,24 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
                                  : Transform::identity();
   Mesh mesh;
   if (type == "mesh") {
-    f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name",
-                   "subdivision", "displacement", "polarizer"});
+    f.check_known({"type", "file", "material", "transform", "smooth_normals", "face_normals", "flip_uv_v",
+                   "flip_normals", "name", "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
     if (path.is_relative()) path = scene.file.parent_path() / path;
     MeshImportOptions options;
     options.smooth_normals = f.boolean("smooth_normals", false);
+    options.face_normals = f.boolean("face_normals", false);
     options.flip_uv_v = f.boolean("flip_uv_v", false);
-    if (f.has("subdivision") && options.flip_uv_v)
-      f.fail("flip_uv_v", "is not supported with \"subdivision\" (flip the uvs in the file)");
+    if (options.smooth_normals && options.face_normals)
+      f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+    for (const char* key : {"flip_uv_v", "face_normals"})
+      if (f.has("subdivision") && f.boolean(key, false))
+        f.fail(key, "is not supported with \"subdivision\" (change the file instead)");
     mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
                                 : load_triangles(f, path, to_world, options);
   } else if (type == "sphere") {
-    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
+    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer",
+                   "flip_uv_v", "flip_normals"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
     const int subdivisions = static_cast<int>(f.integer("subdivisions", 96, 4, 4096));
     check_memory_estimate(sphere_memory_bytes(subdivisions),
@@ -309,7 +342,8 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     mesh = f.in_context("", [&] { return make_sphere(radius, subdivisions); });
     f.in_context("", [&] { mesh.transform(to_world * Transform::translate(center)); });
   } else if (type == "plane") {
-    f.check_known({"type", "size", "material", "transform", "name", "polarizer"});
+    f.check_known(
+        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
     Vec2 size{2, 2};
     if (f.has("size")) {
       const auto [width, height] = number_pair(f, "size", "[width, height]", 0.0, kNoMaximum, true);
@@ -318,20 +352,30 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     mesh = f.in_context("", [&] { return make_plane(size); });
     f.in_context("", [&] { mesh.transform(to_world); });
   } else if (type == "disk") {
-    f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer"});
+    f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer", "flip_uv_v",
+                   "flip_normals"});
     const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
     const int segments = static_cast<int>(f.integer("segments", 128, 3, 1 << 20));
     mesh = f.in_context("", [&] { return make_disk(radius, segments); });
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "cube") {
+    f.check_known(
+        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
+    const Vec3 size = f.vec3("size", {2, 2, 2});
+    mesh = f.in_context("size", [&] { return make_cube(size); });
     f.in_context("", [&] { mesh.transform(to_world); });
   } else if (type == "groove_plate" || type == "cylinder" || type == "grooved_cylinder") {
     mesh = load_groove_shape(f, type);
     f.in_context("", [&] { mesh.transform(to_world); });
   } else {
     f.fail("type",
-           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, groove_plate, cylinder, "
-                       "grooved_cylinder)",
+           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, cube, groove_plate, "
+                       "cylinder, grooved_cylinder)",
                        type));
   }
+  // Every shape may face the other way; procedural ones may flip their uvs (meshes do it on import).
+  if (f.boolean("flip_normals", false)) flip_normals(mesh);
+  if (type != "mesh" && f.boolean("flip_uv_v", false)) flip_uv_v(mesh);
   mesh.name = f.string("name", type);
   mesh.material = material_index(scene, f);
   mesh.validate(f.where());
@@ -359,8 +403,8 @@ void check_power(const Light& light, const JsonFields& f, const char* key) {
 }
 
 std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
-  f.check_known(
-      {"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity", "polarizer"});
+  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "falloff",
+                 "intensity", "polarizer"});
   const Vec3 position = f.required_vec3("position");
   if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
   const char* aim = f.has("direction") ? "direction" : "target";
@@ -370,9 +414,13 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
     f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
   const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
   const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
+  const std::string ramp = f.string("falloff", "smoothstep");
+  if (ramp != "smoothstep" && ramp != "linear")
+    f.fail("falloff", fmt::format("unknown falloff '{}' (known: smoothstep, linear)", ramp));
   auto light = std::make_unique<SpotLight>(
       position, direction, static_cast<float>(cone), static_cast<float>(falloff),
-      parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+      parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir),
+      ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep);
   light->polarizer_axis = parse_light_polarizer(f);
   return light;
 }
@@ -442,11 +490,14 @@ void check_area_light_power(const Scene& scene, const JsonFields& top) {
   }
 }
 
-std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const SceneOverrides& overrides) {
+std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string& file,
+                                   const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  if (!overrides.parameters.empty())
+    throw InputError(fmt::format("{}: scene parameters ({}=...) apply to Mitsuba XML scenes only", file,
+                                 overrides.parameters.front().first));
   auto scene = std::make_unique<Scene>();
-  scene->file = std::filesystem::absolute(path);
-  const std::string file = path.string();
-  const nlohmann::json root = read_json_file(path, "scene file");
+  scene->file = std::filesystem::absolute(scene_path);
+  if (!root.is_object()) throw InputError(fmt::format("{}: a scene must be a JSON object", file));
   const JsonFields top(root, file + ":");
   top.check_known(
       {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
@@ -482,15 +533,22 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
 
 }  // namespace
 
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
+                                       const std::filesystem::path& scene_path,
+                                       const SceneOverrides& overrides) {
   try {
-    return load_scene_file(path, overrides);
+    return build_scene(root, name, scene_path, overrides);
   } catch (const GraphError& e) {
     throw InputError(e.what());
   } catch (const nlohmann::json::exception& e) {
     // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
-    throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    throw InputError(fmt::format("{}: {}", name, e.what()));
   }
+}
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  if (is_mitsuba_scene_file(path)) return load_mitsuba_scene(path, overrides);
+  return load_scene_json(read_json_file(path, "scene file"), path.string(), path, overrides);
 }
 
 }  // namespace ochre

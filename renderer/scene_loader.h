@@ -1,10 +1,16 @@
 #pragma once
-// Loads a JSON scene (docs/scene-format.md) into a Scene. Every problem in the file or in a
-// file it names throws InputError with the file and the field at fault; nothing is rendered
-// or written before the whole scene has loaded.
+// Loads a scene into a Scene: a JSON scene file (docs/scene-format.md), a Mitsuba 3 XML scene (a file
+// ending in .xml, translated into the same JSON by renderer/mitsuba_import.h, docs/mitsuba-import.md), or
+// the JSON as a value already parsed (a Python dict). Every problem in the scene or in a file it names
+// throws InputError with the file and the field at fault; nothing is rendered or written before the whole
+// scene has loaded.
 
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "renderer/scene.h"
 
@@ -17,8 +23,16 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<std::string> polarization;
   std::optional<std::string> sampler;
+  // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
+  std::vector<std::pair<std::string, std::string>> parameters;
 };
 
 std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
+
+// A scene given as JSON: `name` names it in every message ("scene.json", "<dict>"); relative paths in it
+// resolve against the directory of `scene_path` (scene.file).
+std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
+                                       const std::filesystem::path& scene_path,
+                                       const SceneOverrides& overrides = {});
 
 }  // namespace ochre

@@ -65,11 +65,11 @@ SpectrumPtr from_object(const nlohmann::json& value, const std::string& where,
   // Named spectra and blackbodies are >= 0 and the scale is checked: only a table can be negative.
   if (const auto negative = first_negative_value(*spectrum)) {
     const std::string file = value.contains("file") ? value["file"].get<std::string>() : "";
+    const char* key = !file.empty() ? ".file" : value.contains("values") ? ".values" : "";
     throw InputError(
         fmt::format("{}{}: {}negative value {} at {} nm (spectra of lights, emission and "
                     "reflectances must be >= 0 at every wavelength)",
-                    where, file.empty() ? "" : ".file", file.empty() ? "" : file + ": ", negative->value,
-                    negative->lambda_nm));
+                    where, key, file.empty() ? "" : file + ": ", negative->value, negative->lambda_nm));
   }
   return spectrum;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Spot light: a point light whose intensity I(lambda) is confined to a cone. Full intensity inside
-// `falloff_start` (half-angle), a smoothstep down to zero at `cone_angle` (half-angle), nothing
-// outside (pbrt-v4's spotlight profile).
+// `falloff_start` (half-angle), a ramp down to zero at `cone_angle` (half-angle), nothing outside. The
+// ramp is a smoothstep in the cosine (pbrt-v4's spotlight profile) or linear in the angle (Mitsuba 3's
+// spot emitter).
 
 #include "renderer/light.h"
 #include "spectra/spectrum.h"
@@ -10,9 +11,11 @@ namespace ochre {
 
 class SpotLight final : public Light {
  public:
+  enum class Falloff { Smoothstep, Linear };
+
   // Angles are half-angles in degrees, 0 < falloff_start <= cone_angle <= 180.
   SpotLight(const Vec3& position, const Vec3& direction, float cone_angle_deg, float falloff_start_deg,
-            SpectrumPtr intensity);
+            SpectrumPtr intensity, Falloff falloff = Falloff::Smoothstep);
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
@@ -24,6 +27,8 @@ class SpotLight final : public Light {
  private:
   Vec3 position_, direction_;
   float cos_cone_, cos_falloff_;
+  float cone_, falloff_start_;  // radians
+  Falloff falloff_;
   SpectrumPtr intensity_;
 };
 

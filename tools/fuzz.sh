@@ -10,7 +10,7 @@
 #                                               first finding (exit 1); exit 77 (skip) without clang-14
 #   tools/fuzz.sh --build                       configures and builds the fuzz tree only (exit 77 without
 #                                               clang-14 / libFuzzer)
-#   tools/fuzz.sh --list                        the targets: scene material mesh csv envmap
+#   tools/fuzz.sh --list                        the targets: scene material mesh csv envmap mitsuba
 #
 # The fuzz tree (clang-14, -fsanitize=fuzzer,address,undefined, -O1) is build/fuzz, or
 # $OCHRE_FUZZ_BUILD_DIR. A long run grows its corpus in build/fuzz/corpus/TARGET (kept between runs) from
@@ -22,7 +22,7 @@ set -euo pipefail
 SOURCE_DIR="$(cd "$(dirname "$0")/.." && pwd)"
 BUILD_DIR="${OCHRE_FUZZ_BUILD_DIR:-$SOURCE_DIR/build/fuzz}"
 CXX_FUZZ="${OCHRE_FUZZ_CXX:-clang++-14}"
-TARGETS="scene material mesh csv envmap"
+TARGETS="scene material mesh csv envmap mitsuba"
 SKIP=77
 
 usage() {

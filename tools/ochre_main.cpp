@@ -49,7 +49,10 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
   render->add_option("scene", cmd.scene,
-                     "Scene file (JSON, docs/scene-format.md); with --resume: the scene moved");
+                     "Scene file (JSON, docs/scene-format.md; or Mitsuba 3 XML, .xml); with --resume: the scene "
+                     "moved");
+  std::vector<std::string> defines;
+  render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
   render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
@@ -159,7 +162,8 @@ int main(int argc, char** argv) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt,
                                      part_opt, region_opt, tile_opt, render->get_option("--spectral-bins"),
-                                     render->get_option("--aovs"), render->get_option("--stokes")})
+                                     render->get_option("--aovs"), render->get_option("--stokes"),
+                                     render->get_option("--define")})
       if (*fixed) {
         std::cerr
             << "ochre: error: " << fixed->get_name()
@@ -190,6 +194,14 @@ int main(int argc, char** argv) {
         << "ochre: error: --region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '"
         << region << "'\n";
     return 2;
+  }
+  for (const std::string& define : defines) {
+    const size_t equals = define.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      std::cerr << "ochre: error: -D: expected NAME=VALUE, got '" << define << "'\n";
+      return 2;
+    }
+    cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
   }
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*threads_opt) cmd.overrides.threads = threads;

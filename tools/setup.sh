@@ -7,15 +7,17 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # Build: compilers, CMake, Ninja and the libraries of CMakeLists.txt (libexpat1-dev: ochre-regress reads
-# JUnit files; libnlopt-dev: NLopt's SLSQP for ochre-fit's bounded least squares); openimageio-tools because
-# Debian's OpenImageIO CMake config refuses to load without its executables (iinfo, oiiotool, ...). Tests:
-# libgtest-dev (Debian's GTest config needs no gmock). Plots of ochre-brdf / ochre-converge / ochre-fit
+# JUnit files; libnlopt-dev: NLopt's SLSQP for ochre-fit's bounded least squares; libpugixml-dev: Mitsuba 3
+# XML scenes, docs/mitsuba-import.md; pybind11-dev, python3-dev: the Python module, docs/python.md);
+# openimageio-tools because Debian's OpenImageIO CMake config refuses to load without its executables
+# (iinfo, oiiotool, ...). Tests: libgtest-dev (Debian's GTest config needs no gmock). Plots of ochre-brdf /
+# ochre-converge / ochre-fit
 # (tools/plot_*.py): python3 with numpy and matplotlib.
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libopenimageio-dev openimageio-tools libopencolorio-dev libembree-dev libopenexr-dev
   libimath-dev libosd-dev libtbb-dev libassimp-dev nlohmann-json3-dev libcli11-dev libfmt-dev libexpat1-dev
-  libnlopt-dev libgtest-dev python3 python3-numpy python3-matplotlib
+  libnlopt-dev libpugixml-dev libgtest-dev python3 python3-numpy python3-matplotlib pybind11-dev python3-dev
   # Browser tests of ochre-regress's HTML report (tests/browser): headless Chromium, its WebDriver, and
   # Selenium for /usr/bin/python3 (the test is skipped without them).
   chromium chromium-driver python3-selenium

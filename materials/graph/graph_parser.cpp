@@ -169,7 +169,7 @@ class Parser {
     if (!literal)
       g_.fail(node, socket,
               "expected a number, [r, g, b], {\"vector\": [x, y, z]}, a spectrum {\"name\": ...}, "
-              "{\"file\": ...} or {\"blackbody\": ...}, "
+              "{\"file\": ...}, {\"wavelengths\": [...], \"values\": [...]} or {\"blackbody\": ...}, "
               "or {\"link\": \"node[.output]\"}; got " +
                   json_excerpt(j));
     in.constant = *literal;

@@ -53,7 +53,8 @@ SpectrumPtr blackbody_unit_luminance(double kelvin) {
 }
 
 bool is_spectrum_object(const nlohmann::json& j) {
-  return j.is_object() && (j.contains("name") || j.contains("file") || j.contains("blackbody"));
+  return j.is_object() &&
+         (j.contains("name") || j.contains("file") || j.contains("blackbody") || j.contains("wavelengths"));
 }
 
 namespace {
@@ -73,24 +74,69 @@ double number_field(const nlohmann::json& j, const char* key) {
   return v.get<double>();
 }
 
+// "wavelengths": [nm, ...] with "values": [v, ...] of the same length: a table written in the scene.
+std::vector<float> number_list(const nlohmann::json& j, const char* key) {
+  const nlohmann::json& list = j.at(key);
+  if (!list.is_array())
+    throw SpectrumObjectError(key, std::string("'") + key + "' must be an array of numbers");
+  std::vector<float> numbers;
+  numbers.reserve(list.size());
+  for (size_t i = 0; i < list.size(); ++i) {
+    const nlohmann::json& v = list[i];
+    const std::string at = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!v.is_number()) throw SpectrumObjectError(at, "must be a number, got " + json_excerpt(v));
+    if (const std::string problem = single_precision_problem(v.get<double>()); !problem.empty())
+      throw SpectrumObjectError(at, "must be a finite number (got " + json_excerpt(v) + ", " + problem + ")");
+    numbers.push_back(static_cast<float>(v.get<double>()));
+  }
+  return numbers;
+}
+
+SpectrumPtr inline_table(const nlohmann::json& j, TableExtrapolation extrapolation) {
+  if (!j.contains("values")) throw SpectrumObjectError("wavelengths", "'wavelengths' needs 'values'");
+  std::vector<float> lambda = number_list(j, "wavelengths"), values = number_list(j, "values");
+  if (lambda.size() != values.size())
+    throw SpectrumObjectError("values", "'values' must have as many entries as 'wavelengths' (" +
+                                            std::to_string(values.size()) + " and " +
+                                            std::to_string(lambda.size()) + ")");
+  try {
+    return std::make_shared<TabulatedSpectrum>(std::move(lambda), std::move(values), extrapolation);
+  } catch (const std::invalid_argument& e) {
+    throw SpectrumObjectError("wavelengths", e.what());
+  }
+}
+
 }  // namespace
 
 SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver& resolver) {
-  const int kinds = j.contains("name") + j.contains("file") + j.contains("blackbody");
+  const int kinds =
+      j.contains("name") + j.contains("file") + j.contains("blackbody") + j.contains("wavelengths");
   if (kinds != 1)
     throw SpectrumObjectError(
         "",
         "a spectrum is written {\"name\": \"D65\"}, {\"file\": \"x.csv\"[, \"column\": ...][, "
-        "\"extrapolate\": \"clamp\"|\"zero\"]} or {\"blackbody\": kelvin}, with an optional \"scale\"");
+        "\"extrapolate\": \"clamp\"|\"zero\"]}, {\"wavelengths\": [nm, ...], \"values\": [...][, "
+        "\"extrapolate\": ...]} or {\"blackbody\": kelvin}, with an optional \"scale\"");
   for (const auto& [key, value] : j.items())
     if (key != "name" && key != "file" && key != "column" && key != "extrapolate" && key != "blackbody" &&
-        key != "scale")
-      throw SpectrumObjectError(
-          key, "unknown key '" + key +
-                   "' in a spectrum (known: name, file, column, extrapolate, blackbody, scale)");
-  for (const char* file_only : {"column", "extrapolate"})
-    if (j.contains(file_only) && !j.contains("file"))
-      throw SpectrumObjectError(file_only, std::string("'") + file_only + "' needs 'file'");
+        key != "scale" && key != "wavelengths" && key != "values")
+      throw SpectrumObjectError(key, "unknown key '" + key +
+                                         "' in a spectrum (known: name, file, column, wavelengths, values, "
+                                         "extrapolate, blackbody, scale)");
+  if (j.contains("column") && !j.contains("file"))
+    throw SpectrumObjectError("column", "'column' needs 'file'");
+  if (j.contains("extrapolate") && !j.contains("file") && !j.contains("wavelengths"))
+    throw SpectrumObjectError("extrapolate", "'extrapolate' needs 'file' or 'wavelengths'");
+  if (j.contains("values") && !j.contains("wavelengths"))
+    throw SpectrumObjectError("values", "'values' needs 'wavelengths'");
+  TableExtrapolation extrapolation = TableExtrapolation::kClamp;
+  if (j.contains("extrapolate")) {
+    try {
+      extrapolation = table_extrapolation(j.at("extrapolate"));
+    } catch (const std::runtime_error& e) {
+      throw SpectrumObjectError("extrapolate", e.what());
+    }
+  }
 
   SpectrumPtr base;
   if (j.contains("name")) {
@@ -111,16 +157,10 @@ SpectrumPtr spectrum_from_object(const nlohmann::json& j, const ResourceResolver
     } catch (const std::invalid_argument& e) {
       throw SpectrumObjectError("blackbody", e.what());
     }
+  } else if (j.contains("wavelengths")) {
+    base = inline_table(j, extrapolation);
   } else {
     const std::string column = j.contains("column") ? string_field(j, "column") : "";
-    TableExtrapolation extrapolation = TableExtrapolation::kClamp;
-    if (j.contains("extrapolate")) {
-      try {
-        extrapolation = table_extrapolation(j.at("extrapolate"));
-      } catch (const std::runtime_error& e) {
-        throw SpectrumObjectError("extrapolate", e.what());
-      }
-    }
     try {
       base = spectrum_from_file(string_field(j, "file"), column, resolver, extrapolation);
     } catch (const SpectrumObjectError&) {

@@ -1,8 +1,9 @@
 # `cmake --install` into a scratch prefix, then the installed tools run from there with nothing of the
-# source or build tree: every tool prints the project's version, and the installed ochre renders a copy of
-# the installed Cornell box in a scratch directory.
+# source or build tree: every tool prints the project's version, the installed ochre renders a copy of
+# the installed Cornell box in a scratch directory, and the installed Python package renders it too.
 #   cmake -DBUILD_DIR=<build> -DPREFIX=<scratch prefix> -DWORK_DIR=<scratch dir> -DVERSION=<x.y.z>
-#         -DSOURCE_DIR=<source> -P install_test.cmake
+#         -DSOURCE_DIR=<source> [-DPYTHON=<python3> -DPYTHON_DIR=<package dir in the prefix>]
+#         -P install_test.cmake
 
 function(fail)
   string(JOIN "" message ${ARGN})
@@ -73,5 +74,21 @@ foreach(asset report.css report.js)
     fail("the installed ochre-regress wrote ${WORK_DIR}/report/${asset} unlike tools/regress/report/${asset}")
   endif()
 endforeach()
+# The Python package: imported from the prefix alone (PYTHONPATH=PREFIX/PYTHON_DIR), it reports the version
+# and renders the copied scene to the bits the installed ochre wrote.
+if(PYTHON)
+  set(ENV{PYTHONPATH} ${PREFIX}/${PYTHON_DIR})
+  run(printed ${PYTHON} -c "
+import ochre, numpy
+assert ochre.__file__.startswith('${PREFIX}/'), ochre.__file__
+r = ochre.load_scene('${WORK_DIR}/cornell-box/cornell-box.json', resolution=(16, 16), spp=2).render()
+cli, _ = ochre.read_exr('${WORK_DIR}/out.exr')
+assert numpy.array_equal(r.rgb[..., 0], cli['R']), 'Python and the installed ochre differ'
+print(ochre.__version__)")
+  if(NOT printed STREQUAL "${VERSION}\n")
+    fail("the installed Python module printed '${printed}', expected '${VERSION}'")
+  endif()
+  unset(ENV{PYTHONPATH})
+endif()
 message(STATUS "installed into ${PREFIX}; every tool prints ${VERSION}; the installed ochre rendered ${WORK_DIR}/out.exr; "
                "the installed ochre-regress wrote ${WORK_DIR}/report")

@@ -197,6 +197,28 @@ TEST(GraphErrors, NegativeWhereNotAllowed) {
                   "d", "color", "negative value -0.5 (from 'x.result')");
 }
 
+TEST(GraphErrors, InlineSpectrumTables) {
+  expect_error_at(error_of(R"({"type": "lambert", "color": {"wavelengths": [400, 500], "values": [0.5]}})"),
+                  "", "color", "'values' must have as many entries as 'wavelengths' (1 and 2)");
+  expect_error_at(
+      error_of(R"({"type": "lambert", "color": {"wavelengths": [500, 400], "values": [0.5, 0.6]}})"), "",
+      "color", "not strictly increasing at index 1");
+  expect_error_at(error_of(R"({"type": "lambert", "color": {"wavelengths": [400], "values": [0.5]}})"), "",
+                  "color", "fewer than 2 points");
+  expect_error_at(
+      error_of(R"({"type": "lambert", "color": {"values": [0.5, 0.6]}})"), "", "color",
+      R"({"wavelengths": [...], "values": [...]} or {"blackbody": ...}, or {"link": "node[.output]"}; got)");
+  expect_error_at(error_of(R"({"type": "lambert", "color": {"wavelengths": [400, 500]}})"), "", "color",
+                  "'wavelengths' needs 'values'");
+  expect_error_at(
+      error_of(
+          R"({"type": "lambert", "color": {"wavelengths": [400, 500], "values": [0.5, 0.6], "column": "x"}})"),
+      "", "color", "'column' needs 'file'");
+  expect_error_at(
+      error_of(R"({"type": "lambert", "color": {"wavelengths": [400, 500], "values": [0.5, -0.6]}})"), "",
+      "color", "negative value");
+}
+
 TEST(GraphErrors, MixFactorOutOfRange) {
   expect_error_at(error_of(R"({"nodes": {"a": {"type": "lambert"}, "b": {"type": "lambert", "color": 0.2},
                                          "x": {"type": "mix", "a": {"link": "a"}, "b": {"link": "b"}, "factor": 1.5}},

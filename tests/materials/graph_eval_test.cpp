@@ -82,6 +82,23 @@ TEST_F(GraphEval, ReflectanceAboveOneIsUnbounded) {
   expect_spectrum_eq(c.lobe(0).weight, RGBUnboundedSpectrum({1.6f, 0.4f, 0.2f}).sample(lambda));
 }
 
+// {"wavelengths": [...], "values": [...]}: linear between the entries, clamped or zero outside.
+TEST_F(GraphEval, InlineSpectrumTableIsLinearBetweenItsEntries) {
+  const char* table =
+      R"({"type": "lambert", "color": {"wavelengths": [400, 500, 600], "values": [0.2, 0.6, 0.4]%s}})";
+  auto weight_at = [&](float nm, const char* extra) {
+    lambda = SampledWavelengths::fixed({nm, nm, nm, nm});
+    char text[256];
+    std::snprintf(text, sizeof text, table, extra);
+    return evaluate(text).lobe(0).weight[0];
+  };
+  EXPECT_FLOAT_EQ(weight_at(450, ""), 0.4f);
+  EXPECT_FLOAT_EQ(weight_at(550, ""), 0.5f);
+  EXPECT_FLOAT_EQ(weight_at(650, ""), 0.4f);                      // clamped by default
+  EXPECT_EQ(weight_at(650, R"(, "extrapolate": "zero")"), 0.0f);  // Mitsuba's spectra
+  EXPECT_FLOAT_EQ(weight_at(500, R"(, "extrapolate": "zero")"), 0.6f);
+}
+
 TEST_F(GraphEval, MixWeightsTheTwoClosures) {
   const Closure& c = evaluate(R"({"nodes": {
       "a": {"type": "lambert", "color": 0.2},

@@ -94,7 +94,43 @@ TEST(ProceduralShapes, SphereUIsLongitude) {
   }
 }
 
+TEST(ProceduralShapes, CubeFacesPointOutwardWithMitsubasUvs) {
+  const Mesh cube = make_cube({2, 4, 6});
+  EXPECT_NO_THROW(cube.validate("cube"));
+  EXPECT_EQ(cube.triangle_count(), 12u);
+  EXPECT_FLOAT_EQ(cube.surface_area(), 2 * (2 * 4 + 4 * 6 + 2 * 6));
+  for (size_t t = 0; t < cube.triangle_count(); ++t) {
+    const Vec3 n = cube.normals[cube.indices[3 * t]];
+    const Vec3 centre = (cube.positions[cube.indices[3 * t]] + cube.positions[cube.indices[3 * t + 1]] +
+                         cube.positions[cube.indices[3 * t + 2]]) *
+                        (1.0f / 3.0f);
+    EXPECT_GT(dot(face_normal(cube, t), n), 0.0f) << t;  // winding agrees with the normal
+    EXPECT_GT(dot(centre, n), 0.0f) << t;                // which points outward
+  }
+  expect_uvs_in_unit_square(cube);
+  // The -y face (Mitsuba's first): corners (1,-1,-1), (1,-1,1), (-1,-1,1), (-1,-1,-1) with Mitsuba's uvs
+  // (0,1), (1,1), (1,0), (0,0), so ochre's (upward v) are (0,0), (1,0), (1,1), (0,1).
+  EXPECT_EQ(cube.positions[0], Vec3(1, -2, -3));
+  EXPECT_EQ(cube.uvs[0].x, 0.0f);
+  EXPECT_EQ(cube.uvs[0].y, 0.0f);
+  EXPECT_EQ(cube.positions[2], Vec3(-1, -2, 3));
+  EXPECT_EQ(cube.uvs[2].x, 1.0f);
+  EXPECT_EQ(cube.uvs[2].y, 1.0f);
+}
+
+TEST(ProceduralShapes, FlipNormalsTurnsTheSurfaceAndFlipUvVTheImage) {
+  Mesh plane = make_plane({2, 2});
+  flip_normals(plane);
+  EXPECT_NO_THROW(plane.validate("plane"));
+  for (size_t t = 0; t < 2; ++t) EXPECT_LT(face_normal(plane, t).z, 0.0f);
+  for (const Vec3& n : plane.normals) EXPECT_EQ(n, Vec3(0, 0, -1));
+  flip_uv_v(plane);
+  for (size_t i = 0; i < plane.positions.size(); ++i)
+    EXPECT_FLOAT_EQ(plane.uvs[i].y, 0.5f - plane.positions[i].y / 2);
+}
+
 TEST(ProceduralShapes, BadParametersAreInputErrors) {
+  EXPECT_THROW(make_cube({1, 0, 1}), InputError);
   EXPECT_THROW(make_plane({0, 1}), InputError);
   EXPECT_THROW(make_plane({1, NAN}), InputError);
   EXPECT_THROW(make_disk(-1), InputError);

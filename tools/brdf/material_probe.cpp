@@ -71,12 +71,23 @@ MaterialProbe::MaterialProbe(const std::filesystem::path& file, const std::strin
     : file_(file) {
   const auto [json, name] = select_material(read_json_file(file, "material file"), file, material_name);
   name_ = name;
-  ProbeResources resources(std::filesystem::absolute(file).parent_path(), textures_);
+  compile(json, file.string(), std::filesystem::absolute(file).parent_path());
+}
+
+MaterialProbe::MaterialProbe(const nlohmann::json& material, const std::string& name,
+                             const std::filesystem::path& base_dir)
+    : file_(name), name_(name) {
+  compile(material, name, std::filesystem::absolute(base_dir));
+}
+
+void MaterialProbe::compile(const nlohmann::json& material, const std::string& label,
+                            const std::filesystem::path& dir) {
+  ProbeResources resources(dir, textures_);
   try {
-    material_ = compile_material(json, name_, file.string(), resources);
+    material_ = compile_material(material, name_, label, resources);
   } catch (const nlohmann::json::exception& e) {
     // A read that escaped the graph parser's checks: still bad input in this file.
-    throw InputError(fmt::format("{}: material '{}': {}", file.string(), name_, e.what()));
+    throw InputError(fmt::format("{}: material '{}': {}", label, name_, e.what()));
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "materials/graph/compiled_material.h"
@@ -27,6 +28,10 @@ class MaterialProbe {
   // Throws InputError naming the file (with line and column for malformed JSON, the material names
   // for an ambiguous choice) or GraphError naming the file, material, node and parameter.
   explicit MaterialProbe(const std::filesystem::path& file, const std::string& material_name = "");
+  // One material given as JSON (a Python dict): `name` names it in messages, files named in it resolve
+  // against `base_dir`.
+  MaterialProbe(const nlohmann::json& material, const std::string& name,
+                const std::filesystem::path& base_dir);
   ~MaterialProbe();
   MaterialProbe(const MaterialProbe&) = delete;
   MaterialProbe& operator=(const MaterialProbe&) = delete;
@@ -39,6 +44,8 @@ class MaterialProbe {
   const std::filesystem::path& file() const { return file_; }
 
  private:
+  void compile(const nlohmann::json& material, const std::string& label, const std::filesystem::path& dir);
+
   std::filesystem::path file_;
   std::string name_;
   std::unique_ptr<OiioTextureProvider> textures_;
