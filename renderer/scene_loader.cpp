@@ -19,6 +19,7 @@
 #include "renderer/mesh_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
+#include "renderer/scene_sources.h"
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
 #include "renderer/subdivision.h"
@@ -184,13 +185,11 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   f.fail("type", fmt::format("unknown camera type '{}' (known: perspective, orthographic)", type));
 }
 
-void load_materials(const JsonFields& top, const std::string& file, Scene& scene) {
-  if (!top.has("materials")) return;
-  const JsonFields materials(top.require("materials"), top.child("materials"));
-  SceneResources resources(scene.file.parent_path(), *scene.textures);
-  for (const auto& [name, value] : materials.json().items()) {
-    scene.material_names.push_back(name);
-    scene.materials.push_back(compile_material(value, name, file, resources));
+void load_materials(const SceneSources& sources, Scene& scene) {
+  for (const SceneItem& m : sources.materials) {
+    SceneResources resources(m.file.parent_path(), *scene.textures);
+    scene.material_names.push_back(m.name);
+    scene.materials.push_back(compile_material(m.json, m.name, m.file.string(), resources));
   }
 }
 
@@ -211,14 +210,14 @@ Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, cons
 // Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
 // smooth normal (shading normals recomputed).
 Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
-                     const Scene& scene) {
+                     const Scene& scene, const std::filesystem::path& dir) {
   const SubdivisionOptions options =
       parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
   const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, to_world); });
   Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
   if (f.has("displacement")) {
-    const DisplacementOptions d = parse_displacement(
-        JsonFields(f.require("displacement"), f.child("displacement")), scene.file.parent_path());
+    const DisplacementOptions d =
+        parse_displacement(JsonFields(f.require("displacement"), f.child("displacement")), dir);
     f.in_context("displacement", [&] { displace(mesh, d, *scene.textures); });
   }
   return mesh;
@@ -280,7 +279,8 @@ Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
   return make_grooved_cylinder(c);
 }
 
-Mesh load_shape(const JsonFields& f, const Scene& scene) {
+// `dir`: the folder of the file that holds the shape (its paths are relative to it).
+Mesh load_shape(const JsonFields& f, const Scene& scene, const std::filesystem::path& dir) {
   const std::string type = f.required_string("type");
   const Transform to_world = f.has("transform")
                                  ? parse_transform(f.require("transform"), f.child("transform"))
@@ -290,13 +290,13 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     f.check_known({"type", "file", "material", "transform", "smooth_normals", "flip_uv_v", "name",
                    "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
-    if (path.is_relative()) path = scene.file.parent_path() / path;
+    if (path.is_relative()) path = dir / path;
     MeshImportOptions options;
     options.smooth_normals = f.boolean("smooth_normals", false);
     options.flip_uv_v = f.boolean("flip_uv_v", false);
     if (f.has("subdivision") && options.flip_uv_v)
       f.fail("flip_uv_v", "is not supported with \"subdivision\" (flip the uvs in the file)");
-    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
+    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene, dir)
                                 : load_triangles(f, path, to_world, options);
   } else if (type == "sphere") {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer"});
@@ -338,13 +338,11 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
   return mesh;
 }
 
-void load_shapes(const JsonFields& top, Scene& scene) {
-  if (!top.has("shapes") || !top.require("shapes").is_array())
-    top.fail("shapes", "expected an array of shapes");
-  const nlohmann::json& shapes = top.require("shapes");
-  for (size_t i = 0; i < shapes.size(); ++i) {
-    const JsonFields f(shapes[i], fmt::format("{}[{}]", top.child("shapes"), i));
-    scene.meshes.push_back(load_shape(f, scene));
+void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scene) {
+  if (!top.has("shapes") && sources.shapes.empty()) top.fail("shapes", "expected an array of shapes");
+  for (const SceneItem& shape : sources.shapes) {
+    const JsonFields f(shape.json, shape.where);
+    scene.meshes.push_back(load_shape(f, scene, shape.file.parent_path()));
     scene.mesh_polarizers.push_back(parse_light_polarizer(f));
     if (scene.mesh_polarizers.back() && !scene.materials[scene.meshes.back().material]->facts().is_emissive)
       f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
@@ -377,13 +375,10 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   return light;
 }
 
-void load_lights(const JsonFields& top, Scene& scene, float scene_radius) {
-  if (!top.has("lights")) return;
-  const nlohmann::json& lights = top.require("lights");
-  if (!lights.is_array()) top.fail("lights", "expected an array");
-  const std::filesystem::path dir = scene.file.parent_path();
-  for (size_t i = 0; i < lights.size(); ++i) {
-    const JsonFields f(lights[i], fmt::format("{}[{}]", top.child("lights"), i));
+void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) {
+  for (const SceneItem& item : sources.lights) {
+    const std::filesystem::path dir = item.file.parent_path();
+    const JsonFields f(item.json, item.where);
     const std::string type = f.required_string("type");
     if (type == "environment") {
       if (scene.environment) f.fail("type", "only one environment light is allowed");
@@ -446,10 +441,10 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
   auto scene = std::make_unique<Scene>();
   scene->file = std::filesystem::absolute(path);
   const std::string file = path.string();
-  const nlohmann::json root = read_json_file(path, "scene file");
-  const JsonFields top(root, file + ":");
-  top.check_known(
-      {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
+  const SceneSources sources = load_scene_sources(path, overrides.preset);
+  const JsonFields top(sources.root, file + ":");
+  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
+                   "description", "include", "presets"});
   top.string("description", "");
   if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
     top.fail("ochre", "expected a version string or number");
@@ -462,10 +457,10 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
     scene->camera_analyzer = parse_camera_polarizer(JsonFields(top.require("camera"), top.child("camera")));
 
   scene->textures = std::make_unique<OiioTextureProvider>();
-  load_materials(top, file, *scene);
-  load_shapes(top, *scene);
+  load_materials(sources, *scene);
+  load_shapes(sources, top, *scene);
   const float radius = bounding_radius(scene->meshes);
-  load_lights(top, *scene, radius);
+  load_lights(sources, *scene, radius);
 
   scene->polarizing_filters = scene->camera_analyzer.has_value();
   for (const auto& light : scene->lights) scene->polarizing_filters |= light->polarizer_axis.has_value();
@@ -480,9 +475,8 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
   return scene;
 }
 
-}  // namespace
-
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+std::unique_ptr<Scene> load_scene_checked(const std::filesystem::path& path,
+                                          const SceneOverrides& overrides) {
   try {
     return load_scene_file(path, overrides);
   } catch (const GraphError& e) {
@@ -490,6 +484,21 @@ std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const Scene
   } catch (const nlohmann::json::exception& e) {
     // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
     throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  if (!overrides.preset) return load_scene_checked(path, overrides);
+  try {
+    return load_scene_checked(path, overrides);
+  } catch (const InputError& e) {
+    // A value the preset wrote is reported where it landed: say which preset put it there.
+    const std::string message = e.what();
+    if (message.find("presets") != std::string::npos) throw;
+    throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
+                                 *overrides.preset, path.string()));
   }
 }
 

@@ -17,6 +17,7 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<std::string> polarization;
   std::optional<std::string> sampler;
+  std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)
 };
 
 std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
