@@ -1,4 +1,4 @@
-// noise(position; frequency, octaves, lacunarity, gain, seed, type, width): procedural 3D noise of a
+// noise(position; pattern, frequency, octaves, lacunarity, gain, seed, width): procedural 3D noise of a
 // position (by default the shading point's world position), seamless on any mesh and needing no uvs:
 // fractal gradient noise or the crack lines of a cellular pattern (materials/numerics/noise.h).
 
@@ -21,7 +21,7 @@ struct NoiseData {
 
 Prepared prepare_noise(const PrepareArgs& args) {
   auto data = std::make_shared<NoiseData>();
-  data->cracks = args.params.at("type").get<std::string>() == "cracks";
+  data->cracks = args.params.at("pattern").get<std::string>() == "cracks";
   data->frequency = args.params.at("frequency").get<float>();
   data->fractal.octaves = args.params.at("octaves").get<int>();
   data->fractal.lacunarity = args.params.at("lacunarity").get<float>();
@@ -68,11 +68,11 @@ NodeDefinition noise_node() {
   position.default_node = "position";
   position.doc = "where the noise is evaluated; default: the shading point's world position";
   d.inputs = {position};
-  ParamDef type;
-  type.name = "type";
-  type.default_value = "fbm";
-  type.choices = {"fbm", "cracks"};
-  type.doc = "fbm: 0.5 + 0.5 x fractal gradient noise; cracks: 1 on the borders of random cells, 0 inside";
+  ParamDef pattern;
+  pattern.name = "pattern";
+  pattern.default_value = "fbm";
+  pattern.choices = {"fbm", "cracks"};
+  pattern.doc = "fbm: 0.5 + 0.5 x fractal gradient noise; cracks: 1 on the borders of random cells, 0 inside";
   ParamDef octaves;
   octaves.name = "octaves";
   octaves.kind = ParamKind::kInt;
@@ -87,7 +87,7 @@ NodeDefinition noise_node() {
   seed.min = 0;
   seed.doc = "selects an independent pattern";
   d.params = {
-      type,
+      pattern,
       float_param("frequency", 1.0, 1e-6, 1e6, "features per unit length (the position is scaled by it)"),
       octaves,
       float_param("lacunarity", 2.0, 1.0, 8.0, "fbm: frequency ratio of successive layers"),
