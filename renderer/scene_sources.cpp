@@ -117,7 +117,7 @@ class SourceReader {
 void absolute_file_names(nlohmann::json& node, const fs::path& dir) {
   auto absolute = [&](nlohmann::json& value) {
     if (value.is_string() && fs::path(value.get<std::string>()).is_relative())
-      value = (dir / value.get<std::string>()).string();
+      value = fs::absolute(dir / value.get<std::string>()).lexically_normal().string();
   };
   for (auto& [key, value] : node.items()) {
     if (key == "file" || key == "pigment_file") absolute(value);

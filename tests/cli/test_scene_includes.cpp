@@ -80,6 +80,12 @@ TEST(SceneIncludes, MaterialReferencesInlineAnotherMaterialsGraph) {
   CommandResult r = render(dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NEAR(mean_luminance(dir), 0.4, 0.01);
+  // The same scene named by a relative path from elsewhere: the inlined node still finds its file.
+  r = run_ochre("render " + dir.filename().string() + "/scene.json -o " + dir.filename().string() +
+                    "/out.exr -q --spp 64",
+                dir.parent_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NEAR(mean_luminance(dir), 0.4, 0.01);
   // A whole material that is a reference is a copy.
   write_scene(
       dir,
