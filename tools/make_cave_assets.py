@@ -9,6 +9,9 @@ yellow-ochre reflectance estimate of the pigment library (scenes/pigments/):
   painted panel of the back wall (3.4 m x 1.7 m, projected onto the wall by a `projection` node): negative
   hand stencils, a bison outlined in red with coarse-grained hatching, black details and a yellow infill,
   finger dots. Weathering and partial cover are in the mask values.
+- ../guide/scan_wall.obj, .mtl, scan_atlas_*.jpg: a stand-in for a photogrammetry export used by the
+  tutorial (docs/guide/cave-painting.md): a rock wall 240 cm x 120 cm in centimetres, z up, facing -y
+  (as scanners often write them), split into two materials with one texture atlas each.
 - ../pigments/yellow_ochre_reflectance_estimate.csv: a smooth reflectance curve with the shape of goethite
   powders (an estimate, not a measurement: see docs/materials/pigments.md).
 
@@ -25,6 +28,7 @@ from PIL import Image
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 SCENE = os.path.join(ROOT, "scenes", "default")
 PIGMENTS = os.path.join(ROOT, "scenes", "pigments")
+GUIDE = os.path.join(ROOT, "scenes", "guide")
 
 # The chamber: a superellipsoid |x/rx|^e + |(y-cy)/ry|^e + |z/rz|^e = 1 (flat-ish walls, rounded edges)
 # cut by the floor y = 0, in metres.
@@ -320,12 +324,70 @@ def yellow_ochre_estimate(path):
         f.write("\n".join(lines) + "\n")
 
 
+def tutorial_scan(folder):
+    """A small 'scan': a bumpy wall of 48 x 24 quads in centimetres, z up, its face towards -y, whose left and
+    right halves use two MTL materials with one texture atlas each (uv over [0, 1]^2 per half)."""
+    nx, ny, width, height = 48, 24, 240.0, 120.0
+    rng = np.random.default_rng(23)
+    waves = [(rng.normal(size=2) * 0.05, rng.uniform(0, 2 * math.pi), rng.uniform(0.8, 2.0)) for _ in range(8)]
+    lines = ["# Tutorial stand-in for a photogrammetry export (tools/make_cave_assets.py): centimetres, z up,",
+             "# facing -y, two materials with one texture atlas each.", "mtllib scan_wall.mtl"]
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            x, z = i / nx * width - width / 2, j / ny * height
+            y = -sum(a * math.sin(f[0] * x + f[1] * z + p) for f, p, a in waves)
+            lines.append(f"v {x:.3f} {y:.3f} {z:.3f}")
+    half = nx // 2
+    # Each half has its own uv square: vt index of column i (within the half) and row j.
+    for side in range(2):
+        for j in range(ny + 1):
+            for i in range(half + 1):
+                lines.append(f"vt {i / half:.5f} {j / ny:.5f}")
+    for side, name in ((0, "atlas_left"), (1, "atlas_right")):
+        lines.append(f"usemtl {name}")
+        for j in range(ny):
+            for i in range(half):
+                v = [(j + dj) * (nx + 1) + side * half + i + di + 1 for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1))]
+                t = [side * (half + 1) * (ny + 1) + (j + dj) * (half + 1) + i + di + 1
+                     for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1))]
+                # Counter-clockwise seen from -y (the scanner's side).
+                lines.append("f " + " ".join(f"{a}/{b}" for a, b in zip(v, t)))
+    with open(os.path.join(folder, "scan_wall.obj"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    with open(os.path.join(folder, "scan_wall.mtl"), "w") as f:
+        f.write("# Tutorial stand-in scan (tools/make_cave_assets.py)\n"
+                "newmtl atlas_left\nKd 1 1 1\nmap_Kd scan_atlas_0.jpg\n"
+                "newmtl atlas_right\nKd 1 1 1\nmap_Kd scan_atlas_1.jpg\n")
+    for k in range(2):
+        size = 256
+        rng = np.random.default_rng(40 + k)
+        total, norm = np.zeros((size, size)), 0
+        for o in range(5):
+            cells = 4 * 2 ** o
+            grid = rng.random((cells + 1, cells + 1))
+            x = np.arange(size) * cells / size
+            i0 = np.floor(x).astype(int)
+            t = x - i0
+            t = t * t * (3 - 2 * t)
+            rows = grid[i0][:, i0] * (1 - t)[None, :] + grid[i0][:, i0 + 1] * t[None, :]
+            rows1 = grid[i0 + 1][:, i0] * (1 - t)[None, :] + grid[i0 + 1][:, i0 + 1] * t[None, :]
+            total += 0.55 ** o * (rows * (1 - t)[:, None] + rows1 * t[:, None])
+            norm += 0.55 ** o
+        grain = total / norm
+        albedo = np.array([0.62, 0.57, 0.49])[None, None, :] * (0.6 + 0.7 * grain[..., None])
+        srgb = np.where(albedo <= 0.0031308, 12.92 * albedo, 1.055 * np.clip(albedo, 0, 1) ** (1 / 2.4) - 0.055)
+        Image.fromarray(np.round(np.clip(srgb, 0, 1) * 255).astype(np.uint8)).save(
+            os.path.join(folder, f"scan_atlas_{k}.jpg"), quality=88)
+
+
 def main():
     vertices, quads = chamber_mesh()
     write_obj(os.path.join(SCENE, "cave.obj"), vertices, quads)
     for name, mask in masks().items():
         write_mask(os.path.join(SCENE, f"paint_{name}.png"), mask)
     yellow_ochre_estimate(os.path.join(PIGMENTS, "yellow_ochre_reflectance_estimate.csv"))
+    os.makedirs(GUIDE, exist_ok=True)
+    tutorial_scan(GUIDE)
 
 
 if __name__ == "__main__":
