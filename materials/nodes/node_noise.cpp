@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/numerics/noise.h"
 
@@ -45,55 +46,24 @@ void eval_noise(const NodeArgs& a) {
   }
 }
 
-ParamDef float_param(const char* name, double fallback, double min, double max, const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kFloat;
-  p.default_value = fallback;
-  p.min = min;
-  p.max = max;
-  p.doc = doc;
-  return p;
-}
-
 }  // namespace
 
 NodeDefinition noise_node() {
   NodeDefinition d;
   d.name = "noise";
   d.doc = "Procedural 3D noise of a position: fractal gradient noise or cellular crack lines.";
-  SocketDef position;
-  position.name = "position";
-  position.type = SocketType::kVector;
-  position.default_node = "position";
-  position.doc = "where the noise is evaluated; default: the shading point's world position";
-  d.inputs = {position};
-  ParamDef pattern;
-  pattern.name = "pattern";
-  pattern.default_value = "fbm";
-  pattern.choices = {"fbm", "cracks"};
-  pattern.doc = "fbm: 0.5 + 0.5 x fractal gradient noise; cracks: 1 on the borders of random cells, 0 inside";
-  ParamDef octaves;
-  octaves.name = "octaves";
-  octaves.kind = ParamKind::kInt;
-  octaves.default_value = 4;
-  octaves.min = 1;
-  octaves.max = 16;
-  octaves.doc = "fbm: layers summed";
-  ParamDef seed;
-  seed.name = "seed";
-  seed.kind = ParamKind::kInt;
-  seed.default_value = 0;
-  seed.min = 0;
-  seed.doc = "selects an independent pattern";
+  d.inputs = {context_input("position", SocketType::kVector, "position",
+                            "where the noise is evaluated; default: the shading point's world position")};
   d.params = {
-      pattern,
-      float_param("frequency", 1.0, 1e-6, 1e6, "features per unit length (the position is scaled by it)"),
-      octaves,
-      float_param("lacunarity", 2.0, 1.0, 8.0, "fbm: frequency ratio of successive layers"),
-      float_param("gain", 0.5, 0.0, 1.0, "fbm: amplitude ratio of successive layers"),
-      seed,
-      float_param("width", 0.05, 1e-6, 1.0, "cracks: width of a line in cell units")};
+      choice_param(
+          "pattern", "fbm", {"fbm", "cracks"},
+          "fbm: 0.5 + 0.5 x fractal gradient noise; cracks: 1 on the borders of random cells, 0 inside"),
+      number_param("frequency", 1.0, 1e-6, 1e6, "features per unit length (the position is scaled by it)"),
+      integer_param("octaves", 4, 1, 16, "fbm: layers summed"),
+      number_param("lacunarity", 2.0, 1.0, 8.0, "fbm: frequency ratio of successive layers"),
+      number_param("gain", 0.5, 0.0, 1.0, "fbm: amplitude ratio of successive layers"),
+      integer_param("seed", 0, 0, std::nullopt, "selects an independent pattern"),
+      number_param("width", 0.05, 1e-6, 1.0, "cracks: width of a line in cell units")};
   d.outputs = {{"value", SocketType::kFloat, false, "in [0, 1]"}};
   d.prepare = prepare_noise;
   d.eval = eval_noise;

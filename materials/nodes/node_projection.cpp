@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/json_literal.h"
 #include "materials/nodes/node_definition.h"
 
@@ -60,36 +61,19 @@ void eval_projection(const NodeArgs& a) {
   if (a.output_used(2)) a.set_float(2, a.ctx.footprint * d.inverse_size);
 }
 
-ParamDef vector_param_def(const char* name, const char* doc) {
-  ParamDef p;
-  p.name = name;
-  p.kind = ParamKind::kValue;
-  p.required = true;
-  p.doc = doc;
-  return p;
-}
-
 }  // namespace
 
 NodeDefinition projection_node() {
   NodeDefinition d;
   d.name = "projection";
   d.doc = "Planar projection of a position into a projector frame: uv, inside-the-frame mask, footprint.";
-  SocketDef position;
-  position.name = "position";
-  position.type = SocketType::kVector;
-  position.default_node = "position";
-  position.doc = "the point projected; default: the shading point's world position";
-  d.inputs = {position};
-  ParamDef depth;
-  depth.name = "depth";
-  depth.kind = ParamKind::kFloat;
-  depth.default_value = 1e30;
-  depth.min = 0.0;
-  depth.doc = "points farther than this from the projector plane (either side) are outside";
-  d.params = {vector_param_def("origin", "world position of the frame's corner uv = (0, 0)"),
-              vector_param_def("u_axis", "world vector from uv (0, 0) to (1, 0): the frame's width"),
-              vector_param_def("v_axis", "world vector from uv (0, 0) to (0, 1): the frame's height"), depth};
+  d.inputs = {context_input("position", SocketType::kVector, "position",
+                            "the point projected; default: the shading point's world position")};
+  d.params = {required_value_param("origin", "world position of the frame's corner uv = (0, 0)"),
+              required_value_param("u_axis", "world vector from uv (0, 0) to (1, 0): the frame's width"),
+              required_value_param("v_axis", "world vector from uv (0, 0) to (0, 1): the frame's height"),
+              number_param("depth", 1e30, 0.0, 3.4e38,
+                           "points farther than this from the projector plane (either side) are outside")};
   d.outputs = {{"uv", SocketType::kVector, false, "(u, v, 0) in the frame"},
                {"inside", SocketType::kFloat, false, "1 inside the frame and the depth range, else 0"},
                {"footprint", SocketType::kFloat, false, "texture filter width in frame uv units"}};

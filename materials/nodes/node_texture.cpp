@@ -5,6 +5,7 @@
 #include <string>
 
 #include "materials/graph/resource_resolver.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -65,17 +66,11 @@ NodeDefinition texture_node() {
   NodeDefinition d;
   d.name = "texture";
   d.doc = "Filtered image lookup (periodic wrap). Images with 1 or 2 channels give a grey colour.";
-  SocketDef uv;
-  uv.name = "uv";
-  uv.type = SocketType::kVector;
-  uv.default_node = "uv";
-  uv.doc = "lookup coordinates (u, v, ignored); default: the mesh uv";
-  SocketDef footprint;
-  footprint.name = "footprint";
-  footprint.type = SocketType::kFloat;
-  footprint.default_value = NodeValue::of_float(-1.0f);
-  footprint.doc = "filter width in the units of `uv` (e.g. a projection's footprint); < 0: the mesh uv's";
-  d.inputs = {uv, footprint};
+  d.inputs = {
+      context_input("uv", SocketType::kVector, "uv",
+                    "lookup coordinates (u, v, ignored); default: the mesh uv"),
+      float_input("footprint", SocketType::kFloat, -1.0f, std::nullopt, std::nullopt,
+                  "filter width in the units of `uv` (e.g. a projection's footprint); < 0: the mesh uv's")};
   ParamDef file;
   file.name = "file";
   file.required = true;

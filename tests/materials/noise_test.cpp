@@ -97,24 +97,7 @@ TEST(Noise, RockHeightAddsFlowstoneAndCutsCracks) {
 
 // --- Nodes ---------------------------------------------------------------------------------------------
 
-class PositionNodes : public ::testing::Test {
- protected:
-  const Closure& evaluate(const std::string& json_text) {
-    material = compile(json_text, resolver);
-    ctx.lambda = &lambda;
-    ctx.textures = &textures;
-    arena.reset();
-    material->evaluate(ctx, arena, closure);
-    return closure;
-  }
-  SampledWavelengths lambda = test_wavelengths();
-  ShadingContext ctx;
-  StubResolver resolver{scratch_dir()};
-  StubTextures textures;
-  LobeArena arena;
-  Closure closure;
-  std::shared_ptr<const CompiledMaterial> material;
-};
+using PositionNodes = MaterialEvaluation;
 
 TEST_F(PositionNodes, NoiseOfThePositionDrivesAMix) {
   ctx.p = {0.3f, 1.7f, -2.2f};
