@@ -9,6 +9,7 @@
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/json_file.h"
+#include "renderer/material_templates.h"
 
 namespace ochre {
 
@@ -114,9 +115,11 @@ class SourceReader {
 
 // Makes the file names of a node absolute (relative to `dir`): the parameters "file" and "pigment_file"
 // and spectrum literals {"file": ...}, so that an inlined node still reads the files beside its own file.
+// Template placeholders ("mtl:map_Kd", material_templates.h) stay as they are.
 void absolute_file_names(nlohmann::json& node, const fs::path& dir) {
   auto absolute = [&](nlohmann::json& value) {
-    if (value.is_string() && fs::path(value.get<std::string>()).is_relative())
+    if (value.is_string() && value.get<std::string>().rfind(kMtlPrefix, 0) != 0 &&
+        fs::path(value.get<std::string>()).is_relative())
       value = fs::absolute(dir / value.get<std::string>()).lexically_normal().string();
   };
   for (auto& [key, value] : node.items()) {

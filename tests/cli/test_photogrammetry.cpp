@@ -95,6 +95,23 @@ TEST(Photogrammetry, MtlMaterialsMapToSceneMaterialsByName) {
   EXPECT_GT(h.right_b, 4 * h.right_r);
 }
 
+TEST(Photogrammetry, AMaterialThatLayersATemplateIsATemplateToo) {
+  const fs::path dir = scratch_dir();
+  write_two_atlas_scan(dir);
+  write_text(dir / "scene.json", std::string("{") + kView + R"(, "materials": {)" + kTemplate + R"(,
+      "black": {"type": "lambert", "color": 0},
+      "faded": {"nodes": {"scan": {"type": "material", "material": "scan"},
+                          "black": {"type": "material", "material": "black"},
+                          "out": {"type": "mix", "a": {"link": "black"}, "b": {"link": "scan"}, "factor": 0.5}},
+                "output": "out"}},
+    "shapes": [{"type": "mesh", "file": "scan.obj", "materials": {"*": "faded"}}]})");
+  const CommandResult r = run_ochre("render scene.json -o out.exr", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Halves h = mean_halves(dir / "out.exr");
+  EXPECT_GT(h.left_r, 4 * h.left_b);
+  EXPECT_GT(h.right_b, 4 * h.right_r);
+}
+
 void expect_bad_scan(const std::string& materials, const std::string& shape,
                      const std::vector<std::string>& expected) {
   const fs::path dir = scratch_dir();
