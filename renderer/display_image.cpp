@@ -15,6 +15,7 @@
 #include "renderer/atomic_file.h"
 #include "renderer/image_error.h"
 #include "renderer/memory_budget.h"
+#include "spectra/chromatic_adaptation.h"
 #include "spectra/input_file.h"
 
 namespace ochre {
@@ -99,6 +100,23 @@ void convert_working_space(std::vector<float>& rgb, ColorSpace from, ColorSpace 
   }
 }
 
+namespace {
+
+// Maps the illuminant white `white_xyz` to D65 (the white of Rec.709; ACEScg pixels go through their
+// D65-referred matrices, so the same holds) by a Bradford adaptation in XYZ, like a camera's white balance.
+void apply_white_balance(std::vector<float>& rgb, ColorSpace space, const std::array<double, 3>& white_xyz) {
+  const Array3d d65 = rgb_to_xyz_matrix(ColorSpace::LinearRec709) * Array3d{1, 1, 1};
+  const Mat3 m = xyz_to_rgb_matrix(space) *
+                 bradford_adaptation({white_xyz[0], white_xyz[1], white_xyz[2]}, d65) *
+                 rgb_to_xyz_matrix(space);
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
+    const Array3d balanced = m * Array3d{rgb[i], rgb[i + 1], rgb[i + 2]};
+    for (int c = 0; c < 3; ++c) rgb[i + c] = static_cast<float>(balanced[c]);
+  }
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vector<float>& rgb,
                                           const DisplayOptions& options, DisplayTransformReport* report) {
   check_size(width, height, rgb, "display image");
@@ -108,6 +126,7 @@ std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vect
         fmt::format("display image: exposure {} is not a finite number", options.exposure_stops));
   }
   std::vector<float> work = rgb;
+  if (options.white_balance_xyz) apply_white_balance(work, pixels_space, *options.white_balance_xyz);
   if (options.exposure_stops != 0.0f) {
     const float scale = std::exp2(options.exposure_stops);
     for (float& v : work) v *= scale;

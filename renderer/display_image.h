@@ -3,8 +3,10 @@
 // OpenColorIO display/view transform or, with ocio_config = "none", the plain sRGB transfer function.
 // Files are written through AtomicOutput. OIIO and OCIO headers stay in the .cpp files.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,9 @@ struct DisplayOptions {
   std::string working_space = "rec709";
   // Scales the linear pixels by 2^exposure_stops before the display transform.
   float exposure_stops = 0.0f;
+  // White balance before the display transform: a Bradford adaptation that maps this XYZ (an
+  // illuminant's white) to D65, the white of both working spaces' display. None = no white balance.
+  std::optional<std::array<double, 3>> white_balance_xyz;
 };
 
 // What a conversion used, for the caller to log.

@@ -8,6 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -122,9 +123,10 @@ struct ImportContext {
   const std::string& where;  // the file, for error messages
 };
 
-// Collects every (mesh, node-to-world) instance of the node hierarchy, in world space.
+// Collects every (mesh, node-to-world) instance of the node hierarchy, in world space, and the index of
+// each one's material in the file.
 void collect_parts(const ImportContext& context, const aiNode& node, const Transform& parent,
-                   std::vector<Mesh>& parts) {
+                   std::vector<Mesh>& parts, std::vector<unsigned>& materials) {
   const Transform global = parent * to_transform(node.mTransformation);
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& source = *context.scene.mMeshes[node.mMeshes[i]];
@@ -139,8 +141,10 @@ void collect_parts(const ImportContext& context, const aiNode& node, const Trans
           fmt::format("{}: node '{}' has a singular transform", context.where, node.mName.C_Str()));
     }
     parts.push_back(std::move(part));
+    materials.push_back(source.mMaterialIndex);
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) collect_parts(context, *node.mChildren[c], global, parts);
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    collect_parts(context, *node.mChildren[c], global, parts, materials);
 }
 
 template <typename T>
@@ -191,27 +195,83 @@ VertexColourEncoding vertex_colour_encoding(const std::filesystem::path& file) {
   return VertexColourEncoding::Linear;
 }
 
-Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
-                 const MeshImportOptions& options) {
-  const std::string where = file.string();
+namespace {
+
+// The texture files a material of the file names, by their MTL keyword (glTF base colour maps are
+// diffuse maps in Assimp, so they appear as map_Kd too).
+std::map<std::string, std::string> material_textures(const aiMaterial& material) {
+  static const std::pair<aiTextureType, const char*> kKeys[] = {
+      {aiTextureType_DIFFUSE, "map_Kd"}, {aiTextureType_SPECULAR, "map_Ks"},
+      {aiTextureType_AMBIENT, "map_Ka"}, {aiTextureType_SHININESS, "map_Ns"},
+      {aiTextureType_OPACITY, "map_d"},  {aiTextureType_HEIGHT, "map_bump"},
+      {aiTextureType_NORMALS, "norm"}};
+  std::map<std::string, std::string> textures;
+  for (const auto& [type, key] : kKeys) {
+    aiString path;
+    if (material.GetTextureCount(type) > 0 && material.GetTexture(type, 0, &path) == AI_SUCCESS)
+      textures[key] = path.C_Str();
+  }
+  return textures;
+}
+
+// The file read with the importer's flags, its triangles collected per part with the part's material.
+struct ImportedParts {
   Assimp::Importer importer;
+  const aiScene* scene = nullptr;
+  std::vector<Mesh> parts;
+  std::vector<unsigned> materials;
+};
+
+void import_parts(ImportedParts& out, const std::filesystem::path& file, const Transform& to_world,
+                  const MeshImportOptions& options) {
   // Points and lines pass through and are skipped by convert_mesh, so a file without triangles
   // gets our own error message rather than one from Assimp's validation.
   unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
   if (options.smooth_normals) flags |= aiProcess_GenSmoothNormals;
   if (options.flip_uv_v) flags |= aiProcess_FlipUVs;
   if (options.face_normals) flags |= aiProcess_DropNormals;
-  const aiScene* scene = read_mesh_file(importer, file, flags);
-  std::vector<Mesh> parts;
-  if (scene->mRootNode != nullptr) {
-    const ImportContext context{*scene, to_world, vertex_colour_encoding(file), where};
-    collect_parts(context, *scene->mRootNode, Transform::identity(), parts);
+  out.scene = read_mesh_file(out.importer, file, flags);
+  if (out.scene->mRootNode != nullptr) {
+    const std::string where = file.string();
+    const ImportContext context{*out.scene, to_world, vertex_colour_encoding(file), where};
+    collect_parts(context, *out.scene->mRootNode, Transform::identity(), out.parts, out.materials);
   }
-  if (parts.empty()) throw InputError(fmt::format("{}: the file contains no triangles", where));
-  Mesh mesh = merge_parts(parts);
+  if (out.parts.empty()) throw InputError(fmt::format("{}: the file contains no triangles", file.string()));
+}
+
+}  // namespace
+
+Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
+                 const MeshImportOptions& options) {
+  ImportedParts imported;
+  import_parts(imported, file, to_world, options);
+  Mesh mesh = merge_parts(imported.parts);
   mesh.name = file.stem().string();
-  mesh.validate(where);
+  mesh.validate(file.string());
   return mesh;
+}
+
+std::vector<MeshMaterialPart> import_mesh_by_material(const std::filesystem::path& file,
+                                                      const Transform& to_world,
+                                                      const MeshImportOptions& options) {
+  ImportedParts imported;
+  import_parts(imported, file, to_world, options);
+  std::vector<MeshMaterialPart> result;
+  for (unsigned m = 0; m < imported.scene->mNumMaterials; ++m) {
+    std::vector<Mesh> group;
+    for (size_t i = 0; i < imported.parts.size(); ++i)
+      if (imported.materials[i] == m) group.push_back(std::move(imported.parts[i]));
+    if (group.empty()) continue;
+    const aiMaterial& material = *imported.scene->mMaterials[m];
+    MeshMaterialPart part;
+    part.material = material.GetName().C_Str();
+    part.textures = material_textures(material);
+    part.mesh = merge_parts(group);
+    part.mesh.name = file.stem().string() + "/" + part.material;
+    part.mesh.validate(file.string());
+    result.push_back(std::move(part));
+  }
+  return result;
 }
 
 }  // namespace ochre

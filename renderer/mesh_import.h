@@ -11,7 +11,8 @@
 // - Merges all meshes of the file, instanced through the node hierarchy with their node
 //   transforms, into one Mesh named after the file stem, then applies `to_world` (normals by the
 //   inverse transpose, winding reversed for mirroring transforms). Materials in the file are
-//   ignored: the scene assigns one material to the whole mesh. When only some of the merged
+//   ignored: the scene assigns one material to the whole mesh (import_mesh_by_material keeps one mesh
+//   per file material instead). When only some of the merged
 //   meshes have normals, the others get flat face normals on unshared vertices; when only some
 //   have UVs or colours, the others get uv (0, 0) and colour (1, 1, 1).
 // - Vertex colours become linear Rec.709:
@@ -26,6 +27,9 @@
 //   InputError whose message starts with the file path.
 
 #include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "renderer/mesh.h"
 #include "renderer/transform.h"
@@ -40,6 +44,21 @@ struct MeshImportOptions {
 
 Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
                  const MeshImportOptions& options = {});
+
+// The triangles of one material of a file (an OBJ's MTL material, a glTF material) and the texture files
+// that material names, by MTL keyword (map_Kd, map_Ks, map_Ka, map_Ns, map_d, map_bump, norm; a glTF base
+// colour map is map_Kd), as written in the file (relative to the mesh file's folder).
+struct MeshMaterialPart {
+  std::string material;
+  std::map<std::string, std::string> textures;
+  Mesh mesh;  // named "<file stem>/<material>"
+};
+
+// As import_mesh, but one mesh per material of the file (in the file's material order; materials without
+// triangles are left out) instead of one merged mesh: photogrammetry exports with several texture atlases.
+std::vector<MeshMaterialPart> import_mesh_by_material(const std::filesystem::path& file,
+                                                      const Transform& to_world,
+                                                      const MeshImportOptions& options = {});
 
 // How vertex colours of a file are encoded (exposed for tests and documentation tools).
 enum class VertexColourEncoding { Linear, Srgb };

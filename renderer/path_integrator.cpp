@@ -169,8 +169,8 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
     // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
     // units through the triangle's world-per-uv scale.
-    if (v.sp.area_scale_uv > 0.0f)
-      ctx.uv_footprint = cone.width_at(path_length) / std::sqrt(v.sp.area_scale_uv);
+    ctx.footprint = cone.width_at(path_length);
+    if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
     scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
 
     // Emission seen by this path segment (one-sided: front face only).

@@ -25,6 +25,7 @@ DisplayOptions display_options(const OutputSettings& o) {
   d.view = o.view;
   d.working_space = o.colorspace;
   d.exposure_stops = o.exposure;
+  d.white_balance_xyz = o.white_balance_xyz;
   return d;
 }
 

@@ -2,7 +2,9 @@
 // Settings of one render: the "integrator" and "film" blocks of a scene, overridable on the
 // command line.
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace ochre {
@@ -27,8 +29,11 @@ struct OutputSettings {
   std::string ocio_config;            // "" = $OCIO, then the built-in config; "builtin"; "none"; or a path
   std::string display, view;          // OCIO display and view ("" = the config's defaults)
   float exposure = 0.0f;              // stops applied to the display image only
+  // White balance of the display image only: the XYZ of the illuminant shown as display white
+  // (Bradford-adapted to D65); none = no white balance.
+  std::optional<std::array<double, 3>> white_balance_xyz;
   bool aovs = false;
-  bool stokes = false;  // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
+  bool stokes = false;           // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
   std::string polarization_png;  // false-colour PNG of DoLP / AoLP (empty = none)
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
   float spectral_min = 360.0f,

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "materials/graph/graph_error.h"
@@ -15,15 +17,18 @@
 #include "renderer/input_error.h"
 #include "renderer/json_fields.h"
 #include "renderer/json_file.h"
+#include "renderer/material_templates.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mesh_import.h"
 #include "renderer/mitsuba_import.h"
 #include "renderer/point_light.h"
 #include "renderer/procedural_shapes.h"
+#include "renderer/scene_sources.h"
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
 #include "renderer/subdivision.h"
 #include "renderer/transform.h"
+#include "spectra/cie.h"
 
 namespace ochre {
 
@@ -73,6 +78,16 @@ PixelFilter parse_pixel_filter(const JsonFields& f) {
   f.fail("type", fmt::format("unknown filter '{}' (known: box, gaussian)", type));
 }
 
+// output.white_balance: an illuminant spectrum whose colour the display image shows as white.
+std::array<double, 3> parse_white_balance(const JsonFields& f, const std::filesystem::path& dir) {
+  const SpectrumPtr white =
+      parse_spectrum(f.require("white_balance"), SpectrumRole::Illuminant, f.child("white_balance"), dir);
+  const XYZ xyz = spectrum_to_xyz(*white);
+  if (!(xyz.x > 0.0f && xyz.y > 0.0f && xyz.z > 0.0f) || !std::isfinite(xyz.x + xyz.y + xyz.z))
+    f.fail("white_balance", "the illuminant must have a colour (positive, finite X, Y and Z)");
+  return {double(xyz.x) / xyz.y, 1.0, double(xyz.z) / xyz.y};
+}
+
 void load_settings(const JsonFields& top, Scene& scene) {
   RenderSettings& s = scene.settings;
   if (top.has("film")) {
@@ -102,8 +117,8 @@ void load_settings(const JsonFields& top, Scene& scene) {
   }
   if (top.has("output")) {
     const JsonFields f(top.require("output"), top.child("output"));
-    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "aovs", "spectral_bins",
-                   "spectral_range", "stokes", "polarization_png"});
+    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "white_balance", "aovs",
+                   "spectral_bins", "spectral_range", "stokes", "polarization_png"});
     const std::filesystem::path dir = scene.file.parent_path();
     if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
     if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
@@ -111,6 +126,7 @@ void load_settings(const JsonFields& top, Scene& scene) {
     scene.outputs.display = f.string("display", "");
     scene.outputs.view = f.string("view", "");
     scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    if (f.has("white_balance")) scene.outputs.white_balance_xyz = parse_white_balance(f, dir);
     scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
       const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 360.0, 830.0, false);
@@ -212,21 +228,102 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   f.fail("type", fmt::format("unknown camera type '{}' (known: perspective, orthographic)", type));
 }
 
-void load_materials(const JsonFields& top, const std::string& file, Scene& scene) {
-  if (!top.has("materials")) return;
-  const JsonFields materials(top.require("materials"), top.child("materials"));
-  SceneResources resources(scene.file.parent_path(), *scene.textures);
-  for (const auto& [name, value] : materials.json().items()) {
-    scene.material_names.push_back(name);
-    scene.materials.push_back(compile_material(value, name, file, resources));
+// Materials whose textures are "mtl:" placeholders (material_templates.h): compiled once per material of
+// each mesh file that uses them, not on their own.
+struct MaterialTemplates {
+  std::map<std::string, const SceneItem*> items;
+  std::map<std::pair<std::string, std::string>, int> instances;  // (template, file material) -> material
+};
+
+void load_materials(const SceneSources& sources, Scene& scene, MaterialTemplates& templates) {
+  for (const SceneItem& m : sources.materials) {
+    if (is_material_template(m.json)) {
+      templates.items[m.name] = &m;
+      continue;
+    }
+    SceneResources resources(m.file.parent_path(), *scene.textures);
+    scene.material_names.push_back(m.name);
+    scene.materials.push_back(compile_material(m.json, m.name, m.file.string(), resources));
   }
 }
 
-int material_index(const Scene& scene, const JsonFields& f) {
-  const std::string name = f.required_string("material");
+int material_index(const Scene& scene, const MaterialTemplates& templates, const JsonFields& f,
+                   const char* key, const std::string& name) {
   for (size_t i = 0; i < scene.material_names.size(); ++i)
     if (scene.material_names[i] == name) return static_cast<int>(i);
-  f.fail("material", fmt::format("unknown material '{}'", name));
+  if (templates.items.count(name))
+    f.fail(key, fmt::format("material '{}' is a template (it names \"mtl:\" textures): use it in a mesh's "
+                            "\"materials\" map",
+                            name));
+  f.fail(key, fmt::format("unknown material '{}'", name));
+}
+
+// The scene material for one material of a mesh file: `name` itself, or for a template its instance with
+// that file material's textures (compiled on first use).
+int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& map, const std::string& key,
+                  const MeshMaterialPart& part, const std::filesystem::path& mesh_dir) {
+  const std::string name = json_string(map.require(key.c_str()), map.child(key));
+  const auto it = templates.items.find(name);
+  if (it == templates.items.end()) return material_index(scene, templates, map, key.c_str(), name);
+  const auto cached = templates.instances.find({name, part.material});
+  if (cached != templates.instances.end()) return cached->second;
+  const SceneItem& item = *it->second;
+  const nlohmann::json json =
+      instantiate_material_template(item.json, part.textures, mesh_dir, part.material, map.child(key));
+  const std::string instance = name + "@" + part.material;
+  SceneResources resources(item.file.parent_path(), *scene.textures);
+  scene.material_names.push_back(instance);
+  scene.materials.push_back(compile_material(json, instance, item.file.string(), resources));
+  const int index = static_cast<int>(scene.materials.size() - 1);
+  templates.instances[{name, part.material}] = index;
+  return index;
+}
+
+// A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
+// file material, with the scene material the shape's "materials" map gives it (by name, or "*").
+std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem::path& dir, Scene& scene,
+                                      MaterialTemplates& templates) {
+  f.check_known({"type", "file", "materials", "transform", "smooth_normals", "face_normals", "flip_uv_v",
+                 "flip_normals", "name", "polarizer"});
+  if (f.required_string("type") != "mesh") f.fail("materials", "only a \"mesh\" shape has a materials map");
+  const JsonFields map(f.require("materials"), f.child("materials"));
+  std::filesystem::path path = f.required_string("file");
+  if (path.is_relative()) path = dir / path;
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
+  MeshImportOptions options;
+  options.smooth_normals = f.boolean("smooth_normals", false);
+  options.face_normals = f.boolean("face_normals", false);
+  options.flip_uv_v = f.boolean("flip_uv_v", false);
+  if (options.smooth_normals && options.face_normals)
+    f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+  std::vector<MeshMaterialPart> parts =
+      f.in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
+  std::string file_materials;
+  for (const MeshMaterialPart& part : parts)
+    file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
+  for (const auto& [key, value] : map.json().items()) {
+    const bool in_file =
+        std::any_of(parts.begin(), parts.end(), [&](const auto& p) { return p.material == key; });
+    if (key != "*" && !in_file)
+      map.fail(key, fmt::format("the file has no material '{}' (it has: {})", key, file_materials));
+  }
+  const std::string shape_name = f.string("name", "mesh");
+  std::vector<Mesh> meshes;
+  for (MeshMaterialPart& part : parts) {
+    const std::string key = map.has(part.material.c_str()) ? part.material : "*";
+    if (!map.has(key.c_str()))
+      f.fail("materials",
+             fmt::format("the file's material '{}' is not mapped (name it, or map \"*\"; the file's "
+                         "materials: {})",
+                         part.material, file_materials));
+    part.mesh.material = part_material(scene, templates, map, key, part, path.parent_path());
+    part.mesh.name = shape_name + "/" + part.material;
+    if (f.boolean("flip_normals", false)) flip_normals(part.mesh);
+    meshes.push_back(std::move(part.mesh));
+  }
+  return meshes;
 }
 
 Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
@@ -239,14 +336,14 @@ Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, cons
 // Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
 // smooth normal (shading normals recomputed).
 Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
-                     const Scene& scene) {
+                     const Scene& scene, const std::filesystem::path& dir) {
   const SubdivisionOptions options =
       parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
   const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, to_world); });
   Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
   if (f.has("displacement")) {
-    const DisplacementOptions d = parse_displacement(
-        JsonFields(f.require("displacement"), f.child("displacement")), scene.file.parent_path());
+    const DisplacementOptions d =
+        parse_displacement(JsonFields(f.require("displacement"), f.child("displacement")), dir);
     f.in_context("displacement", [&] { displace(mesh, d, *scene.textures); });
   }
   return mesh;
@@ -308,7 +405,9 @@ Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
   return make_grooved_cylinder(c);
 }
 
-Mesh load_shape(const JsonFields& f, const Scene& scene) {
+// `dir`: the folder of the file that holds the shape (its paths are relative to it).
+Mesh load_shape(const JsonFields& f, const Scene& scene, const MaterialTemplates& templates,
+                const std::filesystem::path& dir) {
   const std::string type = f.required_string("type");
   const Transform to_world = f.has("transform")
                                  ? parse_transform(f.require("transform"), f.child("transform"))
@@ -318,7 +417,7 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     f.check_known({"type", "file", "material", "transform", "smooth_normals", "face_normals", "flip_uv_v",
                    "flip_normals", "name", "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
-    if (path.is_relative()) path = scene.file.parent_path() / path;
+    if (path.is_relative()) path = dir / path;
     MeshImportOptions options;
     options.smooth_normals = f.boolean("smooth_normals", false);
     options.face_normals = f.boolean("face_normals", false);
@@ -328,7 +427,7 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
     for (const char* key : {"flip_uv_v", "face_normals"})
       if (f.has("subdivision") && f.boolean(key, false))
         f.fail(key, "is not supported with \"subdivision\" (change the file instead)");
-    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene)
+    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene, dir)
                                 : load_triangles(f, path, to_world, options);
   } else if (type == "sphere") {
     f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer",
@@ -377,21 +476,30 @@ Mesh load_shape(const JsonFields& f, const Scene& scene) {
   if (f.boolean("flip_normals", false)) flip_normals(mesh);
   if (type != "mesh" && f.boolean("flip_uv_v", false)) flip_uv_v(mesh);
   mesh.name = f.string("name", type);
-  mesh.material = material_index(scene, f);
+  mesh.material = material_index(scene, templates, f, "material", f.required_string("material"));
   mesh.validate(f.where());
   return mesh;
 }
 
-void load_shapes(const JsonFields& top, Scene& scene) {
-  if (!top.has("shapes") || !top.require("shapes").is_array())
-    top.fail("shapes", "expected an array of shapes");
-  const nlohmann::json& shapes = top.require("shapes");
-  for (size_t i = 0; i < shapes.size(); ++i) {
-    const JsonFields f(shapes[i], fmt::format("{}[{}]", top.child("shapes"), i));
-    scene.meshes.push_back(load_shape(f, scene));
-    scene.mesh_polarizers.push_back(parse_light_polarizer(f));
-    if (scene.mesh_polarizers.back() && !scene.materials[scene.meshes.back().material]->facts().is_emissive)
-      f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scene,
+                 MaterialTemplates& templates) {
+  if (!top.has("shapes") && sources.shapes.empty()) top.fail("shapes", "expected an array of shapes");
+  for (const SceneItem& shape : sources.shapes) {
+    const JsonFields f(shape.json, shape.where);
+    std::vector<Mesh> meshes;
+    if (f.has("materials")) {
+      if (f.has("material")) f.fail("materials", "give either \"material\" or \"materials\", not both");
+      meshes = load_material_parts(f, shape.file.parent_path(), scene, templates);
+    } else {
+      meshes.push_back(load_shape(f, scene, templates, shape.file.parent_path()));
+    }
+    const std::optional<Vec3> polarizer = parse_light_polarizer(f);
+    for (Mesh& mesh : meshes) {
+      if (polarizer && !scene.materials[mesh.material]->facts().is_emissive)
+        f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+      scene.meshes.push_back(std::move(mesh));
+      scene.mesh_polarizers.push_back(polarizer);
+    }
   }
 }
 
@@ -425,13 +533,10 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   return light;
 }
 
-void load_lights(const JsonFields& top, Scene& scene, float scene_radius) {
-  if (!top.has("lights")) return;
-  const nlohmann::json& lights = top.require("lights");
-  if (!lights.is_array()) top.fail("lights", "expected an array");
-  const std::filesystem::path dir = scene.file.parent_path();
-  for (size_t i = 0; i < lights.size(); ++i) {
-    const JsonFields f(lights[i], fmt::format("{}[{}]", top.child("lights"), i));
+void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) {
+  for (const SceneItem& item : sources.lights) {
+    const std::filesystem::path dir = item.file.parent_path();
+    const JsonFields f(item.json, item.where);
     const std::string type = f.required_string("type");
     if (type == "environment") {
       if (scene.environment) f.fail("type", "only one environment light is allowed");
@@ -497,10 +602,10 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
                                  overrides.parameters.front().first));
   auto scene = std::make_unique<Scene>();
   scene->file = std::filesystem::absolute(scene_path);
-  if (!root.is_object()) throw InputError(fmt::format("{}: a scene must be a JSON object", file));
-  const JsonFields top(root, file + ":");
-  top.check_known(
-      {"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes", "description"});
+  const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
+  const JsonFields top(sources.root, file + ":");
+  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
+                   "description", "include", "presets"});
   scene->description = top.string("description", "");
   if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
     top.fail("ochre", "expected a version string or number");
@@ -513,10 +618,11 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
     scene->camera_analyzer = parse_camera_polarizer(JsonFields(top.require("camera"), top.child("camera")));
 
   scene->textures = std::make_unique<OiioTextureProvider>();
-  load_materials(top, file, *scene);
-  load_shapes(top, *scene);
+  MaterialTemplates templates;
+  load_materials(sources, *scene, templates);
+  load_shapes(sources, top, *scene, templates);
   const float radius = bounding_radius(scene->meshes);
-  load_lights(top, *scene, radius);
+  load_lights(sources, *scene, radius);
 
   scene->polarizing_filters = scene->camera_analyzer.has_value();
   for (const auto& light : scene->lights) scene->polarizing_filters |= light->polarizer_axis.has_value();
@@ -531,11 +637,9 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
   return scene;
 }
 
-}  // namespace
-
-std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
-                                       const std::filesystem::path& scene_path,
-                                       const SceneOverrides& overrides) {
+std::unique_ptr<Scene> load_scene_checked(const nlohmann::json& root, const std::string& name,
+                                          const std::filesystem::path& scene_path,
+                                          const SceneOverrides& overrides) {
   try {
     return build_scene(root, name, scene_path, overrides);
   } catch (const GraphError& e) {
@@ -543,6 +647,23 @@ std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::st
   } catch (const nlohmann::json::exception& e) {
     // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
     throw InputError(fmt::format("{}: {}", name, e.what()));
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
+                                       const std::filesystem::path& scene_path,
+                                       const SceneOverrides& overrides) {
+  if (!overrides.preset) return load_scene_checked(root, name, scene_path, overrides);
+  try {
+    return load_scene_checked(root, name, scene_path, overrides);
+  } catch (const InputError& e) {
+    // A value the preset wrote is reported where it landed: say which preset put it there.
+    const std::string message = e.what();
+    if (message.find("presets") != std::string::npos) throw;
+    throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
+                                 *overrides.preset, name));
   }
 }
 

@@ -25,6 +25,7 @@ struct SceneOverrides {
   std::optional<std::string> sampler;
   // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
   std::vector<std::pair<std::string, std::string>> parameters;
+  std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)
 };
 
 std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});

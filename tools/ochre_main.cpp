@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   int threads = -1;
   uint64_t seed = 0;
   float exposure = 0.0f;
-  std::string polarization, sampler;
+  std::string polarization, sampler, preset;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
   render->add_option("scene", cmd.scene,
@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
   auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
+  auto* preset_opt = render->add_option("--preset", preset,
+                                        "Named variant from the scene's \"presets\" (e.g. fast, final); the "
+                                        "other options override it");
   auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
   auto* sampler_opt = render->add_option("--sampler", sampler, "independent | sobol")
@@ -208,6 +211,7 @@ int main(int argc, char** argv) {
   if (*seed_opt) cmd.overrides.seed = seed;
   if (*pol_opt) cmd.overrides.polarization = polarization;
   if (*sampler_opt) cmd.overrides.sampler = sampler;
+  if (*preset_opt) cmd.overrides.preset = preset;
   if (*res_opt) {
     int w = 0, h = 0;
     if (!parse_resolution(resolution, w, h) || w < 1 || h < 1) {

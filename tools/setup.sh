@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # ochre set-up: installs the Debian 12 packages ochre needs (idempotent, non-interactive),
 # then configures and builds Release into build/ (executables in build/bin/).
-# Usage: bash tools/setup.sh            (install + build)
+# Usage: bash tools/setup.sh            (install + build everything: tools and tests)
+#        bash tools/setup.sh ochre      (install + build only the given targets, e.g. the renderer: the
+#                                        quickest way to a first render, 152 of 333 compilations)
 #        OCHRE_SKIP_APT=1 bash tools/setup.sh   (build only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,4 +44,8 @@ if [ "${OCHRE_SKIP_APT:-0}" != 1 ] && [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j "$(nproc)"
+if [ $# -gt 0 ]; then
+  cmake --build build -j "$(nproc)" --target "$@"
+else
+  cmake --build build -j "$(nproc)"
+fi

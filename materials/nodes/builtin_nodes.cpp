@@ -15,6 +15,9 @@ NodeDefinition rgb_to_spectrum_node();
 NodeDefinition texture_node();
 NodeDefinition vertex_colour_node();
 NodeDefinition uv_node();
+NodeDefinition position_node();
+NodeDefinition noise_node();
+NodeDefinition projection_node();
 // Math (values and closures).
 NodeDefinition add_node();
 NodeDefinition multiply_node();
@@ -34,9 +37,12 @@ NodeDefinition powder_node();
 const NodeRegistry& NodeRegistry::builtin() {
   static const NodeRegistry registry = [] {
     NodeRegistry r;
-    for (auto make : {constant_node, spectrum_node, rgb_to_spectrum_node, texture_node, vertex_colour_node,
-                      uv_node, add_node, multiply_node, mix_node, lambert_node, emission_node, conductor_node,
-                      dielectric_node, lambert_sphere_node, oren_nayar_node, chandrasekhar_node, vgroove_node, microgroove_node, powder_node})
+    for (auto make : {constant_node,       spectrum_node,   rgb_to_spectrum_node, texture_node,
+                      vertex_colour_node,  uv_node,         position_node,        noise_node,
+                      projection_node,     add_node,        multiply_node,        mix_node,
+                      lambert_node,        emission_node,   conductor_node,       dielectric_node,
+                      lambert_sphere_node, oren_nayar_node, chandrasekhar_node,   vgroove_node,
+                      microgroove_node,    powder_node})
       r.add(make());
     return r;
   }();

@@ -17,6 +17,35 @@ SocketDef float_input(const char* name, SocketType type, float fallback, std::op
   return s;
 }
 
+SocketDef context_input(const char* name, SocketType type, const char* default_node, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = type;
+  s.default_node = default_node;
+  s.doc = doc;
+  return s;
+}
+
+ParamDef integer_param(const char* name, int fallback, int min, std::optional<int> max, const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kInt;
+  p.default_value = fallback;
+  p.min = min;
+  if (max) p.max = *max;
+  p.doc = doc;
+  return p;
+}
+
+ParamDef required_value_param(const char* name, const char* doc) {
+  ParamDef p;
+  p.name = name;
+  p.kind = ParamKind::kValue;
+  p.required = true;
+  p.doc = doc;
+  return p;
+}
+
 ParamDef number_param(const char* name, double fallback, double min, double max, const char* doc) {
   ParamDef p;
   p.name = name;

@@ -1,4 +1,4 @@
-// Nodes that read the shading point: vertex_colour and uv.
+// Nodes that read the shading point: vertex_colour, uv and position.
 
 #include "materials/nodes/node_definition.h"
 
@@ -11,6 +11,9 @@ void eval_vertex_colour(const NodeArgs& a) {
 }
 void eval_uv(const NodeArgs& a) {
   a.set_vector(0, {a.ctx.uv.x, a.ctx.uv.y, 0.0f});
+}
+void eval_position(const NodeArgs& a) {
+  a.set_vector(0, a.ctx.p);
 }
 
 }  // namespace
@@ -32,6 +35,16 @@ NodeDefinition uv_node() {
   d.outputs = {{"uv", SocketType::kVector, false, "(u, v, 0)"}};
   d.context_usage = kUsesUV;
   d.eval = eval_uv;
+  return d;
+}
+
+NodeDefinition position_node() {
+  NodeDefinition d;
+  d.name = "position";
+  d.doc = "The shading point's world position (scene units).";
+  d.outputs = {{"position", SocketType::kVector, false, "(x, y, z) in world space"}};
+  d.context_usage = kUsesGeometry;
+  d.eval = eval_position;
   return d;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "materials/graph/resource_resolver.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -40,18 +41,21 @@ void eval_texture(const NodeArgs& a) {
     throw std::logic_error("texture node evaluated without a TextureProvider in the ShadingContext");
   const Vec3 uvw = a.in_vector(0);
   const Vec2 uv{uvw.x, uvw.y};
+  // A footprint given with computed coordinates (a projection's) replaces the mesh uv's.
+  const float given_footprint = a.in_float(1);
+  const float footprint = given_footprint >= 0.0f ? given_footprint : a.ctx.uv_footprint;
   // Images with fewer than 3 channels are grey: their first channel fills r, g and b.
   const int colour_channels = t.channels >= 3 ? 3 : 1;
   const bool value_in_colour = t.channel < colour_channels;
   float c[3] = {0.0f, 0.0f, 0.0f};
   if (a.output_used(0) || (a.output_used(1) && value_in_colour)) {
-    a.ctx.textures->lookup(t.id, uv, a.ctx.uv_footprint, 0, colour_channels, c);
+    a.ctx.textures->lookup(t.id, uv, footprint, 0, colour_channels, c);
     if (colour_channels == 1) c[1] = c[2] = c[0];
     a.set_colour(0, {c[0], c[1], c[2]});
   }
   if (a.output_used(1)) {
     float v = value_in_colour ? c[t.channel] : 0.0f;
-    if (!value_in_colour) a.ctx.textures->lookup(t.id, uv, a.ctx.uv_footprint, t.channel, 1, &v);
+    if (!value_in_colour) a.ctx.textures->lookup(t.id, uv, footprint, t.channel, 1, &v);
     a.set_float(1, v);
   }
 }
@@ -62,12 +66,11 @@ NodeDefinition texture_node() {
   NodeDefinition d;
   d.name = "texture";
   d.doc = "Filtered image lookup (periodic wrap). Images with 1 or 2 channels give a grey colour.";
-  SocketDef uv;
-  uv.name = "uv";
-  uv.type = SocketType::kVector;
-  uv.default_node = "uv";
-  uv.doc = "lookup coordinates (u, v, ignored); default: the mesh uv";
-  d.inputs = {uv};
+  d.inputs = {
+      context_input("uv", SocketType::kVector, "uv",
+                    "lookup coordinates (u, v, ignored); default: the mesh uv"),
+      float_input("footprint", SocketType::kFloat, -1.0f, std::nullopt, std::nullopt,
+                  "filter width in the units of `uv` (e.g. a projection's footprint); < 0: the mesh uv's")};
   ParamDef file;
   file.name = "file";
   file.required = true;

@@ -18,7 +18,8 @@ struct ShadingContext {
   // The object's x, y and z axes in world space (the linear part of the object-to-world transform,
   // 3 vectors), or null for the identity.
   const Vec3* object_axes = nullptr;
-  float uv_footprint = 0;      // texture filter width in uv units (0 = point lookup)
+  float uv_footprint = 0;  // texture filter width in uv units (0 = point lookup)
+  float footprint = 0;     // the same width in world units (0 = point lookup), for computed coordinates
   const SampledWavelengths* lambda = nullptr;
   const TextureProvider* textures = nullptr;
   NonFiniteTally* nonfinite = nullptr;  // counts the NaN / infinite values made finite (null: not counted)

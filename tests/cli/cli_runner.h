@@ -19,9 +19,8 @@ struct CommandResult {
 CommandResult run_tool(const std::string& tool, const std::string& args,
                        const std::filesystem::path& working_dir = {}, bool stdout_only = false,
                        int timeout_seconds = 0);
-// Runs a shell command line as it is (the caller sets the environment and redirections), capturing its
-// stdout.
-CommandResult run_command_line(const std::string& command);
+// Runs a /bin/sh command line in `working_dir` (output as given by the command's own redirections).
+CommandResult run_shell(const std::string& shell_command, const std::filesystem::path& working_dir = {});
 // Runs `bin_dir()/ochre ARGS` in `working_dir`.
 inline CommandResult run_ochre(const std::string& args, const std::filesystem::path& working_dir = {}) {
   return run_tool("ochre", args, working_dir);

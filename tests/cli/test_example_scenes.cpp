@@ -1,10 +1,15 @@
 // Every example scene shipped in scenes/ (found by walking the folder, so a new scene is covered without
-// editing this file) loads with only the repository's files and renders a finite, non-black image.
+// editing this file) loads with only the repository's files and renders a finite, non-black image. Files
+// that other scenes include (a pigment library, the default cave) are fragments, not scenes: they are
+// rendered through the scenes that include them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
 #include <vector>
 
 #include "cli/cli_runner.h"
@@ -16,12 +21,42 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> example_scenes() {
-  std::vector<fs::path> scenes;
+std::vector<fs::path> json_files() {
+  std::vector<fs::path> files;
   for (const auto& entry : fs::recursive_directory_iterator(source_dir() / "scenes"))
-    if (entry.is_regular_file() && entry.path().extension() == ".json") scenes.push_back(entry.path());
-  std::sort(scenes.begin(), scenes.end());
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The files some shipped file names in its "include" list.
+std::set<fs::path> included_files(const std::vector<fs::path>& files) {
+  std::set<fs::path> included;
+  for (const fs::path& file : files) {
+    std::ifstream in(file);
+    const nlohmann::json json = nlohmann::json::parse(in, nullptr, true, true);
+    for (const auto& name : json.value("include", nlohmann::json::array()))
+      included.insert(fs::weakly_canonical(file.parent_path() / name.get<std::string>()));
+  }
+  return included;
+}
+
+std::vector<fs::path> example_scenes() {
+  const std::vector<fs::path> files = json_files();
+  const std::set<fs::path> fragments = included_files(files);
+  std::vector<fs::path> scenes;
+  for (const fs::path& file : files)
+    if (!fragments.count(fs::weakly_canonical(file))) scenes.push_back(file);
   return scenes;
+}
+
+TEST(ExampleScenes, FragmentsAreIncludedAndEveryLibraryPigmentIsInTheSwatches) {
+  const std::set<fs::path> fragments = included_files(json_files());
+  EXPECT_TRUE(fragments.count(fs::weakly_canonical(source_dir() / "scenes/default/cave.json")));
+  for (const auto& entry : fs::directory_iterator(source_dir() / "scenes/pigments")) {
+    if (entry.path().extension() != ".json" || entry.path().filename() == "swatches.json") continue;
+    EXPECT_TRUE(fragments.count(fs::weakly_canonical(entry.path()))) << entry.path() << " is in no scene";
+  }
 }
 
 TEST(ExampleScenes, EveryShippedSceneRendersAtLowResolution) {

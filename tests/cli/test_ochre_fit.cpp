@@ -56,7 +56,7 @@ struct SplitResult {
 SplitResult run_fit_with_progress(const std::string& args, const fs::path& dir) {
   const std::string command = fmt::format("cd '{}' && OCHRE_PROGRESS=plain '{}' {} 2> stderr.txt",
                                           dir.string(), (bin_dir() / kTool).string(), args);
-  const CommandResult r = run_command_line(command);
+  const CommandResult r = run_shell(command);
   return {r.exit_code, r.output, read_file(dir / "stderr.txt")};
 }
 

@@ -17,20 +17,8 @@
 namespace ochre::test {
 namespace {
 
-class GraphEval : public ::testing::Test {
+class GraphEval : public MaterialEvaluation {
  protected:
-  const Closure& evaluate(const CompiledMaterial& m) {
-    ctx.lambda = &lambda;
-    ctx.textures = &textures;
-    arena.reset();
-    m.evaluate(ctx, arena, closure);
-    return closure;
-  }
-  const Closure& evaluate(const std::string& json_text) {
-    material = compile(json_text, resolver);
-    return evaluate(*material);
-  }
-
   static void expect_spectrum_eq(const SampledSpectrum& actual, const SampledSpectrum& expected,
                                  float tolerance = 0.0f) {
     for (int k = 0; k < kSpectrumSamples; ++k) {
@@ -40,14 +28,6 @@ class GraphEval : public ::testing::Test {
         EXPECT_NEAR(actual[k], expected[k], tolerance * std::abs(expected[k])) << "lane " << k;
     }
   }
-
-  SampledWavelengths lambda = test_wavelengths();
-  ShadingContext ctx;
-  StubResolver resolver{scratch_dir()};
-  StubTextures textures;
-  LobeArena arena;
-  Closure closure;
-  std::shared_ptr<const CompiledMaterial> material;
 };
 
 TEST_F(GraphEval, LambertFloatGivesOneLobeOfThatWeight) {

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "support/test_paths.h"
+
 namespace ochre::test {
 
 int StubResolver::texture(const std::filesystem::path& file, const std::string& colorspace, int& channels) {
@@ -36,6 +38,21 @@ std::shared_ptr<const CompiledMaterial> compile(const std::string& json_text) {
 const SampledWavelengths& test_wavelengths() {
   static const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
   return lambda;
+}
+
+MaterialEvaluation::MaterialEvaluation() : resolver(scratch_dir()) {}
+
+const Closure& MaterialEvaluation::evaluate(const CompiledMaterial& m) {
+  ctx.lambda = &lambda;
+  ctx.textures = &textures;
+  arena.reset();
+  m.evaluate(ctx, arena, closure);
+  return closure;
+}
+
+const Closure& MaterialEvaluation::evaluate(const std::string& json_text) {
+  material = compile(json_text, resolver);
+  return evaluate(*material);
 }
 
 }  // namespace ochre::test

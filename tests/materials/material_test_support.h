@@ -2,6 +2,8 @@
 // Stubs of the renderer's side of the material interfaces, and helpers to compile materials
 // written as JSON text in the tests.
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -11,6 +13,9 @@
 #include "materials/graph/compiled_material.h"
 #include "materials/graph/material_compiler.h"
 #include "materials/graph/resource_resolver.h"
+#include "materials/lobes/closure.h"
+#include "materials/lobes/lobe_arena.h"
+#include "materials/nodes/shading_context.h"
 #include "materials/nodes/texture_provider.h"
 
 namespace ochre::test {
@@ -54,5 +59,23 @@ std::shared_ptr<const CompiledMaterial> compile(const std::string& json_text);
 
 // Fixed wavelengths 400, 500, 600, 700 nm.
 const SampledWavelengths& test_wavelengths();
+
+// A fixture that compiles materials from JSON text and evaluates them at its shading point `ctx` (with
+// the test wavelengths, the stub textures and a resolver rooted in a scratch directory).
+class MaterialEvaluation : public ::testing::Test {
+ protected:
+  const Closure& evaluate(const CompiledMaterial& m);
+  const Closure& evaluate(const std::string& json_text);
+
+  SampledWavelengths lambda = test_wavelengths();
+  ShadingContext ctx;
+  StubResolver resolver;
+  StubTextures textures;
+  LobeArena arena;
+  Closure closure;
+  std::shared_ptr<const CompiledMaterial> material;
+
+  MaterialEvaluation();
+};
 
 }  // namespace ochre::test

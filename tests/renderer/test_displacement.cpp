@@ -115,5 +115,103 @@ TEST(Displacement, ParsesOptions) {
   }
 }
 
+// The control cube of tests/data/cube_quads.obj's shape, built here: 8 corners, 6 quads, with a uv atlas that
+// splits vertices along its seams (each face its own uv square).
+ControlMesh seamed_cube() {
+  ControlMesh control;
+  control.name = "cube";
+  for (int k = 0; k < 8; ++k)
+    control.positions.push_back({float(k & 1), float((k >> 1) & 1), float((k >> 2) & 1)});
+  const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& f : faces) {
+    control.face_sizes.push_back(4);
+    for (int c = 0; c < 4; ++c) {
+      control.face_vertices.push_back(f[c]);
+      control.face_uv_indices.push_back(static_cast<int>(control.uvs.size()));
+      control.uvs.push_back({float(c == 1 || c == 2), float(c >= 2)});
+    }
+  }
+  return control;
+}
+
+TEST(Displacement, ProceduralRockNeedsNoUvsKeepsSeamsClosedAndIsDeterministic) {
+  const fs::path dir = test::scratch_dir();
+  OiioTextureProvider textures(dir / "cache");
+  DisplacementOptions options;
+  options.noise = RockNoise{};
+  options.noise->frequency = 3;
+  options.noise->cracks = 0.5f;
+  options.noise->flowstone = 0.5f;
+  options.scale = 0.05f;
+  Mesh mesh = subdivide(seamed_cube(), {SubdivisionScheme::CatmullClark, 3});
+  const Mesh before = mesh;
+  displace(mesh, options, textures);
+  Mesh again = subdivide(seamed_cube(), {SubdivisionScheme::CatmullClark, 3});
+  displace(again, options, textures);
+  EXPECT_EQ(mesh.positions, again.positions);  // the same bits every time
+  // Vertices that shared a position before (the copies along uv seams) still share it: no cracks.
+  size_t seam_pairs = 0;
+  float moved = 0;
+  for (size_t i = 0; i < before.positions.size(); ++i) {
+    moved = std::max(moved, length(mesh.positions[i] - before.positions[i]));
+    for (size_t j = i + 1; j < before.positions.size(); ++j)
+      if (before.positions[i] == before.positions[j]) {
+        ++seam_pairs;
+        EXPECT_EQ(mesh.positions[i], mesh.positions[j]) << i << " " << j;
+      }
+  }
+  EXPECT_GT(seam_pairs, 50u);
+  EXPECT_GT(moved, 0.01f);
+  EXPECT_LE(moved, 0.05f * 2.0f);  // |h| <= 1 + cracks + flowstone
+  // The procedural form needs no uvs.
+  Mesh without_uvs = before;
+  without_uvs.uvs.clear();
+  displace(without_uvs, options, textures);
+  EXPECT_EQ(without_uvs.positions, mesh.positions);
+}
+
+TEST(Displacement, ParsesProceduralRock) {
+  const nlohmann::json good = {{"noise",
+                                {{"frequency", 2},
+                                 {"octaves", 6},
+                                 {"seed", 4294967295u},
+                                 {"cracks", 0.3},
+                                 {"crack_width", 0.02},
+                                 {"flowstone", 0.4},
+                                 {"up", {0, 0, 2}}}},
+                               {"scale", 0.2}};
+  const DisplacementOptions options =
+      parse_displacement(JsonFields(good, "s.json: shapes[0].displacement"), "/s");
+  ASSERT_TRUE(options.noise.has_value());
+  EXPECT_FLOAT_EQ(options.noise->frequency, 2.0f);
+  EXPECT_EQ(options.noise->fractal.octaves, 6);
+  EXPECT_EQ(options.noise->seed, 4294967295u);
+  EXPECT_EQ(options.noise->up, Vec3(0, 0, 1));
+  EXPECT_FLOAT_EQ(options.scale, 0.2f);
+  // Each bad form and the text its message must contain (the field, or the problem for the whole object).
+  const std::string at = "s.json: shapes[0].displacement";
+  const std::pair<nlohmann::json, std::string> bad[] = {
+      {{{"file", "h.exr"}, {"noise", nlohmann::json::object()}}, at + ": give exactly one"},
+      {{{"scale", 0.1}}, at + ": give exactly one"},
+      {{{"noise", {{"frequency", 0}}}}, at + ".noise.frequency"},
+      {{{"noise", {{"octaves", 17}}}}, at + ".noise.octaves"},
+      {{{"noise", {{"octaves", 2.5}}}}, at + ".noise.octaves"},
+      {{{"noise", {{"seed", -1}}}}, at + ".noise.seed"},
+      {{{"noise", {{"seed", 4294967296.0}}}}, at + ".noise.seed"},
+      {{{"noise", {{"crack_width", 1.5}}}}, at + ".noise.crack_width"},
+      {{{"noise", {{"up", {0, 0, 0}}}}}, at + ".noise.up"},
+      {{{"noise", {{"glitter", 1}}}}, at + ".noise.glitter: unknown parameter"},
+      {{{"noise", 3}}, at + ".noise"}};
+  for (const auto& [json, expected] : bad) {
+    try {
+      parse_displacement(JsonFields(json, at), "/s");
+      FAIL() << json.dump();
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ochre
