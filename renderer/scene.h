@@ -13,6 +13,7 @@
 #include "renderer/camera.h"
 #include "renderer/distribution_1d.h"
 #include "renderer/environment_light.h"
+#include "renderer/flame_light.h"
 #include "renderer/mesh.h"
 #include "renderer/render_settings.h"
 #include "renderer/texture_system.h"
@@ -36,6 +37,7 @@ struct Scene {
   std::vector<int> mesh_light;     // light index of an emissive mesh, -1 otherwise
   const EnvironmentLight* environment = nullptr;
   int environment_light = -1;
+  std::vector<FlameLight> flames;  // sphere lights in `lights` that flicker in a frame sequence
 
   // Linear polarizers: on the camera (Mueller matrix in the camera's Stokes frame: x along the image x
   // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
@@ -49,6 +51,11 @@ struct Scene {
 
   // Builds the light list and selection distribution (after meshes and materials exist).
   void build_lights();
+  // Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per second
+  // (renderer/flame_light.h) and updates the light selection to the new powers.
+  void set_frame(uint64_t frame, double fps);
+  // The light selection distribution, proportional to the lights' powers.
+  void update_light_selection();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
 };
 

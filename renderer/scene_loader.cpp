@@ -18,6 +18,7 @@
 #include "renderer/memory_budget.h"
 #include "renderer/mesh_import.h"
 #include "renderer/point_light.h"
+#include "renderer/preset_lights.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/spectrum_json.h"
 #include "renderer/spot_light.h"
@@ -359,8 +360,8 @@ void check_power(const Light& light, const JsonFields& f, const char* key) {
 }
 
 std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
-  f.check_known(
-      {"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity", "polarizer"});
+  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "intensity",
+                 "polarizer", "preset", "scale"});
   const Vec3 position = f.required_vec3("position");
   if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
   const char* aim = f.has("direction") ? "direction" : "target";
@@ -368,11 +369,20 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
       f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
   if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
     f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
-  const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
-  const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
-  auto light = std::make_unique<SpotLight>(
-      position, direction, static_cast<float>(cone), static_cast<float>(falloff),
-      parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+  std::unique_ptr<SpotLight> light;
+  if (f.has("preset")) {  // docs/lights.md
+    const SpotPresetValues v = spot_preset_values(f);
+    light = std::make_unique<SpotLight>(position, direction, static_cast<float>(v.cone_angle),
+                                        static_cast<float>(v.falloff_start), v.intensity);
+  } else {
+    if (f.has("scale"))
+      f.fail("scale", "belongs to a \"preset\" light (scale an intensity spectrum with its own scale)");
+    const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
+    const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
+    light = std::make_unique<SpotLight>(
+        position, direction, static_cast<float>(cone), static_cast<float>(falloff),
+        parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+  }
   light->polarizer_axis = parse_light_polarizer(f);
   return light;
 }
@@ -400,12 +410,23 @@ void load_lights(const JsonFields& top, Scene& scene, float scene_radius) {
       scene.lights.push_back(std::move(light));
     } else if (type == "spot") {
       scene.lights.push_back(load_spot_light(f, dir));
-      check_power(*scene.lights.back(), f, "intensity");
+      check_power(*scene.lights.back(), f, f.has("preset") ? "scale" : "intensity");
+    } else if (type == "flame") {  // docs/lights.md
+      LoadedFlame loaded = load_flame(f);
+      check_power(*loaded.light, f, f.has("scale") ? "scale" : "intensity");
+      loaded.flame.index = static_cast<int>(scene.flames.size());
+      scene.flames.push_back(loaded.flame);
+      scene.lights.push_back(std::move(loaded.light));
+    } else if (type == "camera_flash") {
+      auto light = load_camera_flash(f, scene.camera);
+      light->polarizer_axis = parse_light_polarizer(f);
+      check_power(*light, f, "scale");
+      scene.lights.push_back(std::move(light));
     } else {
       f.fail("type",
-             fmt::format(
-                 "unknown light type '{}' (known: environment, point, spot; emissive shapes are area lights)",
-                 type));
+             fmt::format("unknown light type '{}' (known: environment, point, spot, flame, camera_flash; "
+                         "emissive shapes are area lights)",
+                         type));
     }
   }
 }

@@ -5,6 +5,7 @@
 
 #include "ochre/version.h"
 #include "spectra/byte_size.h"
+#include "tools/frame_options.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -73,6 +74,15 @@ int main(int argc, char** argv) {
       "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
       "(default: the machine's memory)");
 
+  uint64_t frames = 0, first_frame = 1;
+  double fps = 24.0;
+  auto* frames_opt = render->add_option("--frames", frames,
+                                        "Render a sequence of N frames in which flames flicker, written as "
+                                        "OUT.0001.exr ... (docs/cli.md#frame-sequences)");
+  auto* first_frame_opt = render->add_option("--first-frame", first_frame,
+                                             "Number of the first frame of the sequence (default 1)");
+  auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -102,6 +112,19 @@ int main(int argc, char** argv) {
                 << memory_limit << "'\n";
       return 2;
     }
+  }
+  if (const std::string error =
+          ochre::check_frame_options(*frames_opt ? std::optional<uint64_t>(frames) : std::nullopt,
+                                     *first_frame_opt ? std::optional<uint64_t>(first_frame) : std::nullopt,
+                                     *fps_opt ? std::optional<double>(fps) : std::nullopt);
+      !error.empty()) {
+    std::cerr << "ochre: error: " << error << "\n";
+    return 2;
+  }
+  if (*frames_opt) {
+    cmd.frames = frames;
+    cmd.first_frame = first_frame;
+    cmd.fps = fps;
   }
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;

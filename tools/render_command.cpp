@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "materials/graph/graph_error.h"
+#include "renderer/frame_names.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/load_progress.h"
@@ -84,6 +85,42 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   check_outputs(out);
 }
 
+// Renders the scene's current state into a film and writes `out`; returns the render statistics.
+RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const OutputSettings& out,
+                             const std::string& label, Phase& phase) {
+  phase = {"allocating the film", true};
+  Film film(scene.settings.width, scene.settings.height, film_layers(out));
+  const uint64_t total =
+      static_cast<uint64_t>(scene.settings.width) * scene.settings.height * scene.settings.spp;
+  std::optional<ProgressReporter> progress;
+  if (!command.quiet) {
+    try {
+      progress.emplace(label, total, std::cerr, stderr_is_terminal());
+    } catch (const std::invalid_argument& e) {  // a bad OCHRE_PROGRESS value is bad input, not a crash
+      throw InputError(std::string("OCHRE_PROGRESS: ") + e.what());
+    }
+  }
+  phase = {"rendering", false};
+  const RenderStats stats = render(scene, film, [&](uint64_t done) {
+    if (progress) progress->advance(done);
+  });
+  if (progress) progress->finish();
+  if (!command.quiet) print_stats(stats);
+
+  phase = {"writing the outputs", true};
+  for (const std::string& line : write_outputs(film, out, scene.settings, stats, scene.file.string()))
+    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  return stats;
+}
+
+// The outputs of frame `frame` of a sequence (frame_output_name).
+OutputSettings frame_outputs(const OutputSettings& out, uint64_t frame) {
+  OutputSettings f = out;
+  for (std::string* path : {&f.exr, &f.png, &f.polarization_png})
+    if (!path->empty()) *path = frame_output_name(*path, frame);
+  return f;
+}
+
 int render_scene(const RenderCommand& command, Phase& phase) {
   const auto load_start = std::chrono::steady_clock::now();
   InputFileLog inputs;
@@ -94,7 +131,13 @@ int render_scene(const RenderCommand& command, Phase& phase) {
     apply_output_options(command, *scene);
   }
   const OutputSettings& out = scene->outputs;
-  const std::vector<std::string> paths = output_paths(out);
+  std::vector<std::string> paths;
+  if (command.frames)  // every frame's names are checked before the first frame renders
+    for (uint64_t k = 0; k < *command.frames; ++k)
+      for (const std::string& p : output_paths(frame_outputs(out, command.first_frame + k)))
+        paths.push_back(p);
+  else
+    paths = output_paths(out);
   check_output_files({paths.begin(), paths.end()}, inputs);
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
@@ -105,27 +148,24 @@ int render_scene(const RenderCommand& command, Phase& phase) {
   }
   phase = {"allocating the film", true};
   check_render_memory(scene->settings.width, scene->settings.height, out);
-  Film film(scene->settings.width, scene->settings.height, film_layers(out));
-  const uint64_t total =
-      static_cast<uint64_t>(scene->settings.width) * scene->settings.height * scene->settings.spp;
-  std::optional<ProgressReporter> progress;
-  if (!command.quiet) {
-    try {
-      progress.emplace("render", total, std::cerr, stderr_is_terminal());
-    } catch (const std::invalid_argument& e) {  // a bad OCHRE_PROGRESS value is bad input, not a crash
-      throw InputError(std::string("OCHRE_PROGRESS: ") + e.what());
-    }
+  if (!command.frames) {
+    render_and_write(command, *scene, out, "render", phase);
+    return 0;
   }
-  phase = {"rendering", false};
-  const RenderStats stats = render(*scene, film, [&](uint64_t done) {
-    if (progress) progress->advance(done);
-  });
-  if (progress) progress->finish();
-  if (!command.quiet) print_stats(stats);
-
-  phase = {"writing the outputs", true};
-  for (const std::string& line : write_outputs(film, out, scene->settings, stats, scene->file.string()))
-    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  // Each frame is its own render and its own all-or-nothing set of files; the flames take their state at
+  // the frame's time (renderer/flame_light.h), everything else is the scene as loaded.
+  const uint64_t last = command.first_frame + *command.frames - 1;
+  if (!command.quiet)
+    std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n",
+                             command.first_frame, last, command.fps, scene->flames.size());
+  for (uint64_t frame = command.first_frame; frame <= last; ++frame) {
+    scene->set_frame(frame - 1, command.fps);
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: frame {} of {} (t = {:.4f} s)\n", frame, last,
+                               static_cast<double>(frame - 1) / command.fps);
+    render_and_write(command, *scene, frame_outputs(out, frame), fmt::format("frame {} of {}", frame, last),
+                     phase);
+  }
   return 0;
 }
 

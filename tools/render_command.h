@@ -22,6 +22,11 @@ struct RenderCommand {
   bool stokes = false;                        // Stokes layers in the EXR
   std::string polarization_png;               // false-colour DoLP / AoLP PNG
   std::optional<std::uint64_t> memory_limit;  // bytes (--memory-limit); default: the machine's memory
+  // A frame sequence (docs/cli.md#frame-sequences): frames first_frame .. first_frame + frames - 1 at fps
+  // frames per second, each written to the output names with the frame number inserted.
+  std::optional<std::uint64_t> frames;
+  std::uint64_t first_frame = 1;
+  double fps = 24.0;
 };
 
 int run_render(const RenderCommand& command);
