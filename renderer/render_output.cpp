@@ -78,6 +78,27 @@ void add_spectral_channels(const Film& film, ExrImage& image) {
 
 }  // namespace
 
+std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
+  if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
+  const ColorSpace space = parse_color_space(outputs.colorspace);
+  std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
+      RGB c{m.x, m.y, m.z};
+      if (!outputs.camera_rgb) {
+        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                       space);
+      }
+      const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
+      rgb[i] = c.r;
+      rgb[i + 1] = c.g;
+      rgb[i + 2] = c.b;
+    }
+  return rgb;
+}
+
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
   const ColorSpace space = parse_color_space(colorspace);
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
@@ -150,7 +171,7 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
                                        const std::string& scene_file) {
   std::vector<std::string> written;
   OutputTransaction transaction;  // every file is complete before any existing one is replaced
-  const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
+  const std::vector<float> rgb = film_to_rgb(film, outputs);
   if (!outputs.exr.empty()) {
     ExrImage image;
     image.width = film.width();
@@ -165,7 +186,14 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     if (film.has_aovs()) add_aov_channels(film, outputs.colorspace, image);
     if (film.spectral_bins() > 0) add_spectral_channels(film, image);
     if (film.has_stokes()) add_stokes_channels(film, image);
-    image.chromaticities = outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+    // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
+    if (!outputs.camera_rgb)
+      image.chromaticities =
+          outputs.colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+    if (outputs.sensor != "cie1931") {
+      image.string_attributes["ochre.sensor"] = outputs.sensor;
+      image.string_attributes["ochre.sensorOutput"] = outputs.camera_rgb ? "camera_rgb" : "white_balanced";
+    }
     image.string_attributes["software"] = "ochre " OCHRE_VERSION;
     image.string_attributes["ochre.scene"] = scene_file;
     image.string_attributes["ochre.colorspace"] = outputs.colorspace;
@@ -176,8 +204,10 @@ std::vector<std::string> write_outputs(const Film& film, const OutputSettings& o
     image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
     image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
     write_exr(transaction.add(outputs.exr), image);
-    written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
-                                  image.height));
+    written.push_back(
+        fmt::format("wrote {} ({}, {}x{})", outputs.exr,
+                    outputs.camera_rgb ? "camera RGB of " + outputs.sensor : "linear " + outputs.colorspace,
+                    image.width, image.height));
   }
   if (!outputs.polarization_png.empty() && film.has_stokes()) {
     write_polarization_png(transaction.add(outputs.polarization_png), film);

@@ -12,8 +12,11 @@
 
 namespace ochre {
 
-// Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
+// Linear working-space RGB of the film (3 floats per pixel, row 0 at the top), of a film of XYZ.
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+// The same for the film of a render with these outputs: a camera sensor's film (docs/cameras.md) is
+// white-balanced to XYZ first (outputs.sensor_to_xyz), or written as camera RGB (outputs.camera_rgb).
+std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs);
 
 // Throws InputError when an output directory is missing or not writable, or the display
 // transform cannot be built (unknown config, display or view).

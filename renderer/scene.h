@@ -17,6 +17,7 @@
 #include "renderer/mesh.h"
 #include "renderer/render_settings.h"
 #include "renderer/texture_system.h"
+#include "spectra/sensor_response.h"
 
 namespace ochre {
 
@@ -25,6 +26,7 @@ struct Scene {
   RenderSettings settings;
   OutputSettings outputs;
   Camera camera;
+  SensorPtr sensor;  // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
 
   std::vector<std::shared_ptr<const CompiledMaterial>> materials;
   std::vector<std::string> material_names;

@@ -9,6 +9,7 @@
 #include "materials/graph/graph_error.h"
 #include "materials/graph/material_compiler.h"
 #include "materials/graph/resource_resolver.h"
+#include "renderer/camera_sensor.h"
 #include "renderer/control_mesh.h"
 #include "renderer/displacement.h"
 #include "renderer/groove_shapes.h"
@@ -97,7 +98,8 @@ void load_settings(const JsonFields& top, Scene& scene) {
     scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
     scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
-      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 360.0, 830.0, false);
+      // Up to 1200 nm: a camera sensor may see beyond the visible (docs/cameras.md).
+      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 300.0, 1200.0, false);
       if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
       scene.outputs.spectral_min = static_cast<float>(lo);
       scene.outputs.spectral_max = static_cast<float>(hi);
@@ -154,7 +156,7 @@ std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
 Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
-  f.check_known({"type", "fov", "size", "eye", "target", "up", "transform", "polarizer"});
+  f.check_known({"type", "fov", "size", "eye", "target", "up", "transform", "polarizer", "sensor"});
   // Every given field is checked, also those the chosen placement or type does not use.
   const std::string type = f.string("type", "perspective");
   const auto fov = static_cast<float>(f.number("fov", 40.0, 0.0, 179.0, true));
@@ -479,8 +481,15 @@ std::unique_ptr<Scene> load_scene_file(const std::filesystem::path& path, const 
   apply_overrides(overrides, scene->settings);
   check_settings(*scene, file);
   scene->camera = load_camera(top, scene->settings);
-  if (top.has("camera"))
-    scene->camera_analyzer = parse_camera_polarizer(JsonFields(top.require("camera"), top.child("camera")));
+  if (top.has("camera")) {
+    const JsonFields camera(top.require("camera"), top.child("camera"));
+    scene->camera_analyzer = parse_camera_polarizer(camera);
+    const CameraSensor sensor = parse_camera_sensor(camera, scene->file.parent_path());
+    scene->sensor = sensor.response;
+    scene->outputs.sensor = sensor.name;
+    scene->outputs.camera_rgb = sensor.camera_rgb;
+    scene->outputs.sensor_to_xyz = sensor.sensor_to_xyz;
+  }
 
   scene->textures = std::make_unique<OiioTextureProvider>();
   load_materials(top, file, *scene);

@@ -59,7 +59,7 @@ struct SceneOutcome {
 
 struct RenderedScene {
   std::unique_ptr<ochre::Film> film;
-  std::string colorspace;
+  ochre::OutputSettings outputs;  // working space and camera sensor (film_to_rgb)
   uint32_t spp = 0;
 };
 
@@ -72,7 +72,7 @@ RenderedScene render_scene(const fs::path& file, uint32_t spp, uint64_t seed, st
   RenderedScene r;
   r.film = std::make_unique<ochre::Film>(scene->settings.width, scene->settings.height);
   ochre::render(*scene, *r.film);
-  r.colorspace = scene->outputs.colorspace;
+  r.outputs = scene->outputs;
   r.spp = spp;
   return r;
 }
@@ -118,7 +118,7 @@ void update_reference(const RegressCommand& cmd, const fs::path& file, const och
   const uint32_t spp = cmd.reference_spp.value_or(kReferenceSppFactor * settings.spp);
   const RenderedScene r = render_scene(file, spp, kReferenceSeedOffset + settings.seed, cmd.threads);
   // write_exr goes through a temporary file and a rename: an interrupted update keeps the old reference.
-  ochre::write_exr(out, ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), spp));
+  ochre::write_exr(out, ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.outputs), spp));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("updated {} ({} spp, seed {}, {:.2f} s)\n", out.string(), spp,
              kReferenceSeedOffset + settings.seed, seconds);
@@ -158,7 +158,7 @@ SceneOutcome run_scene(const RegressCommand& cmd, const fs::path& file, const oc
     ochre::check_output_files(outputs, inputs);
     ochre::OutputTransaction transaction;  // the three files of a failure, or none
     ochre::write_exr(transaction.add(render_exr),
-                     ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.colorspace), r.spp));
+                     ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.outputs), r.spp));
     ochre::write_exr(transaction.add(p_exr), ochre::p_value_image(result));
     ochre::write_p_value_heatmap(transaction.add(p_png), result);
     transaction.commit();
