@@ -1,6 +1,6 @@
 #pragma once
 // Light: an emitter that next-event estimation can sample. Implementations:
-// point_light.h, environment_light.h, area_light.h.
+// point_light.h, spot_light.h, sphere_light.h, environment_light.h, area_light.h.
 
 #include <optional>
 
@@ -15,6 +15,9 @@ struct LightSample {
   SampledSpectrum radiance;  // arriving radiance (point lights: intensity / distance^2)
   float pdf = 0.0f;          // solid-angle pdf (delta lights: 1)
   bool delta = false;
+  // A light that camera and BSDF rays cannot hit (sphere_light.h): light sampling is its only strategy,
+  // so its samples take no MIS weight.
+  bool only_by_light_sampling = false;
   Vec3 light_normal;  // geometric normal at the sampled point (area lights)
 };
 

@@ -123,8 +123,9 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   if (scene_.accel->occluded(shadow)) return;
 
   const float light_pdf = pmf * ls->pdf;
-  const float mis =
-      ls->delta ? 1.0f : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+  const float mis = ls->delta || ls->only_by_light_sampling
+                        ? 1.0f
+                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
   throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
 }
 

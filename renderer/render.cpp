@@ -39,13 +39,19 @@ bool is_finite(const XYZ& c) {
 }
 
 // Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
-bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda) {
-  XYZ xyz = sampled_to_xyz(S[0], lambda);
+// The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
+XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
+}
+
+bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
+                const SensorResponse* sensor) {
+  XYZ xyz = sensor_value(sensor, S[0], lambda);
   std::array<XYZ, 3> s123{};
   bool finite = is_finite(xyz);
   if (film.has_stokes())
     for (int c = 0; c < 3; ++c) {
-      s123[c] = sampled_to_xyz(S[c + 1], lambda);
+      s123[c] = sensor_value(sensor, S[c + 1], lambda);
       finite = finite && is_finite(s123[c]);
     }
   if (!finite) {
@@ -76,6 +82,7 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, const Til
   const uint64_t nonfinite_before = nonfinite.values;
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
+  const SensorResponse* sensor = scene.sensor.get();
   uint64_t discarded = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
@@ -85,15 +92,16 @@ void render_tile(const Scene& scene, const PathIntegrator& integrator, const Til
       const int fx = x - rect.x0, fy = y - rect.y0;
       for (uint32_t k = samples.begin; k < samples.end; ++k) {
         const Sampler sampler(s.seed, pixel_index, k);
+        const float u_lambda = sampler.get_1d(SampleDims::kWavelength);
         const SampledWavelengths lambda =
-            SampledWavelengths::sample_visible(sampler.get_1d(SampleDims::kWavelength));
+            sensor ? sensor->sample_wavelengths(u_lambda) : SampledWavelengths::sample_visible(u_lambda);
         const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
         const SensorStokes S =
             integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
         if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
-        if (add_sample(film, fx, fy, S, lambda)) ++discarded;
+        if (add_sample(film, fx, fy, S, lambda, sensor)) ++discarded;
       }
     }
   }

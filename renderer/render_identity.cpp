@@ -39,6 +39,11 @@ std::uint64_t file_content_hash(const InputFileRecord& record) {
 
 }  // namespace
 
+std::string sensor_identity(const OutputSettings& outputs) {
+  if (outputs.sensor == "cie1931") return outputs.sensor;
+  return outputs.sensor + (outputs.camera_rgb ? " camera_rgb" : " white_balanced");
+}
+
 std::string scene_content_hash(const std::vector<InputFileRecord>& scene_inputs) {
   std::vector<std::string> files;
   for (const InputFileRecord& record : scene_inputs)
@@ -54,7 +59,8 @@ const std::vector<std::string>& identity_field_names() {
   static const std::vector<std::string> names = {
       "ochre.version", "ochre.sceneHash",    "ochre.resolution",    "ochre.spp",       "ochre.seed",
       "ochre.sampler", "ochre.polarization", "ochre.maxDepth",      "ochre.rrDepth",   "ochre.aovs",
-      "ochre.stokes",  "ochre.spectralBins", "ochre.spectralRange", "ochre.colorspace"};
+      "ochre.stokes",  "ochre.spectralBins", "ochre.spectralRange", "ochre.colorspace",
+      "ochre.sensor"};
   return names;
 }
 
@@ -76,6 +82,7 @@ RenderIdentity render_identity(const Scene& scene, const std::string& content_ha
       {"ochre.spectralBins", std::to_string(layers.spectral_bins)},
       {"ochre.spectralRange", fmt::format("{}-{}", layers.spectral_min, layers.spectral_max)},
       {"ochre.colorspace", scene.outputs.colorspace},
+      {"ochre.sensor", sensor_identity(scene.outputs)},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

@@ -92,6 +92,27 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
   return nm;
 }
 
+std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
+  if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
+  const ColorSpace space = parse_color_space(outputs.colorspace);
+  std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
+      RGB c{m.x, m.y, m.z};
+      if (!outputs.camera_rgb) {
+        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                       space);
+      }
+      const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
+      rgb[i] = c.r;
+      rgb[i + 1] = c.g;
+      rgb[i + 2] = c.b;
+    }
+  return rgb;
+}
+
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
   const ColorSpace space = parse_color_space(colorspace);
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
@@ -106,9 +127,10 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) 
   return rgb;
 }
 
-ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const std::string& colorspace,
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
                           const RenderSettings& settings, const RenderStats& stats,
                           const std::string& scene_file) {
+  const std::string& colorspace = outputs.colorspace;
   ExrImage image;
   image.width = film.width();
   image.height = film.height();
@@ -122,7 +144,13 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   if (film.has_aovs()) add_aov_channels(film, colorspace, image);
   if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   if (film.has_stokes()) add_stokes_channels(film, image);
-  image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+  // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
+  if (!outputs.camera_rgb)
+    image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+  if (outputs.sensor != "cie1931") {
+    image.string_attributes["ochre.sensor"] = outputs.sensor;
+    image.string_attributes["ochre.sensorOutput"] = outputs.camera_rgb ? "camera_rgb" : "white_balanced";
+  }
   image.string_attributes["software"] = "ochre " OCHRE_VERSION;
   image.string_attributes["ochre.scene"] = scene_file;
   image.string_attributes["ochre.colorspace"] = colorspace;
@@ -201,12 +229,14 @@ std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film&
                                      const OutputSettings& outputs, const RenderSettings& settings,
                                      const RenderStats& stats, const std::string& scene_file) {
   std::vector<std::string> written;
-  const std::vector<float> rgb = film_to_rgb(film, outputs.colorspace);
+  const std::vector<float> rgb = film_to_rgb(film, outputs);
   if (!outputs.exr.empty()) {
-    const ExrImage image = render_exr_image(film, rgb, outputs.colorspace, settings, stats, scene_file);
+    const ExrImage image = render_exr_image(film, rgb, outputs, settings, stats, scene_file);
     write_exr(transaction.add(outputs.exr), image);
-    written.push_back(fmt::format("wrote {} (linear {}, {}x{})", outputs.exr, outputs.colorspace, image.width,
-                                  image.height));
+    written.push_back(
+        fmt::format("wrote {} ({}, {}x{})", outputs.exr,
+                    outputs.camera_rgb ? "camera RGB of " + outputs.sensor : "linear " + outputs.colorspace,
+                    image.width, image.height));
   }
   if (!outputs.polarization_png.empty() && film.has_stokes()) {
     write_polarization_png(transaction.add(outputs.polarization_png), film);

@@ -18,8 +18,11 @@ namespace ochre {
 
 class OutputTransaction;
 
-// Linear working-space RGB of the film (3 floats per pixel, row 0 at the top).
+// Linear working-space RGB of the film (3 floats per pixel, row 0 at the top), of a film of XYZ.
 std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+// The same for the film of a render with these outputs: a camera sensor's film (docs/cameras.md) is
+// white-balanced to XYZ first (outputs.sensor_to_xyz), or written as camera RGB (outputs.camera_rgb).
+std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs);
 
 // The display transform of the PNG output (OCIO config, display, view, working space, exposure).
 DisplayOptions display_options(const OutputSettings& outputs);
@@ -33,9 +36,9 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
 // attributes to image (film.spectral_bins() > 0).
 void add_spectral_channels(const Film& film, ExrImage& image);
 
-// The EXR write_outputs() writes, in memory: R, G, B (`rgb`, film_to_rgb(film, colorspace)), then the AOV,
+// The EXR write_outputs() writes, in memory: R, G, B (`rgb`, film_to_rgb(film, outputs)), then the AOV,
 // spectral and Stokes layers the film has, and the render's settings and statistics in the header.
-ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const std::string& colorspace,
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
                           const RenderSettings& settings, const RenderStats& stats,
                           const std::string& scene_file);
 

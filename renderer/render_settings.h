@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "spectra/mat3.h"
+
 namespace ochre {
 
 struct RenderSettings {
@@ -35,6 +37,11 @@ struct OutputSettings {
   bool aovs = false;
   bool stokes = false;           // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
   std::string polarization_png;  // false-colour PNG of DoLP / AoLP (empty = none)
+  // A camera sensor (camera.sensor, docs/cameras.md): the film holds the sensor's R, G, B. camera_rgb writes
+  // them as they are (no chromaticities in the EXR); otherwise sensor_to_xyz turns them into XYZ.
+  std::string sensor = "cie1931";
+  bool camera_rgb = false;
+  std::optional<Mat3> sensor_to_xyz;
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
   float spectral_min = 360.0f,
         spectral_max = 830.0f;  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y

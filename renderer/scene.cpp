@@ -18,6 +18,16 @@ void Scene::build_lights() {
   environment_light = -1;
   for (size_t i = 0; i < lights.size(); ++i)
     if (lights[i].get() == environment) environment_light = static_cast<int>(i);
+  update_light_selection();
+}
+
+void Scene::set_frame(uint64_t frame, double fps) {
+  for (const FlameLight& flame : flames)
+    apply_flame_state(flame, flame_state(flame, settings.seed, frame, fps));
+  update_light_selection();
+}
+
+void Scene::update_light_selection() {
   std::vector<double> power(lights.size());
   // An emitter whose radiance overflows has an infinite (or NaN) power estimate; the selection needs finite
   // weights (NaN counts as 0: such a light is only found by rays that hit it).

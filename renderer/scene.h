@@ -13,10 +13,12 @@
 #include "renderer/camera.h"
 #include "renderer/distribution_1d.h"
 #include "renderer/environment_light.h"
+#include "renderer/flame_light.h"
 #include "renderer/mesh.h"
 #include "renderer/pixel_filter.h"
 #include "renderer/render_settings.h"
 #include "renderer/texture_system.h"
+#include "spectra/sensor_response.h"
 
 namespace ochre {
 
@@ -27,6 +29,7 @@ struct Scene {
   OutputSettings outputs;
   Camera camera;
   PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
+  SensorPtr sensor;  // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
 
   std::vector<std::shared_ptr<const CompiledMaterial>> materials;
   std::vector<std::string> material_names;
@@ -39,6 +42,7 @@ struct Scene {
   std::vector<int> mesh_light;     // light index of an emissive mesh, -1 otherwise
   const EnvironmentLight* environment = nullptr;
   int environment_light = -1;
+  std::vector<FlameLight> flames;  // sphere lights in `lights` that flicker in a frame sequence
 
   // Linear polarizers: on the camera (Mueller matrix in the camera's Stokes frame: x along the image x
   // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
@@ -52,6 +56,11 @@ struct Scene {
 
   // Builds the light list and selection distribution (after meshes and materials exist).
   void build_lights();
+  // Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per second
+  // (renderer/flame_light.h) and updates the light selection to the new powers.
+  void set_frame(uint64_t frame, double fps);
+  // The light selection distribution, proportional to the lights' powers.
+  void update_light_selection();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
 };
 

@@ -11,6 +11,7 @@
 #include "materials/graph/graph_error.h"
 #include "materials/graph/material_compiler.h"
 #include "materials/graph/resource_resolver.h"
+#include "renderer/camera_sensor.h"
 #include "renderer/control_mesh.h"
 #include "renderer/displacement.h"
 #include "renderer/groove_shapes.h"
@@ -22,6 +23,7 @@
 #include "renderer/mesh_import.h"
 #include "renderer/mitsuba_import.h"
 #include "renderer/point_light.h"
+#include "renderer/preset_lights.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/scene_sources.h"
 #include "renderer/spectrum_json.h"
@@ -129,7 +131,8 @@ void load_settings(const JsonFields& top, Scene& scene) {
     if (f.has("white_balance")) scene.outputs.white_balance_xyz = parse_white_balance(f, dir);
     scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
-      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 360.0, 830.0, false);
+      // Up to 1200 nm: a camera sensor may see beyond the visible (docs/cameras.md).
+      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 300.0, 1200.0, false);
       if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
       scene.outputs.spectral_min = static_cast<float>(lo);
       scene.outputs.spectral_max = static_cast<float>(hi);
@@ -196,7 +199,7 @@ FovAxis parse_fov_axis(const JsonFields& f) {
 Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
-  f.check_known({"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer"});
+  f.check_known({"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer", "sensor"});
   // Every given field is checked, also those the chosen placement or type does not use.
   const std::string type = f.string("type", "perspective");
   const auto fov = static_cast<float>(
@@ -512,7 +515,7 @@ void check_power(const Light& light, const JsonFields& f, const char* key) {
 
 std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
   f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "falloff",
-                 "intensity", "polarizer"});
+                 "intensity", "polarizer", "preset", "scale"});
   const Vec3 position = f.required_vec3("position");
   if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
   const char* aim = f.has("direction") ? "direction" : "target";
@@ -520,15 +523,24 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
       f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
   if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
     f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
-  const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
-  const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
   const std::string ramp = f.string("falloff", "smoothstep");
   if (ramp != "smoothstep" && ramp != "linear")
     f.fail("falloff", fmt::format("unknown falloff '{}' (known: smoothstep, linear)", ramp));
-  auto light = std::make_unique<SpotLight>(
-      position, direction, static_cast<float>(cone), static_cast<float>(falloff),
-      parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir),
-      ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep);
+  const SpotLight::Falloff shape = ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
+  std::unique_ptr<SpotLight> light;
+  if (f.has("preset")) {  // docs/lights.md
+    const SpotPresetValues v = spot_preset_values(f);
+    light = std::make_unique<SpotLight>(position, direction, static_cast<float>(v.cone_angle),
+                                        static_cast<float>(v.falloff_start), v.intensity, shape);
+  } else {
+    if (f.has("scale"))
+      f.fail("scale", "belongs to a \"preset\" light (scale an intensity spectrum with its own scale)");
+    const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
+    const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
+    light = std::make_unique<SpotLight>(
+        position, direction, static_cast<float>(cone), static_cast<float>(falloff),
+        parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir), shape);
+  }
   light->polarizer_axis = parse_light_polarizer(f);
   return light;
 }
@@ -553,12 +565,23 @@ void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) 
       scene.lights.push_back(std::move(light));
     } else if (type == "spot") {
       scene.lights.push_back(load_spot_light(f, dir));
-      check_power(*scene.lights.back(), f, "intensity");
+      check_power(*scene.lights.back(), f, f.has("preset") ? "scale" : "intensity");
+    } else if (type == "flame") {  // docs/lights.md
+      LoadedFlame loaded = load_flame(f);
+      check_power(*loaded.light, f, f.has("scale") ? "scale" : "intensity");
+      loaded.flame.index = static_cast<int>(scene.flames.size());
+      scene.flames.push_back(loaded.flame);
+      scene.lights.push_back(std::move(loaded.light));
+    } else if (type == "camera_flash") {
+      auto light = load_camera_flash(f, scene.camera);
+      light->polarizer_axis = parse_light_polarizer(f);
+      check_power(*light, f, "scale");
+      scene.lights.push_back(std::move(light));
     } else {
       f.fail("type",
-             fmt::format(
-                 "unknown light type '{}' (known: environment, point, spot; emissive shapes are area lights)",
-                 type));
+             fmt::format("unknown light type '{}' (known: environment, point, spot, flame, camera_flash; "
+                         "emissive shapes are area lights)",
+                         type));
     }
   }
 }
@@ -614,8 +637,15 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
   apply_overrides(overrides, scene->settings);
   check_settings(*scene, file);
   scene->camera = load_camera(top, scene->settings);
-  if (top.has("camera"))
-    scene->camera_analyzer = parse_camera_polarizer(JsonFields(top.require("camera"), top.child("camera")));
+  if (top.has("camera")) {
+    const JsonFields camera(top.require("camera"), top.child("camera"));
+    scene->camera_analyzer = parse_camera_polarizer(camera);
+    const CameraSensor sensor = parse_camera_sensor(camera, scene->file.parent_path());
+    scene->sensor = sensor.response;
+    scene->outputs.sensor = sensor.name;
+    scene->outputs.camera_rgb = sensor.camera_rgb;
+    scene->outputs.sensor_to_xyz = sensor.sensor_to_xyz;
+  }
 
   scene->textures = std::make_unique<OiioTextureProvider>();
   MaterialTemplates templates;

@@ -39,7 +39,9 @@ struct RGBSigmoidPolynomial {
     return (c0 * lambda_nm + c1) * lambda_nm + c2;
   }
 
-  float eval(float lambda_nm) const { return sigmoid(polynomial(lambda_nm)); }
+  // Outside 360-830 nm (the range the coefficients were fitted over; a camera sensor may reach further,
+  // docs/cameras.md) the spectrum holds its end values instead of following the parabola.
+  float eval(float lambda_nm) const { return sigmoid(polynomial(std::clamp(lambda_nm, 360.0f, 830.0f))); }
 
   // S is increasing, so the maximum is S of the polynomial's maximum over [360, 830] nm: at an end
   // of the range or at the vertex of a downward parabola. Evaluated in double: the float terms

@@ -19,17 +19,6 @@ constexpr double kVisibleNorm = 0.003939804229326285;
 constexpr double kVisibleCdfOffset = 0.85691062546982790;  // tanh(0.0072 (538 - 360))
 constexpr double kVisibleCdfScale = 1.82750197240922670;
 
-// Fractional part of u + i/4: the rotation that stratifies the 4 hero wavelengths.
-float rotated(float u, int i) {
-  float ui = u + static_cast<float>(i) / kSpectrumSamples;
-  if (ui >= 1.0f) ui -= 1.0f;
-  return ui;
-}
-
-}  // namespace
-
-namespace {
-
 // tanh(w (538 - lambda)) of the wavelength sampled by u: linear in u.
 float visible_tanh(float u) {
   return static_cast<float>(kVisibleCdfOffset) - static_cast<float>(kVisibleCdfScale) * u;
@@ -48,6 +37,12 @@ float visible_pdf_of_tanh(float x) {
 
 }  // namespace
 
+float hero_rotation(float u, int i) {
+  float ui = u + static_cast<float>(i) / kSpectrumSamples;
+  if (ui >= 1.0f) ui -= 1.0f;
+  return ui;
+}
+
 float sample_visible_wavelength(float u) {
   return visible_wavelength_of_tanh(visible_tanh(u));
 }
@@ -61,7 +56,7 @@ float visible_wavelength_pdf(float lambda) {
 SampledWavelengths SampledWavelengths::sample_visible(float u) {
   SampledWavelengths w;
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    const float x = visible_tanh(rotated(u, i));
+    const float x = visible_tanh(hero_rotation(u, i));
     w.lambda_[i] = visible_wavelength_of_tanh(x);
     w.pdf_[i] = visible_pdf_of_tanh(x);
   }
@@ -72,7 +67,7 @@ SampledWavelengths SampledWavelengths::sample_uniform(float u, float lambda_min,
   SampledWavelengths w;
   const float pdf = 1.0f / (lambda_max - lambda_min);
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    const float ui = rotated(u, i);
+    const float ui = hero_rotation(u, i);
     w.lambda_[i] = std::min((1.0f - ui) * lambda_min + ui * lambda_max, lambda_max);
     w.pdf_[i] = pdf;
   }
@@ -83,6 +78,14 @@ SampledWavelengths SampledWavelengths::fixed(const SampledSpectrum& lambda_nm) {
   SampledWavelengths w;
   w.lambda_ = lambda_nm;
   w.pdf_ = SampledSpectrum(1.0f);
+  return w;
+}
+
+SampledWavelengths SampledWavelengths::with_pdf(const SampledSpectrum& lambda_nm,
+                                                const SampledSpectrum& pdf) {
+  SampledWavelengths w;
+  w.lambda_ = lambda_nm;
+  w.pdf_ = pdf;
   return w;
 }
 

@@ -14,6 +14,8 @@ inline constexpr float kLambdaMax = 830.0f;
 // Visible-importance sampling of one wavelength on [360, 830] nm:
 // pdf(lambda) = 0.0039398042 / cosh^2(0.0072 (lambda - 538)).
 float sample_visible_wavelength(float u);
+// The fractional part of u + i/4: the rotation that stratifies the 4 hero wavelengths of one u.
+float hero_rotation(float u, int i);
 float visible_wavelength_pdf(float lambda);
 
 class SampledWavelengths {
@@ -25,6 +27,8 @@ class SampledWavelengths {
                                            float lambda_max = kLambdaMax);
   // Fixed wavelengths with unit pdf (for BRDF evaluation tools and tests).
   static SampledWavelengths fixed(const SampledSpectrum& lambda_nm);
+  // Wavelengths drawn by another sampler (a camera sensor's, sensor_response.h) with their pdfs.
+  static SampledWavelengths with_pdf(const SampledSpectrum& lambda_nm, const SampledSpectrum& pdf);
 
   float operator[](int i) const { return lambda_[i]; }
   const SampledSpectrum& lambda() const { return lambda_; }

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -71,6 +74,26 @@ std::string note(const PartialSumsHeader& h, const std::string& name) {
   return it == h.notes.end() ? "" : it->second;
 }
 
+// The numbers of note `name` (space-separated, as fmt writes doubles: exact round trip); nothing when the
+// note is absent. Throws InputError naming the file when there are not N finite numbers.
+template <size_t N>
+std::optional<std::array<double, N>> note_numbers(const PartialSumsHeader& h, const std::string& name) {
+  const std::string text = note(h, name);
+  if (text.empty()) return std::nullopt;
+  std::array<double, N> values{};
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  for (size_t i = 0; i < N; ++i) {
+    while (p < end && *p == ' ') ++p;
+    const auto [next, error] = std::from_chars(p, end, values[i]);
+    if (error != std::errc() || !std::isfinite(values[i]))
+      throw InputError(fmt::format("{}: expected {} numbers, got '{}'", name, N, text));
+    p = next;
+  }
+  if (p != end) throw InputError(fmt::format("{}: expected {} numbers, got '{}'", name, N, text));
+  return values;
+}
+
 // The final outputs as the render that made the parts would have written them.
 OutputSettings merged_outputs(const MergeCommand& command, const PartialSumsHeader& h) {
   OutputSettings out;
@@ -89,6 +112,13 @@ OutputSettings merged_outputs(const MergeCommand& command, const PartialSumsHead
   const std::string stops = note(h, "ochre.display.exposure");
   std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
   out.exposure = command.exposure.value_or(exposure);
+  // A camera sensor's film (docs/cameras.md): its name and output mode are part of the identity.
+  const std::string sensor = *identity_field(h.identity, "ochre.sensor");
+  const size_t space = sensor.rfind(' ');
+  out.sensor = sensor.substr(0, space);
+  out.camera_rgb = space != std::string::npos && sensor.substr(space + 1) == "camera_rgb";
+  if (const auto m = note_numbers<9>(h, "ochre.sensorToXYZ")) out.sensor_to_xyz = Mat3{*m};
+  out.white_balance_xyz = note_numbers<3>(h, "ochre.display.whiteBalance");
   return out;
 }
 

@@ -140,8 +140,7 @@ ochre::RgbImage render_image(ochre::Scene& scene, uint32_t spp, double* seconds)
   ochre::Film film(scene.settings.width, scene.settings.height);
   const ochre::RenderStats stats = ochre::render(scene, film);
   if (seconds) *seconds = stats.seconds;
-  return {film.width(), film.height(), ochre::film_to_rgb(film, scene.outputs.colorspace),
-          scene.outputs.colorspace};
+  return {film.width(), film.height(), ochre::film_to_rgb(film, scene.outputs), scene.outputs.colorspace};
 }
 
 ochre::RgbImage auto_reference(const ConvergeCommand& cmd) {

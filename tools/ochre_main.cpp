@@ -8,6 +8,7 @@
 #include "renderer/duration.h"
 #include "spectra/byte_size.h"
 #include "tools/merge_command.h"
+#include "tools/frame_options.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -91,6 +92,15 @@ int main(int argc, char** argv) {
       "--memory-limit", memory_limit,
       "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
       "(default: the machine's memory)");
+
+  uint64_t frames = 0, first_frame = 1;
+  double fps = 24.0;
+  auto* frames_opt = render->add_option("--frames", frames,
+                                        "Render a sequence of N frames in which flames flicker, written as "
+                                        "OUT.0001.exr ... (docs/cli.md#frame-sequences)");
+  auto* first_frame_opt = render->add_option("--first-frame", first_frame,
+                                             "Number of the first frame of the sequence (default 1)");
+  auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
 
   std::string sample_range, part, region, tile;
   auto* range_opt = render->add_option(
@@ -223,6 +233,29 @@ int main(int argc, char** argv) {
     cmd.overrides.height = h;
   }
   if (*memory_opt && !(cmd.memory_limit = parse_memory_limit(memory_limit))) return 2;
+  if (const std::string error =
+          ochre::check_frame_options(*frames_opt ? std::optional<uint64_t>(frames) : std::nullopt,
+                                     *first_frame_opt ? std::optional<uint64_t>(first_frame) : std::nullopt,
+                                     *fps_opt ? std::optional<double>(fps) : std::nullopt);
+      !error.empty()) {
+    std::cerr << "ochre: error: " << error << "\n";
+    return 2;
+  }
+  if (*frames_opt) {
+    // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
+    for (const CLI::Option* single : {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt,
+                                      resume_opt, render->get_option("--checkpoint"),
+                                      render->get_option("--preview")})
+      if (*single) {
+        std::cerr << "ochre: error: " << single->get_name()
+                  << ": not with --frames (a sequence renders whole frames; render one frame at a time "
+                     "to split or checkpoint it)\n";
+        return 2;
+      }
+    cmd.frames = frames;
+    cmd.first_frame = first_frame;
+    cmd.fps = fps;
+  }
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;
   if (*view_opt) cmd.view = view;

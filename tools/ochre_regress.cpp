@@ -66,7 +66,7 @@ struct SceneOutcome {
 
 struct RenderedScene {
   std::unique_ptr<ochre::Film> film;
-  ochre::OutputSettings outputs;
+  ochre::OutputSettings outputs;  // working space and camera sensor (film_to_rgb)
   std::string description;
   uint32_t spp = 0;
   double seconds = 0.0;  // the render alone
@@ -104,7 +104,7 @@ RenderedScene render_scene(const fs::path& file, uint32_t spp, uint64_t seed, st
 }
 
 ochre::ExrImage rendered_image(const RenderedScene& r) {
-  return ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.outputs.colorspace), r.spp);
+  return ochre::make_reference_image(*r.film, ochre::film_to_rgb(*r.film, r.outputs), r.spp);
 }
 
 fs::path reference_path(const fs::path& dir, const std::string& name) {

@@ -8,6 +8,8 @@
 #include <new>
 #include <optional>
 
+#include "materials/graph/graph_error.h"
+#include "renderer/frame_names.h"
 #include "renderer/image_error.h"
 #include "renderer/input_error.h"
 #include "renderer/load_progress.h"
@@ -98,6 +100,72 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   check_outputs(out);
 }
 
+// Renders the scene's current state (one frame of a sequence) into a film and writes `out`.
+RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const OutputSettings& out,
+                             const std::string& label, Phase& phase) {
+  phase = {"allocating the film", true};
+  Film film(scene.settings.width, scene.settings.height, film_layers(out));
+  const uint64_t total =
+      static_cast<uint64_t>(scene.settings.width) * scene.settings.height * scene.settings.spp;
+  std::optional<ProgressReporter> progress;
+  if (!command.quiet) {
+    try {
+      progress.emplace(label, total, std::cerr, stderr_is_terminal());
+    } catch (const std::invalid_argument& e) {  // a bad OCHRE_PROGRESS value is bad input, not a crash
+      throw InputError(std::string("OCHRE_PROGRESS: ") + e.what());
+    }
+  }
+  phase = {"rendering", false};
+  const RenderStats stats = render(scene, film, [&](uint64_t done) {
+    if (progress) progress->advance(done);
+  });
+  if (progress) progress->finish();
+  if (!command.quiet) print_stats(stats);
+
+  phase = {"writing the outputs", true};
+  for (const std::string& line : write_outputs(film, out, scene.settings, stats, scene.file.string()))
+    if (!command.quiet) std::cerr << "ochre: " << line << "\n";
+  return stats;
+}
+
+// The outputs of frame `frame` of a sequence (frame_output_name).
+OutputSettings frame_outputs(const OutputSettings& out, uint64_t frame) {
+  OutputSettings f = out;
+  for (std::string* path : {&f.exr, &f.png, &f.polarization_png})
+    if (!path->empty()) *path = frame_output_name(*path, frame);
+  return f;
+}
+
+// A frame sequence (docs/cli.md#frame-sequences): each frame is its own render and its own all-or-nothing
+// set of files; the flames take their state at the frame's time (renderer/flame_light.h), everything else
+// is the scene as loaded. Every frame's file names are checked before the first frame renders.
+int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog& inputs, Phase& phase,
+                  double load_seconds) {
+  const OutputSettings& out = scene.outputs;
+  std::vector<std::filesystem::path> paths;
+  for (uint64_t k = 0; k < *command.frames; ++k)
+    for (const std::string& p : output_paths(frame_outputs(out, command.first_frame + k))) paths.emplace_back(p);
+  check_output_files(paths, inputs);
+  const uint64_t last = command.first_frame + *command.frames - 1;
+  if (!command.quiet) {
+    print_summary(scene);
+    std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
+    std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n", command.first_frame,
+                             last, command.fps, scene.flames.size());
+  }
+  phase = {"allocating the film", true};
+  check_render_memory(scene.settings.width, scene.settings.height, out);
+  for (uint64_t frame = command.first_frame; frame <= last; ++frame) {
+    scene.set_frame(frame - 1, command.fps);
+    if (!command.quiet)
+      std::cerr << fmt::format("ochre: frame {} of {} (t = {:.4f} s)\n", frame, last,
+                               static_cast<double>(frame - 1) / command.fps);
+    render_and_write(command, scene, frame_outputs(out, frame), fmt::format("frame {} of {}", frame, last),
+                     phase);
+  }
+  return 0;
+}
+
 // The files of a render that checkpoints, and how it writes them.
 struct Checkpointing {
   std::filesystem::path path;
@@ -146,6 +214,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, *scene);
   }
+  if (command.frames) return render_frames(command, *scene, inputs, phase, seconds_since(start));
   if (resumed) check_resumable(*resumed, render_identity(*scene, content_hash));
   const RenderPart part = select_part(command, *scene);
   OutputSettings out = scene->outputs;

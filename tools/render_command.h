@@ -41,6 +41,11 @@ struct RenderCommand {
   bool checkpointing() const {
     return !checkpoint.empty() || checkpoint_interval || time_limit || !resume.empty();
   }
+  // A frame sequence (docs/cli.md#frame-sequences): frames first_frame .. first_frame + frames - 1 at fps
+  // frames per second, each written to the output names with the frame number inserted.
+  std::optional<std::uint64_t> frames;
+  std::uint64_t first_frame = 1;
+  double fps = 24.0;
 };
 
 int run_render(const RenderCommand& command);

@@ -1,6 +1,7 @@
 #include "tools/render_part.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 
@@ -71,6 +72,9 @@ PartialSumsHeader partial_header(const Scene& scene, const std::string& content_
   h.notes["ochre.display.display"] = out.display;
   h.notes["ochre.display.view"] = out.view;
   h.notes["ochre.display.exposure"] = fmt::format("{}", out.exposure);
+  // What turns the film into the output's RGB and display image, for ochre merge (which has no scene).
+  if (out.sensor_to_xyz) h.notes["ochre.sensorToXYZ"] = fmt::format("{}", fmt::join(out.sensor_to_xyz->m, " "));
+  if (out.white_balance_xyz) h.notes["ochre.display.whiteBalance"] = fmt::format("{}", fmt::join(*out.white_balance_xyz, " "));
   return h;
 }
 

@@ -34,12 +34,13 @@ TEST(NamedSpectra, KnownNamesResolve) {
                                                   "pigment-hematite_o-n",
                                                   "pigment-hematite_o-k",
                                                   "pigment-hematite_e-n",
-                                                  "pigment-hematite_e-k"}));
+                                                  "pigment-hematite_e-k",
+                                                  "LED-4100K-model"}));
   for (auto name : names) EXPECT_NE(named_spectrum(name), nullptr) << name;
 }
 
 TEST(NamedSpectra, IlluminantsHaveUnitLuminance) {
-  for (auto name : {"D65", "A", "E"})
+  for (auto name : {"D65", "A", "E", "LED-4100K-model"})
     EXPECT_NEAR(spectrum_to_xyz(*named_spectrum(name)).y, 1.0f, 1e-6f) << name;
   EXPECT_EQ(named_spectrum("D65"), d65());
   EXPECT_TRUE(named_spectrum("E")->is_constant());
@@ -65,7 +66,7 @@ TEST(NamedSpectra, UnknownNameListsTheKnownOnes) {
         "unknown spectrum name 'D50' (known: D65, A, E, cie_x, cie_y, cie_z, metal-Au-eta, metal-Au-k, "
         "metal-Ag-eta, metal-Ag-k, metal-Cu-eta, metal-Cu-k, metal-Al-eta, metal-Al-k, metal-Si-eta, "
         "metal-Si-k, pigment-hematite-n, pigment-hematite-k, pigment-hematite_o-n, pigment-hematite_o-k, "
-        "pigment-hematite_e-n, pigment-hematite_e-k)");
+        "pigment-hematite_e-n, pigment-hematite_e-k, LED-4100K-model)");
   }
 }
 

@@ -39,19 +39,19 @@ struct RenderOptions {
 // write (render_exr_image), so they hold the same bits.
 class RenderResult {
  public:
-  RenderResult(std::unique_ptr<Film> film, RenderSettings settings, RenderStats stats, std::string colorspace,
+  // `outputs`: the working space and the camera sensor (film_to_rgb) of the render.
+  RenderResult(std::unique_ptr<Film> film, RenderSettings settings, RenderStats stats, OutputSettings outputs,
                std::string scene_file)
       : film_(std::move(film)),
         settings_(settings),
         stats_(stats),
-        colorspace_(std::move(colorspace)),
+        outputs_(std::move(outputs)),
         scene_file_(std::move(scene_file)) {}
 
   const ExrImage& exr() {
     if (!exr_) {
-      const std::vector<float> rgb = film_to_rgb(*film_, colorspace_);
-      exr_ = std::make_unique<ExrImage>(
-          render_exr_image(*film_, rgb, colorspace_, settings_, stats_, scene_file_));
+      const std::vector<float> rgb = film_to_rgb(*film_, outputs_);
+      exr_ = std::make_unique<ExrImage>(render_exr_image(*film_, rgb, outputs_, settings_, stats_, scene_file_));
     }
     return *exr_;
   }
@@ -169,7 +169,7 @@ class RenderResult {
 
   void write_exr(const py::handle& path) { ochre::write_exr(to_path(path), exr()); }
 
-  const std::string& colorspace() const { return colorspace_; }
+  const std::string& colorspace() const { return outputs_.colorspace; }
   const RenderSettings& settings() const { return settings_; }
 
  private:
@@ -182,7 +182,7 @@ class RenderResult {
   std::unique_ptr<Film> film_;
   RenderSettings settings_;
   RenderStats stats_;
-  std::string colorspace_;
+  OutputSettings outputs_;
   std::string scene_file_;
   std::unique_ptr<ExrImage> exr_;
 };
@@ -286,7 +286,9 @@ class PyScene {
     }
     if (failure) std::rethrow_exception(failure);
     if (!progress.is_none()) progress(total, total);
-    return std::make_unique<RenderResult>(std::move(film), s.settings, stats, o.colorspace, s.file.string());
+    OutputSettings outputs = s.outputs;
+    outputs.colorspace = o.colorspace;
+    return std::make_unique<RenderResult>(std::move(film), s.settings, stats, outputs, s.file.string());
   }
 
  private:
