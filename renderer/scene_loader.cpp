@@ -306,7 +306,8 @@ std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem
   std::string file_materials;
   for (const MeshMaterialPart& part : parts)
     file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
-  for (const auto& [key, value] : map.json().items()) {
+  for (const auto& item : map.json().items()) {
+    const std::string& key = item.key();
     const bool in_file =
         std::any_of(parts.begin(), parts.end(), [&](const auto& p) { return p.material == key; });
     if (key != "*" && !in_file)

@@ -26,6 +26,13 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
   return text;
 }
 
+// The string `object[key]`, or "" when the member is absent or not a string (the loader reports it later
+// with the field's path; reading it here must not throw).
+std::string string_member(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
 class SourceReader {
  public:
   explicit SourceReader(SceneSources& out) : out_(out) {}
@@ -151,7 +158,7 @@ class MaterialInliner {
     }
     active_.push_back(i);
     SceneItem& m = materials_[i];
-    if (m.json.is_object() && m.json.value("type", "") == "material") {
+    if (m.json.is_object() && string_member(m.json, "type") == "material") {
       // A whole material that is a reference: a copy of the one it names.
       const size_t target = find(m.json, m.where);
       expand(target);
@@ -159,7 +166,7 @@ class MaterialInliner {
     } else if (m.json.is_object() && m.json.contains("nodes") && m.json["nodes"].is_object()) {
       std::vector<std::string> references;
       for (const auto& [name, node] : m.json["nodes"].items())
-        if (node.is_object() && node.value("type", "") == "material") references.push_back(name);
+        if (node.is_object() && string_member(node, "type") == "material") references.push_back(name);
       for (const std::string& name : references) inline_reference(m, name);
     }
     active_.pop_back();
@@ -248,10 +255,11 @@ void check_presets(const JsonFields& top, const std::vector<SceneItem>& shapes) 
       if (preset.has(key)) JsonFields(preset.require(key), preset.child(key));
     if (!preset.has("shapes")) continue;
     const JsonFields patches(preset.require("shapes"), preset.child("shapes"));
-    for (const auto& [shape, patch] : patches.json().items()) {
-      JsonFields(patch, patches.child(shape));
+    for (const auto& item : patches.json().items()) {
+      const std::string& shape = item.key();
+      JsonFields(item.value(), patches.child(shape));
       const bool found = std::any_of(shapes.begin(), shapes.end(), [&](const SceneItem& s) {
-        return s.json.is_object() && s.json.value("name", "") == shape;
+        return s.json.is_object() && string_member(s.json, "name") == shape;
       });
       if (!found) patches.fail(shape, fmt::format("no shape is named '{}'", shape));
     }
@@ -277,7 +285,7 @@ void apply_preset(SceneSources& sources, const std::string& name) {
   if (!preset.contains("shapes")) return;
   for (const auto& [shape, patch] : preset["shapes"].items())
     for (SceneItem& s : sources.shapes)
-      if (s.json.is_object() && s.json.value("name", "") == shape) s.json.merge_patch(patch);
+      if (s.json.is_object() && string_member(s.json, "name") == shape) s.json.merge_patch(patch);
 }
 
 }  // namespace

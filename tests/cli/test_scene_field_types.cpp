@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -63,6 +64,11 @@ std::string displaced(const std::string& members) {
                      data_file("cube_quads.obj"), members);
 }
 
+// A subdivided mesh displaced by procedural noise with the noise members `members`.
+std::string rock(const std::string& members) {
+  return displaced(fmt::format(R"("noise": {{{}}}, "scale": 0.1)", members));
+}
+
 std::vector<FieldCase> cases() {
   return {
       {"/description", "5", "description"},
@@ -74,6 +80,15 @@ std::vector<FieldCase> cases() {
       {"/materials", "[1]", "materials"},
       {"/lights", "{}", "lights"},
       {"/shapes", "{}", "shapes"},
+      {"/include", "5", "include"},
+      {"/include", "[5]", "include[0]"},
+      {"/presets", "[1]", "presets"},
+      {"/presets", R"({"fast": {"description": 5}})", "presets.fast.description"},
+      {"/presets", R"({"fast": {"camera": 5}})", "presets.fast.camera"},
+      {"/presets", R"({"fast": {"film": 5}})", "presets.fast.film"},
+      {"/presets", R"({"fast": {"integrator": 5}})", "presets.fast.integrator"},
+      {"/presets", R"({"fast": {"output": 5}})", "presets.fast.output"},
+      {"/presets", R"({"fast": {"shapes": 5}})", "presets.fast.shapes"},
 
       {"/camera/type", "5", "camera.type"},
       {"/camera/eye", R"("x")", "camera.eye"},
@@ -115,6 +130,7 @@ std::vector<FieldCase> cases() {
       {"/output/stokes", R"("yes")", "output.stokes"},
       {"/output/polarization_png", "1", "output.polarization_png"},
       {"/output/aovs", "1", "output.aovs"},
+      {"/output/white_balance", "true", "output.white_balance"},
 
       {"/materials/grey/color", R"("red")", "", "material 'grey', parameter 'color'"},
       {"/materials/grey", R"({"type": 5})", "", "material 'grey', parameter 'type'"},
@@ -207,6 +223,20 @@ std::vector<FieldCase> cases() {
       {"/shapes/3", displaced(R"("file": "height.exr", "colorspace": 5)"),
        "shapes[3].displacement.colorspace"},
       {"/shapes/3", displaced(R"("file": 5)"), "shapes[3].displacement.file"},
+      {"/shapes/3", rock(R"("frequency": "x")"), "shapes[3].displacement.noise.frequency"},
+      {"/shapes/3", rock(R"("octaves": 2.5)"), "shapes[3].displacement.noise.octaves"},
+      {"/shapes/3", rock(R"("lacunarity": [2])"), "shapes[3].displacement.noise.lacunarity"},
+      {"/shapes/3", rock(R"("gain": "half")"), "shapes[3].displacement.noise.gain"},
+      {"/shapes/3", rock(R"("seed": -1)"), "shapes[3].displacement.noise.seed"},
+      {"/shapes/3", rock(R"("cracks": true)"), "shapes[3].displacement.noise.cracks"},
+      {"/shapes/3", rock(R"("crack_frequency": "x")"), "shapes[3].displacement.noise.crack_frequency"},
+      {"/shapes/3", rock(R"("crack_width": null)"), "shapes[3].displacement.noise.crack_width"},
+      {"/shapes/3", rock(R"("flowstone": "x")"), "shapes[3].displacement.noise.flowstone"},
+      {"/shapes/3", rock(R"("flowstone_frequency": [3])"), "shapes[3].displacement.noise.flowstone_frequency"},
+      {"/shapes/3", rock(R"("up": "down")"), "shapes[3].displacement.noise.up"},
+      {"/shapes/3",
+       fmt::format(R"({{"type": "mesh", "file": "{}", "materials": 5}})", data_file("quad.obj")),
+       "shapes[3].materials"},
       {"/shapes/4/alpha", R"("60")", "shapes[4].alpha"},
       {"/shapes/4/pitch", "true", "shapes[4].pitch"},
       {"/shapes/4/count", "4.5", "shapes[4].count"},
@@ -328,8 +358,11 @@ std::set<std::pair<std::string, std::string>> documented_keys() {
   return keys;
 }
 
-bool covers(const FieldCase& c, const std::string& section, const std::string& key) {
-  if (section.empty()) return c.path == key;
+bool covers(const FieldCase& c, const std::string& given_section, const std::string& key) {
+  if (given_section.empty()) return c.path == key;
+  // Sections named in prose ("Presets") hold the keys of the lower-case field.
+  std::string section = given_section;
+  section[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(section[0])));
   const std::string prefix = section == "lights" || section == "shapes" ? section + "[" : section + ".";
   if (c.path.rfind(prefix, 0) != 0) return false;
   for (size_t at = c.path.find("." + key); at != std::string::npos; at = c.path.find("." + key, at + 1)) {
