@@ -11,7 +11,9 @@
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
 #include "cli/file_test_support.h"
+#include "renderer/exr_reader.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test {
 namespace {
@@ -93,6 +95,35 @@ TEST(SplitMerge, GridTilesTimesSampleRangesMergeToTheSingleRender) {
       parts += " " + name;
     }
   expect_merge_gives_the_single_render(dir, parts);
+}
+
+// A camera sensor's film holds the sensor's R, G, B: the merge turns them into the output the render would
+// write (white-balance matrix or camera RGB) and applies the display white balance, from the parts alone.
+TEST(SplitMerge, CameraSensorRendersMergeToTheSingleRender) {
+  for (const char* output : {"white_balanced", "camera_rgb"}) {
+    const fs::path dir = scratch_dir();
+    write_text(dir / "sensor.json", fmt::format(R"({{
+      "camera": {{"eye": [0, 0, 3], "target": [0, 0, 0],
+                  "sensor": {{"name": "nokia_n900", "output": "{}", "white_balance": {{"blackbody": 3000}}}}}},
+      "film": {{"resolution": [24, 16]}},
+      "integrator": {{"spp": 8}},
+      "output": {{"white_balance": {{"blackbody": 3000}}}},
+      "materials": {{"red": {{"type": "lambert", "color": [0.6, 0.2, 0.1]}}}},
+      "lights": [{{"type": "point", "position": [0, 1, 2], "intensity": {{"blackbody": 3000, "scale": 5}}}}],
+      "shapes": [{{"type": "sphere", "radius": 0.8, "material": "red"}}]}})",
+                                                output));
+    for (const char* args :
+         {"-o single.exr --png single.png", "--sample-range 0:3 -o a.exr", "--sample-range 3:8 -o b.exr"}) {
+      const CommandResult r = run_ochre(std::string("render sensor.json -q ") + args, dir);
+      ASSERT_EQ(r.exit_code, 0) << output << " " << args << "\n" << r.output;
+    }
+    const CommandResult r = merge(dir, "b.exr a.exr -o merged.exr --png merged.png");
+    ASSERT_EQ(r.exit_code, 0) << output << "\n" << r.output;
+    EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr")) << output;
+    EXPECT_EQ(read_bytes(dir / "single.png"), read_bytes(dir / "merged.png")) << output;
+    EXPECT_EQ(read_exr(dir / "single.exr").string_attributes.at("ochre.sensorOutput"),
+              read_exr(dir / "merged.exr").string_attributes.at("ochre.sensorOutput"));
+  }
 }
 
 TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
