@@ -178,7 +178,13 @@ TEST_F(BadResume, ADamagedCheckpoint) {
   std::ifstream in(dir / "out.checkpoint.exr", std::ios::binary);
   const std::string bytes{std::istreambuf_iterator<char>(in), {}};
   std::ofstream(dir / "cut.exr", std::ios::binary) << bytes.substr(0, bytes.size() * 2 / 3);
-  expect_refused("--resume cut.exr", "cut.exr: cannot read the sums");
+  // Where the cut falls depends on the compressed size of the sums: in the pixel data, or (for a small
+  // file) already in the header and offset table, which the EXR reader reports itself.
+  expect_refused("--resume cut.exr", "cut.exr: ");
+  const CommandResult r = run_ochre("render --resume cut.exr", dir);
+  EXPECT_TRUE(contains(r.output, "cut.exr: cannot read the sums") ||
+              contains(r.output, "cut.exr: not a readable EXR file"))
+      << r.output;
 }
 
 TEST(CheckpointOptions, MalformedDurationsAndAMissingSceneAreRefused) {
