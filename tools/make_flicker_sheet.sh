@@ -8,7 +8,7 @@ set -euo pipefail
 scene="${1:-scenes/default/default.json}"
 sheet="${2:-docs/images/cave_flicker.png}"
 ochre="${OCHRE:-build/bin/ochre}"
-frames="${FRAMES:-24}" fps="${FPS:-24}" resolution="${RESOLUTION:-240x135}" spp="${SPP:-32}"
+frames="${FRAMES:-24}" fps="${FPS:-24}" resolution="${RESOLUTION:-160x90}" spp="${SPP:-64}"
 columns="${SHEET_COLUMNS:-6}"
 rows=$(((frames + columns - 1) / columns))
 
