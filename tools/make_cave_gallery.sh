@@ -3,7 +3,7 @@
 # the repository root:
 #   docs/images/cave_capture_modes.png  the five capture modes of scenes/default/ (fast preset) side by side,
 #                                       each reduced to half size: torch, flash, cross-polarized, raking, infrared
-#   docs/images/default.png             the torch capture with --preset final, reduced to 960x540
+#   docs/images/default.png             the torch capture with --preset final, reduced to 800x450
 #                                       (skipped with --modes-only: at the preset's 128 spp it takes about 15
 #                                       minutes on two cores; FINAL_SPP=32 renders it with fewer samples)
 # usage: tools/make_cave_gallery.sh [--modes-only]   (environment: OCHRE, the ochre executable; FINAL_SPP)
@@ -24,6 +24,6 @@ echo "wrote docs/images/cave_capture_modes.png"
 if [ "${1:-}" != "--modes-only" ]; then
   "$ochre" render scenes/default/default.json --preset final ${FINAL_SPP:+--spp "$FINAL_SPP"} \
     -o "$work/final.exr" --png "$work/final.png"
-  oiiotool "$work/final.png" --resize 960x540 -o docs/images/default.png
+  oiiotool "$work/final.png" --resize 800x450 -o docs/images/default.png
   echo "wrote docs/images/default.png"
 fi
