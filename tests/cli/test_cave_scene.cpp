@@ -1,7 +1,8 @@
 // The default scene, a painted cave (scenes/default/), and its capture modes: each renders deterministically
 // (the same bits with 1 and 2 threads), the presets select the documented quality (the final preset's
 // subdivision level), the capture modes differ the way their lights say (the crossed analyzer removes the
-// film's glare), and the display white balance that the torch-lit default uses.
+// film's glare), and the display white balance that the torch-lit default uses. Every render names its PNG
+// too: without --png the scene's own `output.png` would be written next to the scene, into the source tree.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -33,13 +34,13 @@ double mean(const std::vector<float>& values) {
 }
 
 TEST(CaveScene, EveryCaptureModeRendersTheSameBitsOnOneAndTwoThreads) {
-  for (const char* mode : {"default", "flash", "cross_polarized", "raking"}) {
+  for (const char* mode : {"default", "flash", "cross_polarized", "raking", "infrared"}) {
     const fs::path dir = scratch_dir();
     for (int threads : {1, 2}) {
-      const CommandResult r =
-          run_ochre(fmt::format("render '{}' -o t{}.exr -q --resolution 32x18 --spp 2 --threads {}",
-                                capture(mode).string(), threads, threads),
-                    dir);
+      const CommandResult r = run_ochre(
+          fmt::format("render '{}' -o t{}.exr --png t{}.png -q --resolution 32x18 --spp 2 --threads {}",
+                      capture(mode).string(), threads, threads, threads),
+          dir);
       ASSERT_EQ(r.exit_code, 0) << mode << "\n" << r.output;
     }
     for (const char* c : {"R", "G", "B"})
@@ -51,14 +52,16 @@ TEST(CaveScene, EveryCaptureModeRendersTheSameBitsOnOneAndTwoThreads) {
 TEST(CaveScene, PresetsChooseTheSubdivisionLevel) {
   const fs::path dir = scratch_dir();
   // Fast (as written): level 3 of 2400 control quads = 307 200 triangles; final: level 4 = 1 228 800.
-  CommandResult r = run_ochre(fmt::format("render '{}' -o fast.exr --resolution 8x8 --spp 1 --preset fast",
-                                          capture("default").string()),
-                              dir);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("1 meshes (307200 triangles)"), std::string::npos) << r.output;
-  r = run_ochre(fmt::format("render '{}' -o final.exr --resolution 8x8 --spp 1 --preset final",
+  CommandResult r =
+      run_ochre(fmt::format("render '{}' -o fast.exr --png fast.png --resolution 8x8 --spp 1 --preset fast",
                             capture("default").string()),
                 dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 meshes (307200 triangles)"), std::string::npos) << r.output;
+  r = run_ochre(
+      fmt::format("render '{}' -o final.exr --png final.png --resolution 8x8 --spp 1 --preset final",
+                  capture("default").string()),
+      dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("1 meshes (1228800 triangles)"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("8x8, 1 spp, max depth 6"), std::string::npos) << r.output;  // --spp overrides 128
@@ -67,9 +70,10 @@ TEST(CaveScene, PresetsChooseTheSubdivisionLevel) {
 TEST(CaveScene, CrossedAnalyzerRemovesTheGlareOfTheDampFilm) {
   const fs::path dir = scratch_dir();
   for (const char* mode : {"flash", "cross_polarized"}) {
-    const CommandResult r = run_ochre(
-        fmt::format("render '{}' -o {}.exr -q --resolution 48x27 --spp 8", capture(mode).string(), mode),
-        dir);
+    const CommandResult r =
+        run_ochre(fmt::format("render '{0}' -o {1}.exr --png {1}.png -q --resolution 48x27 --spp 8",
+                              capture(mode).string(), mode),
+                  dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
   // Depolarized light passes the analyzer at half its power; the glare, polarized by the flash's filter

@@ -2,8 +2,9 @@
 // session (set -e), its ```json file=NAME blocks are written to NAME first, from a scratch copy of the
 // repository layout (scenes/ and the built tools linked in). Renders are made small: the `ochre` the
 // tutorial finds on its PATH is a wrapper that replaces --resolution and --spp with 48x27 and 2 samples, so
-// the guide shows the real commands and the test takes seconds. Every file the guide's commands write is
-// checked to exist afterwards.
+// the guide shows the real commands and the test takes seconds. Every file the guide's commands write (each
+// frame of a --frames sequence) is checked to exist afterwards.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -44,15 +45,30 @@ std::vector<Block> fenced_blocks(const std::string& markdown) {
   return blocks;
 }
 
-// The guide as one bash script, and the files its commands write (-o, --png, --heatmap arguments).
+// The files one command line writes: its -o, --png and --heatmap arguments; with `--frames N
+// [--first-frame K]` each of them once per frame, numbered K to K + N - 1 (docs/cli.md#frame-sequences).
+void add_outputs(const std::string& line, std::set<std::string>& outputs) {
+  const std::regex output_argument(R"((?:-o|--png|--heatmap) ([^ \n"]+)(\.(?:exr|png)))");
+  const std::regex frames(R"(--frames (\d+))"), first_frame(R"(--first-frame (\d+))");
+  std::smatch m;
+  int count = 0, first = 1;
+  if (std::regex_search(line, m, frames)) count = std::stoi(m[1].str());
+  if (std::regex_search(line, m, first_frame)) first = std::stoi(m[1].str());
+  for (std::sregex_iterator it(line.begin(), line.end(), output_argument), end; it != end; ++it) {
+    if (count == 0) outputs.insert((*it)[1].str() + (*it)[2].str());
+    for (int k = first; k < first + count; ++k)
+      outputs.insert(fmt::format("{}.{:04d}{}", (*it)[1].str(), k, (*it)[2].str()));
+  }
+}
+
+// The guide as one bash script, and the files its commands write.
 std::string tutorial_script(const std::vector<Block>& blocks, std::set<std::string>& outputs) {
   std::string script = "set -euo pipefail\n";
-  const std::regex output_argument(R"((?:-o|--png|--heatmap) ([^ \n"]+\.(?:exr|png)))");
   for (const Block& b : blocks) {
     if (b.info == "sh") {
       script += b.text;
-      for (std::sregex_iterator it(b.text.begin(), b.text.end(), output_argument), end; it != end; ++it)
-        outputs.insert((*it)[1].str());
+      std::istringstream lines(b.text);
+      for (std::string line; std::getline(lines, line);) add_outputs(line, outputs);
     } else if (b.info.rfind("json file=", 0) == 0) {
       script += "cat > " + b.info.substr(10) + " <<'OCHRE_TUTORIAL_EOF'\n" + b.text + "OCHRE_TUTORIAL_EOF\n";
     }
