@@ -322,7 +322,10 @@ cam = bpy.data.cameras.new('cam')
 cam.lens_unit = 'FOV'
 cam.sensor_fit = 'VERTICAL' if w >= h else 'HORIZONTAL'  # ochre's fov spans the shorter axis
 cam.angle = math.radians(C.get('fov', 40.0))
-cam.clip_start, cam.clip_end = 1e-3 * (eye - target).length, 1e3 * (eye - target).length
+corners = [o.matrix_world @ Vector(c) for o in scene.objects if o.type == 'MESH' for c in o.bound_box]
+extent = max((max(c[i] for c in corners) - min(c[i] for c in corners)) for i in range(3))
+far = max((c - eye).length for c in corners)
+cam.clip_start, cam.clip_end = 1e-6 * extent, 10.0 * far + extent  # nothing in the scene is clipped
 cam_ob = bpy.data.objects.new('cam', cam)
 cam_ob.matrix_world = Matrix((tuple(right) + (0,), tuple(right.cross(fwd)) + (0,), tuple(-fwd) + (0,),
                               tuple(eye) + (1,))).transposed()  # camera looks down its -Z, up +Y
