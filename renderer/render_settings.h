@@ -13,7 +13,7 @@ struct RenderSettings {
   uint32_t spp = 64;          // samples per pixel
   uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
   int max_depth = 8;          // maximum number of scattering events on a path
-  int rr_depth = 3;           // Russian roulette starts after this many bounces
+  int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
   uint64_t seed = 0;
   int threads = 0;                    // 0 = all cores
   std::string sampler = "sobol";      // independent | sobol (padded Owen-scrambled (0,2)-sequences)
@@ -28,7 +28,7 @@ struct OutputSettings {
   std::string display, view;          // OCIO display and view ("" = the config's defaults)
   float exposure = 0.0f;              // stops applied to the display image only
   bool aovs = false;
-  bool stokes = false;  // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
+  bool stokes = false;           // Stokes layers S0..S3 (XYZ-weighted, and per spectral bin), DoLP and AoLP
   std::string polarization_png;  // false-colour PNG of DoLP / AoLP (empty = none)
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
   float spectral_min = 360.0f,
