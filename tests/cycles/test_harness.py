@@ -68,8 +68,8 @@ class Variants(unittest.TestCase):
         with tempfile.TemporaryDirectory() as out:
             os.makedirs(os.path.join(out, 'scenes'))
             scene = os.path.join(ROOT, 'scenes/benchmark/cbox-matched.json')
-            args = argparse.Namespace(scene=scene, out=out)
-            name, path = rb.variant_scene(args, 'late:rr_depth=7,polarization=off')
+            args = argparse.Namespace(scene=scene, out=out, ochre_bin='bin')
+            name, path, _ = rb.variant_scene(args, 'late:rr_depth=7,polarization=off')
             self.assertEqual(name, 'late')
             s = json.load(open(path))
             self.assertEqual(s['integrator']['rr_depth'], 7)
@@ -77,7 +77,7 @@ class Variants(unittest.TestCase):
             self.assertEqual(s['integrator']['max_depth'], 5)  # kept from the scene
             files = [sh['file'] for sh in s['shapes']]
             self.assertTrue(all(os.path.isabs(f) and os.path.exists(f) for f in files), files)
-            name, path = rb.variant_scene(args, 'plain')
+            name, path, _ = rb.variant_scene(args, 'plain')
             self.assertEqual(json.load(open(path))['integrator'], json.load(open(scene))['integrator'])
 
 

@@ -16,7 +16,8 @@ geometric mean over the swept spp (lower is better: relMSE ~ C / t), also with t
 The luminance relMSE (Rec.709 Y, same epsilon) at --colour-spp shows how much of the error is colour noise.
 
 An ochre variant NAME:key=value,... sets keys of the scene's "integrator" block (rr_depth, max_depth,
-polarization, ...) in a copy written to OUT/scenes/ (paths made absolute); every variant is judged
+polarization, ...) in a copy; `bin=DIR` runs that variant with another build's ochre and ochre-converge
+(e.g. an export of an earlier commit, to compare before and after), else --ochre-bin. The scenes are written to OUT/scenes/ (paths made absolute); every variant is judged
 against the reference of the scene's own settings (the levers compared this way must not change the
 converged image). Output in OUT: results.csv (one row per renderer, variant and spp), summary.md (the table
 of C), images in OUT/exr/. With --lock FILE every timed render runs under `flock FILE`.
@@ -96,9 +97,9 @@ class Cycles:
 class Ochre:
     name = 'ochre'
 
-    def __init__(self, args, scene, label):
-        self.args, self.scene, self.label = args, scene, label
-        self.bin = os.path.join(args.ochre_bin, 'ochre')
+    def __init__(self, args, scene, label, ochre_bin):
+        self.args, self.scene, self.label, self.dir = args, scene, label, ochre_bin
+        self.bin = os.path.join(ochre_bin, 'ochre')
 
     def render(self, spp, seed, exr):
         cmd = [self.bin, 'render', self.scene, '-o', exr, '--spp', str(spp), '--seed', str(seed),
@@ -109,7 +110,7 @@ class Ochre:
         best = {}
         for _ in range(self.args.repeat):
             csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
-            cmd = [os.path.join(self.args.ochre_bin, 'ochre-converge'), self.scene, '--reference', ref_exr,
+            cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
                    '--spp', ','.join(map(str, spps)), '--threads', str(self.args.threads), '--csv', csv_path]
             subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
             for row in csv.DictReader(open(csv_path)):
@@ -122,6 +123,7 @@ def variant_scene(args, spec):
     """Writes the scene of an ochre variant NAME:key=value,... (keys of the integrator block)."""
     name, _, rest = spec.partition(':')
     settings = dict(kv.split('=', 1) for kv in rest.split(',') if kv)
+    ochre_bin = settings.pop('bin', args.ochre_bin)
     src = args.scene
     s = json.load(open(src))
 
@@ -135,7 +137,7 @@ def variant_scene(args, spec):
         s.setdefault('integrator', {})[k] = json.loads(v) if re.fullmatch(r'-?[0-9.]+|true|false', v) else v
     path = os.path.join(args.out, 'scenes', name + '.json')
     json.dump(s, open(path, 'w'), indent=1)
-    return name, path
+    return name, path, os.path.abspath(ochre_bin)
 
 
 def reference(args, r, tag):
@@ -200,9 +202,10 @@ def main():
         results += rows
     if 'ochre' in renderers:
         variants = [variant_scene(args, v) for v in (args.variant or ['ochre'])]
-        ref, floor, ref_exr = reference(args, Ochre(args, variant_scene(args, 'reference')[1], 'ref'), 'ochre')
-        for label, scene in variants:
-            o = Ochre(args, scene, label)
+        _, ref_scene, _ = variant_scene(args, 'reference')
+        ref, floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
+        for label, scene, ochre_bin in variants:
+            o = Ochre(args, scene, label, ochre_bin)
             rows = []
             for spp, seconds in o.sweep(spps, ref_exr).items():
                 exr = os.path.join(args.out, 'exr', f'ochre_{label}_spp{spp}.exr')
