@@ -1,0 +1,102 @@
+"""Tests of the Cycles benchmark harness (tools/cycles, docs/performance.md "Time to error against Cycles").
+
+    python3 test_harness.py            the metrics and scene variants on synthetic data (numpy only)
+    python3 test_harness.py --blender  one tiny Cycles render of scenes/benchmark/cbox-matched.json
+
+Exit code 77 (ctest's skip) when numpy, or for --blender Blender or oiiotool, is missing: CI machines
+have no Blender.
+"""
+import argparse, importlib.util, json, math, os, shutil, subprocess, sys, tempfile, unittest
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..'))
+SKIP = 77
+
+try:
+    import numpy as np
+except ImportError:
+    print('numpy missing: skipped')
+    sys.exit(SKIP)
+
+spec = importlib.util.spec_from_file_location('run_benchmark', os.path.join(ROOT, 'tools/cycles/run_benchmark.py'))
+rb = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(rb)
+
+
+class Metrics(unittest.TestCase):
+    def test_relmse_is_the_epsilon_relative_squared_error(self):
+        ref = np.full((4, 5, 3), 1.0)
+        self.assertAlmostEqual(rb.relmse(ref + 0.1, ref), 0.01 / 1.01, places=12)
+        ref[0, 0] = [0.0, 0.0, 0.0]  # a black pixel: the epsilon 1e-2 keeps it finite
+        x = ref.copy()
+        x[0, 0] = [0.1, 0.1, 0.1]
+        self.assertAlmostEqual(rb.relmse(x, ref), 3 * (0.01 / 0.01) / 60, places=12)
+
+    def test_luminance_relmse_ignores_an_error_of_constant_luminance(self):
+        ref = np.full((2, 2, 3), 0.5)
+        d = np.array([0.0722, 0.0, -0.2126]) * 0.1  # Rec.709 Y of d is 0
+        self.assertAlmostEqual(rb.luminance_relmse(ref + d, ref), 0.0, places=14)
+        self.assertGreater(rb.relmse(ref + d, ref), 0.0)
+
+    def test_reference_floor_of_two_halves(self):
+        ref = np.full((3, 3, 3), 2.0)
+        d = 0.2
+        self.assertAlmostEqual(rb.reference_floor(ref + d, ref - d), d * d / (4.0 + 1e-2), places=12)
+
+    def test_figure_of_merit_of_a_one_over_t_convergence(self):
+        rows = [dict(spp=s, seconds=0.01 * s, relmse=0.5 / (0.01 * s)) for s in (8, 16, 32, 64)]
+        self.assertAlmostEqual(rb.figure_of_merit(rows), 0.5, places=12)
+        self.assertAlmostEqual(rb.loglog_slope(rows), -1.0, places=9)
+        floor = 1e-3
+        lifted = [dict(r, relmse=r['relmse'] + floor) for r in rows]
+        self.assertAlmostEqual(rb.figure_of_merit(lifted, floor), 0.5, places=9)
+        self.assertGreater(rb.figure_of_merit(lifted), 0.5)
+
+    def test_monte_carlo_images_give_sigma_squared_times_seconds_per_sample(self):
+        rng = np.random.default_rng(7)
+        truth = rng.uniform(0.2, 2.0, (64, 64, 3))
+        sigma, seconds_per_spp = 0.3, 0.02
+        rows = []
+        for spp in (8, 32, 128):
+            x = truth + rng.normal(0.0, sigma / math.sqrt(spp), truth.shape)
+            rows.append(dict(spp=spp, seconds=seconds_per_spp * spp, relmse=rb.relmse(x, truth)))
+        expected = sigma ** 2 * seconds_per_spp * np.mean(1.0 / (truth ** 2 + 1e-2))
+        self.assertAlmostEqual(rb.figure_of_merit(rows) / expected, 1.0, delta=0.03)
+
+
+class Variants(unittest.TestCase):
+    def test_variant_scene_sets_integrator_keys_and_makes_paths_absolute(self):
+        with tempfile.TemporaryDirectory() as out:
+            os.makedirs(os.path.join(out, 'scenes'))
+            scene = os.path.join(ROOT, 'scenes/benchmark/cbox-matched.json')
+            args = argparse.Namespace(scene=scene, out=out, ochre_bin='bin')
+            name, path, _ = rb.variant_scene(args, 'late:rr_depth=7,polarization=off')
+            self.assertEqual(name, 'late')
+            s = json.load(open(path))
+            self.assertEqual(s['integrator']['rr_depth'], 7)
+            self.assertEqual(s['integrator']['polarization'], 'off')
+            self.assertEqual(s['integrator']['max_depth'], 5)  # kept from the scene
+            files = [sh['file'] for sh in s['shapes']]
+            self.assertTrue(all(os.path.isabs(f) and os.path.exists(f) for f in files), files)
+            name, path, _ = rb.variant_scene(args, 'plain')
+            self.assertEqual(json.load(open(path))['integrator'], json.load(open(scene))['integrator'])
+
+
+def blender_render():
+    if not shutil.which('blender') or not shutil.which('oiiotool'):
+        print('blender or oiiotool missing: skipped (apt-get install -y --no-install-recommends blender)')
+        return SKIP
+    with tempfile.TemporaryDirectory() as out:
+        exr = os.path.join(out, 'c.exr')
+        args = argparse.Namespace(blender='blender', threads=1, lock='', repeat=1)
+        seconds = rb.Cycles(args, os.path.join(ROOT, 'scenes/benchmark/cbox-matched.json')).render(1, 0, exr)
+        img = rb.read_exr(exr)
+        meta = json.load(open(exr[:-4] + '.json'))
+        ok = img.shape == (256, 256, 3) and seconds > 0 and meta['cycles_max_bounces'] == 4 and img.mean() > 0.01
+        print(f'Cycles render {seconds:.3f} s, shape {img.shape}, mean {img.mean():.4f}, meta {meta["cycles_max_bounces"]}')
+        return 0 if ok else 1
+
+
+if __name__ == '__main__':
+    if '--blender' in sys.argv:
+        sys.exit(blender_render())
+    unittest.main()

@@ -1,0 +1,240 @@
+"""Time to error of ochre and Blender Cycles on the same scene, side by side (docs/performance.md,
+"Time to error against Cycles").
+
+    PYENV_VERSION=system python3 tools/cycles/run_benchmark.py --out build/cycles-bench \
+        [--scene scenes/benchmark/cbox-matched.json] [--renderers cycles,ochre] [--ref-spp 4096]
+        [--spps 8,16,32,64,128,256] [--repeat 3] [--threads 2] [--variant NAME:key=value,...]
+        [--reuse-ref] [--lock /tmp/ochre-build.lock]
+
+Each renderer is judged against its own converged reference (two renders of ref_spp/2 with seeds 1001
+and 1002, averaged; a quarter of their squared difference estimates the reference's own relMSE, the
+floor). The sweep renders every spp with seed 0, --repeat times, keeping the fastest run (the seed is
+fixed, so the image is the same). Render seconds exclude scene loading and BVH builds for both:
+Cycles' 'Render time (without synchronization)', ochre-converge's in-process render timer.
+relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over pixels and R, G, B; C = relMSE x seconds, the
+geometric mean over the swept spp (lower is better: relMSE ~ C / t), also with the floor subtracted.
+The luminance relMSE (Rec.709 Y, same epsilon) at --colour-spp shows how much of the error is colour noise.
+
+An ochre variant NAME:key=value,... sets keys of the scene's "integrator" block (rr_depth, max_depth,
+polarization, ...) in a copy; `bin=DIR` runs that variant with another build's ochre and ochre-converge
+(e.g. an export of an earlier commit, to compare before and after), else --ochre-bin. The scenes are written to OUT/scenes/ (paths made absolute); every variant is judged
+against the reference of the scene's own settings (the levers compared this way must not change the
+converged image). Output in OUT: results.csv (one row per renderer, variant and spp), summary.md (the table
+of C), images in OUT/exr/. With --lock FILE every timed render runs under `flock FILE`.
+"""
+import argparse, csv, json, math, os, re, shutil, subprocess, sys, time
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, '..', '..'))
+EPS = 1e-2
+LUMINANCE = np.array([0.2126, 0.7152, 0.0722])  # Rec.709 Y
+
+
+# ---------------------------------------------------------------- metrics (tested by test_metrics.py)
+def relmse(x, ref):
+    return float(np.mean((x - ref) ** 2 / (ref ** 2 + EPS)))
+
+
+def luminance_relmse(x, ref):
+    return relmse(x @ LUMINANCE, ref @ LUMINANCE)
+
+
+def reference_floor(a, b):
+    """relMSE of the mean of two independent half references: E[(ref - truth)^2] = E[(a - b)^2] / 4."""
+    ref = 0.5 * (a + b)
+    return float(np.mean((a - b) ** 2 / 4 / (ref ** 2 + EPS)))
+
+
+def figure_of_merit(rows, floor=0.0):
+    """C = geometric mean over rows of (relMSE - floor) x seconds."""
+    return math.exp(np.mean([math.log(max(r['relmse'] - floor, 1e-12) * r['seconds']) for r in rows]))
+
+
+def loglog_slope(rows):
+    return float(np.polyfit([math.log(r['seconds']) for r in rows], [math.log(r['relmse']) for r in rows], 1)[0])
+
+
+def read_exr(path):  # -> float64 array (height, width, 3): R, G, B
+    tmp = path + '.rgb.exr'
+    subprocess.run(['oiiotool', path, '--ch', 'R,G,B', '-d', 'float', '-o', tmp], check=True)
+    out = subprocess.run(['oiiotool', '--dumpdata', tmp], capture_output=True, text=True, check=True).stdout
+    os.remove(tmp)
+    w, h, c = map(int, re.search(r':\s*(\d+) x\s*(\d+), (\d+) channel', out).groups())
+    px = [ln.split(':', 1)[1].split() for ln in out.splitlines() if ln.lstrip().startswith('Pixel (')]
+    return np.array(px, dtype=np.float64).reshape(h, w, c)
+
+
+# ---------------------------------------------------------------- renderers
+def locked(cmd, lock):
+    return (['flock', lock] + cmd) if lock else cmd
+
+
+class Cycles:
+    name = 'cycles'
+
+    def __init__(self, args, scene):
+        self.args, self.scene = args, scene
+
+    def render(self, spp, seed, exr):
+        cmd = [self.args.blender, '-b', '--factory-startup', '--debug-cycles', '--python',
+               os.path.join(HERE, 'make_and_render.py'), '--', '--scene', self.scene, '--spp', str(spp),
+               '--seed', str(seed), '--threads', str(self.args.threads), '--out', exr]
+        p = subprocess.run(locked(cmd, self.args.lock), capture_output=True, text=True)
+        m = re.search(r'Render time \(without synchronization\): ([0-9.eE+-]+)', p.stdout + p.stderr)
+        if p.returncode or not m or not os.path.exists(exr):
+            sys.exit(f'Blender failed on {exr} (rc {p.returncode}):\n' + (p.stdout + p.stderr)[-4000:])
+        return float(m.group(1))
+
+    def sweep(self, spps, exr_dir):  # -> {spp: (seconds, exr)}
+        out = {}
+        for spp in spps:
+            exr = os.path.join(exr_dir, f'cycles_spp{spp}.exr')
+            out[spp] = (min(self.render(spp, 0, exr) for _ in range(self.args.repeat)), exr)
+        return out
+
+
+class Ochre:
+    name = 'ochre'
+
+    def __init__(self, args, scene, label, ochre_bin):
+        self.args, self.scene, self.label, self.dir = args, scene, label, ochre_bin
+        self.bin = os.path.join(ochre_bin, 'ochre')
+
+    def render(self, spp, seed, exr):
+        cmd = [self.bin, 'render', self.scene, '-o', exr, '--spp', str(spp), '--seed', str(seed),
+               '--threads', str(self.args.threads), '-q']
+        subprocess.run(locked(cmd, self.args.lock), check=True)
+
+    def sweep(self, spps, ref_exr):  # -> {spp: seconds}; relMSE comes from our own reading of images
+        best = {}
+        for _ in range(self.args.repeat):
+            csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
+            cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
+                   '--spp', ','.join(map(str, spps)), '--threads', str(self.args.threads), '--csv', csv_path]
+            subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
+            for row in csv.DictReader(open(csv_path)):
+                spp, s = int(row['spp']), float(row['seconds'])
+                best[spp] = min(best.get(spp, math.inf), s)
+        return best
+
+
+def variant_scene(args, spec):
+    """Writes the scene of an ochre variant NAME:key=value,... (keys of the integrator block)."""
+    name, _, rest = spec.partition(':')
+    settings = dict(kv.split('=', 1) for kv in rest.split(',') if kv)
+    ochre_bin = settings.pop('bin', args.ochre_bin)
+    src = args.scene
+    s = json.load(open(src))
+
+    def absolute(o):  # "file" entries are relative to the scene's folder
+        if isinstance(o, dict):
+            return {k: (os.path.join(os.path.dirname(src), v) if k == 'file' and isinstance(v, str)
+                        else absolute(v)) for k, v in o.items()}
+        return [absolute(x) for x in o] if isinstance(o, list) else o
+    s = absolute(s)
+    for k, v in settings.items():
+        s.setdefault('integrator', {})[k] = json.loads(v) if re.fullmatch(r'-?[0-9.]+|true|false', v) else v
+    path = os.path.join(args.out, 'scenes', name + '.json')
+    json.dump(s, open(path, 'w'), indent=1)
+    return name, path, os.path.abspath(ochre_bin)
+
+
+def reference(args, r, tag):
+    halves = []
+    for seed in (1001, 1002):
+        exr = os.path.join(args.out, 'exr', f'ref_{tag}_{args.ref_spp // 2}spp_seed{seed}.exr')
+        if not (args.reuse_ref and os.path.exists(exr)):
+            print(f'{tag}: reference half, {args.ref_spp // 2} spp, seed {seed}', flush=True)
+            r.render(args.ref_spp // 2, seed, exr)
+        halves.append(exr)
+    a, b = (read_exr(h) for h in halves)
+    ref_exr = os.path.join(args.out, 'exr', f'ref_{tag}.exr')
+    subprocess.run(['oiiotool', halves[0], '--ch', 'R,G,B', halves[1], '--ch', 'R,G,B', '--add', '--mulc', '0.5',
+                    '-d', 'float', '-o', ref_exr], check=True)
+    return 0.5 * (a + b), reference_floor(a, b), ref_exr
+
+
+def summarise(label, spps_rows, floor, pixels, colour):
+    rows = sorted(spps_rows, key=lambda r: r['spp'])
+    return dict(label=label, C=figure_of_merit(rows), C_minus_floor=figure_of_merit(rows, floor),
+                floor=floor, slope=loglog_slope(rows), samples_per_s=pixels * rows[-1]['spp'] / rows[-1]['seconds'],
+                **colour)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--scene', default=os.path.join(ROOT, 'scenes/benchmark/cbox-matched.json'))
+    ap.add_argument('--renderers', default='cycles,ochre')
+    ap.add_argument('--variant', action='append', default=[], help='ochre variant NAME:key=value,...')
+    ap.add_argument('--ref-spp', type=int, default=4096)
+    ap.add_argument('--spps', default='8,16,32,64,128,256')
+    ap.add_argument('--colour-spp', type=int, default=64)
+    ap.add_argument('--repeat', type=int, default=3)
+    ap.add_argument('--threads', type=int, default=2)
+    ap.add_argument('--reuse-ref', action='store_true', help='keep reference EXRs from an earlier run in OUT')
+    ap.add_argument('--blender', default='blender')
+    ap.add_argument('--ochre-bin', default=os.path.join(ROOT, 'build/bin'))
+    ap.add_argument('--lock', default='', help='run every render under flock LOCK')
+    ap.add_argument('--out', required=True)
+    args = ap.parse_args()
+    args.scene = os.path.abspath(args.scene)
+    for d in ('exr', 'scenes'):
+        os.makedirs(os.path.join(args.out, d), exist_ok=True)
+    spps = [int(x) for x in args.spps.split(',')]
+    renderers = args.renderers.split(',')
+    if 'cycles' in renderers and not shutil.which(args.blender):
+        sys.exit(f'{args.blender} not found: apt-get install -y --no-install-recommends blender (docs/performance.md)')
+
+    results, summaries = [], []
+    if 'cycles' in renderers:
+        cy = Cycles(args, args.scene)
+        ref, floor, _ = reference(args, cy, 'cycles')
+        rows = []
+        for spp, (seconds, exr) in cy.sweep(spps, os.path.join(args.out, 'exr')).items():
+            x = read_exr(exr)
+            rows.append(dict(renderer='cycles', variant='cycles', spp=spp, seconds=seconds, relmse=relmse(x, ref),
+                             luminance_relmse=luminance_relmse(x, ref)))
+            print(f"cycles spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
+        at = next(r for r in rows if r['spp'] == args.colour_spp)
+        summaries.append(summarise('Cycles', rows, floor, ref.shape[0] * ref.shape[1],
+                                   dict(rgb_over_luminance=at['relmse'] / at['luminance_relmse'])))
+        results += rows
+    if 'ochre' in renderers:
+        variants = [variant_scene(args, v) for v in (args.variant or ['ochre'])]
+        _, ref_scene, _ = variant_scene(args, 'reference')
+        ref, floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
+        for label, scene, ochre_bin in variants:
+            o = Ochre(args, scene, label, ochre_bin)
+            rows = []
+            for spp, seconds in o.sweep(spps, ref_exr).items():
+                exr = os.path.join(args.out, 'exr', f'ochre_{label}_spp{spp}.exr')
+                o.render(spp, 0, exr)  # the same image ochre-converge timed (same seed and settings)
+                x = read_exr(exr)
+                rows.append(dict(renderer='ochre', variant=label, spp=spp, seconds=seconds, relmse=relmse(x, ref),
+                                 luminance_relmse=luminance_relmse(x, ref)))
+                print(f"ochre {label} spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
+            at = next(r for r in rows if r['spp'] == args.colour_spp)
+            summaries.append(summarise(f'ochre {label}', rows, floor, ref.shape[0] * ref.shape[1],
+                                       dict(rgb_over_luminance=at['relmse'] / at['luminance_relmse'])))
+            results += rows
+
+    with open(os.path.join(args.out, 'results.csv'), 'w', newline='') as f:
+        w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
+        w.writeheader()
+        w.writerows(results)
+    base = next((s['C'] for s in summaries if s['label'] == 'Cycles'), None)
+    lines = [f'scene `{os.path.relpath(args.scene, ROOT)}`, spp {args.spps}, {args.threads} threads, '
+             f'references {args.ref_spp} spp, best of {args.repeat}',
+             '', '| renderer | C = relMSE x s | C, reference floor subtracted | C / C(Cycles) | samples/s '
+             f'| log-log slope | RGB / luminance relMSE at {args.colour_spp} spp |', '|---|---|---|---|---|---|---|']
+    for s in summaries:
+        ratio = f"{s['C'] / base:.2f}" if base else '-'
+        lines.append(f"| {s['label']} | {s['C']:.4g} | {s['C_minus_floor']:.4g} | {ratio} | "
+                     f"{s['samples_per_s'] / 1e6:.3f} M | {s['slope']:.2f} | {s['rgb_over_luminance']:.3f} |")
+    open(os.path.join(args.out, 'summary.md'), 'w').write('\n'.join(lines) + '\n')
+    print('\n'.join(lines))
+
+
+if __name__ == '__main__':
+    main()
