@@ -199,7 +199,8 @@ FovAxis parse_fov_axis(const JsonFields& f) {
 Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
-  f.check_known({"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer", "sensor"});
+  f.check_known(
+      {"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer", "sensor"});
   // Every given field is checked, also those the chosen placement or type does not use.
   const std::string type = f.string("type", "perspective");
   const auto fov = static_cast<float>(
@@ -282,6 +283,17 @@ int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& 
   return index;
 }
 
+// The import options of a "mesh" shape: smooth_normals, face_normals (not both), flip_uv_v.
+MeshImportOptions parse_mesh_import_options(const JsonFields& f) {
+  MeshImportOptions options;
+  options.smooth_normals = f.boolean("smooth_normals", false);
+  options.face_normals = f.boolean("face_normals", false);
+  options.flip_uv_v = f.boolean("flip_uv_v", false);
+  if (options.smooth_normals && options.face_normals)
+    f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+  return options;
+}
+
 // A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
 // file material, with the scene material the shape's "materials" map gives it (by name, or "*").
 std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem::path& dir, Scene& scene,
@@ -295,12 +307,7 @@ std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem
   const Transform to_world = f.has("transform")
                                  ? parse_transform(f.require("transform"), f.child("transform"))
                                  : Transform::identity();
-  MeshImportOptions options;
-  options.smooth_normals = f.boolean("smooth_normals", false);
-  options.face_normals = f.boolean("face_normals", false);
-  options.flip_uv_v = f.boolean("flip_uv_v", false);
-  if (options.smooth_normals && options.face_normals)
-    f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+  const MeshImportOptions options = parse_mesh_import_options(f);
   std::vector<MeshMaterialPart> parts =
       f.in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
   std::string file_materials;
@@ -422,12 +429,7 @@ Mesh load_shape(const JsonFields& f, const Scene& scene, const MaterialTemplates
                    "flip_normals", "name", "subdivision", "displacement", "polarizer"});
     std::filesystem::path path = f.required_string("file");
     if (path.is_relative()) path = dir / path;
-    MeshImportOptions options;
-    options.smooth_normals = f.boolean("smooth_normals", false);
-    options.face_normals = f.boolean("face_normals", false);
-    options.flip_uv_v = f.boolean("flip_uv_v", false);
-    if (options.smooth_normals && options.face_normals)
-      f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+    const MeshImportOptions options = parse_mesh_import_options(f);
     for (const char* key : {"flip_uv_v", "face_normals"})
       if (f.has("subdivision") && f.boolean(key, false))
         f.fail(key, "is not supported with \"subdivision\" (change the file instead)");
@@ -527,7 +529,8 @@ std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesyste
   const std::string ramp = f.string("falloff", "smoothstep");
   if (ramp != "smoothstep" && ramp != "linear")
     f.fail("falloff", fmt::format("unknown falloff '{}' (known: smoothstep, linear)", ramp));
-  const SpotLight::Falloff shape = ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
+  const SpotLight::Falloff shape =
+      ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
   std::unique_ptr<SpotLight> light;
   if (f.has("preset")) {  // docs/lights.md
     const SpotPresetValues v = spot_preset_values(f);
