@@ -130,6 +130,77 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
 }
 
 template <class Sampler, class T>
+void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T& throughput,
+                                    const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                                    LobeArena& arena, PathStats& stats, SensorStokes& L) const {
+  const MirrorLights::Choice choice =
+      scene_.mirror_lights.sample(sampler.get_1d(SampleDims::bounce(depth, SampleDims::kMirrorLightChoice)));
+  if (!(choice.pmf > 0.0f)) return;
+  const PlanarMirror& mirror = *choice.mirror;
+  const Light& light = *scene_.lights[choice.light];
+  const float side = mirror.signed_distance(v.sp.p);
+  if (side == 0.0f) return;
+  // A point y on the light as seen from x's mirror image x' (planar_mirrors.h): x -> m -> y has the
+  // direction and pdf of x' -> y reflected in the plane.
+  const Vec2 u = sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition));
+  const Vec2 u_shifted{u.x < 0.5f ? u.x + 0.5f : u.x - 0.5f, u.y < 0.5f ? u.y + 0.5f : u.y - 0.5f};
+  const auto ls = light.sample(mirror.reflect_point(v.sp.p), u_shifted, lambda);
+  if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black() || std::isinf(ls->distance)) return;
+  const Vec3 y = mirror.reflect_point(v.sp.p) + ls->wi * ls->distance;
+  if (mirror.signed_distance(y) * side <= 0.0f) return;  // the light is behind the mirror
+  const Vec3 wi = mirror.reflect_direction(ls->wi);
+  const Vec3 wi_local = v.frame.to_local(wi);
+  if (dot(wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
+  MuellerResponse storage;
+  WorldResponse at_x = vertex_response<T>(v, wo, wi_local, lambda, storage);
+  if (at_x.f.is_black()) return;
+  const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
+  if (incoming.radiance.is_black()) return;
+
+  // The first surface toward the image must be the mirror itself, and the light visible from there.
+  const Ray to_mirror{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  ++stats.rays;
+  const auto hit = scene_.accel->intersect(to_mirror);
+  if (!hit || static_cast<int>(hit->mesh) != mirror.mesh) return;
+  PathVertex m;
+  m.sp = surface_point(scene_.meshes, *hit, to_mirror);
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
+  scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
+  const Vec3 wo_m = -wi;
+  m.ng = dot(m.sp.ng, wo_m) >= 0.0f ? m.sp.ng : -m.sp.ng;
+  m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
+  m.wo_local = m.frame.to_local(wo_m);
+  auto exit = m.closure.sample(m.wo_local, 0.5f, Vec2{0.5f, 0.5f}, lambda);  // the mirror's only exit
+  if (!exit || exit->weight.is_black()) return;
+  Ray shadow;
+  shadow.origin = offset_ray_origin(m.sp.p, m.sp.p_error, m.ng, ls->wi);
+  shadow.dir = ls->wi;
+  shadow.tmax = length(y - m.sp.p) * (1.0f - 1e-4f);
+  ++stats.shadow_rays;
+  if (scene_.accel->occluded(shadow)) return;
+
+  const float light_pdf = choice.pmf * ls->pdf;
+  const float mis = ls->delta || ls->only_by_light_sampling
+                        ? 1.0f
+                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+  const float k = abs_cos_theta(wi_local) * mis / light_pdf;
+  if (at_x.m) storage.m = storage.m * k;
+  T through_mirror = throughput;
+  through_mirror.scatter(at_x, at_x.f * k);
+  through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+}
+
+float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf,
+                                               const Vec3& p, const Vec3& ng) const {
+  const float pmf = scene_.mirror_lights.pmf(mirror, light);
+  if (!(pmf > 0.0f)) return 1.0f;
+  const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
+  const Vec3 x_image = scene_.mirror_lights.mirrors()[mirror].reflect_point(x);
+  return power_heuristic(bsdf_pdf, pmf * area.pdf(x_image, p, ng));
+}
+
+template <class Sampler, class T>
 SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
                                    const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
                                    PathStats& stats, FirstHit* first_hit) const {
@@ -140,6 +211,11 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
   Vec3 prev_p;
+  // The last vertex was a planar mirror reached from a non-delta vertex x (position, BSDF pdf): emission
+  // found next could also have been sampled through the mirror (mirrored_light).
+  int chain_mirror = -1;
+  float chain_pdf = 0.0f;
+  Vec3 chain_origin;
   Ray ray = camera_ray;
   float path_length = 0.0f;  // along the path so far, for the texture footprint
   PathVertex v;
@@ -181,6 +257,8 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
       if (!specular && light >= 0) {
         const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
         w = power_heuristic(prev_pdf, scene_.light_pmf(light) * area.pdf(prev_p, v.sp.p, v.sp.ng));
+      } else if (chain_mirror >= 0 && light >= 0) {
+        w = mirrored_emission_weight(chain_mirror, light, chain_origin, chain_pdf, v.sp.p, v.sp.ng);
       }
       const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
       beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, L);
@@ -193,8 +271,11 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     v.wo_local = v.frame.to_local(wo);
     if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
-    if (v.closure.has_non_delta_lobes() && !scene_.lights.empty())
+    if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
       direct_light(v, wo, beta, lambda, sampler, depth, stats, L);
+      if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
+        mirrored_light(v, wo, beta, lambda, sampler, depth, arena, stats, L);
+    }
 
     auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
                                sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
@@ -203,6 +284,9 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     if (dot(wi, v.ng) * bs->wi.z <= 0.0f) break;  // shading and geometric sides disagree: no light leaks
 
     beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
+    chain_mirror = bs->delta && !specular ? scene_.mirror_lights.mirror_of_mesh(hit->mesh) : -1;
+    chain_pdf = prev_pdf;
+    chain_origin = prev_p;
     specular = bs->delta;
     prev_pdf = bs->pdf;
     prev_p = v.sp.p;

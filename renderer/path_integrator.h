@@ -50,6 +50,15 @@ class PathIntegrator {
   void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                     PathStats& stats, SensorStokes& L) const;
+  // Next-event estimation through a planar mirror: one sample of a light's mirror image (planar_mirrors.h),
+  // the path x -> mirror -> light MIS-weighted against BSDF sampling of the same path.
+  template <class Sampler, class Throughput>
+  void mirrored_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
+                      const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                      LobeArena& arena, PathStats& stats, SensorStokes& L) const;
+  // Emission reached by a BSDF-sampled path x -> mirror -> light: the MIS weight against mirrored_light().
+  float mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf, const Vec3& p,
+                                 const Vec3& ng) const;
 
   const Scene& scene_;
   PolarizationMode mode_;

@@ -18,6 +18,7 @@ struct RenderSettings {
   uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
+  bool mirror_lights = true;  // sample lights through planar mirrors (renderer/planar_mirrors.h)
   uint64_t seed = 0;
   int threads = 0;                    // 0 = all cores
   std::string sampler = "sobol";      // independent | sobol (padded Owen-scrambled (0,2)-sequences)

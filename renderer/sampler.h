@@ -22,6 +22,9 @@ struct SampleDims {
   static constexpr uint32_t kLobeChoice = 3;
   static constexpr uint32_t kLobeDirection = 4;  // 2 dims
   static constexpr uint32_t kRoulette = 6;
+  // Light through a planar mirror (renderer/planar_mirrors.h): its position reuses kLightPosition's two
+  // numbers shifted by half a period, so scenes without mirrors keep every other number where it was.
+  static constexpr uint32_t kMirrorLightChoice = 7;
   static constexpr uint32_t bounce(uint32_t depth, uint32_t offset) {
     return kFirstBounce + depth * kDimsPerBounce + offset;
   }

@@ -18,6 +18,7 @@ void Scene::build_lights() {
   environment_light = -1;
   for (size_t i = 0; i < lights.size(); ++i)
     if (lights[i].get() == environment) environment_light = static_cast<int>(i);
+  if (settings.mirror_lights) mirror_lights.build(meshes, materials, lights.size(), environment_light);
   update_light_selection();
 }
 
@@ -33,6 +34,7 @@ void Scene::update_light_selection() {
   // weights (NaN counts as 0: such a light is only found by rays that hit it).
   for (size_t i = 0; i < lights.size(); ++i) power[i] = finite_or_limit(lights[i]->power());
   light_selection = Distribution1D(power);
+  mirror_lights.update_selection(light_selection);
 }
 
 }  // namespace ochre

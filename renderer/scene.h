@@ -16,6 +16,7 @@
 #include "renderer/flame_light.h"
 #include "renderer/mesh.h"
 #include "renderer/pixel_filter.h"
+#include "renderer/planar_mirrors.h"
 #include "renderer/render_settings.h"
 #include "renderer/texture_system.h"
 #include "spectra/sensor_response.h"
@@ -29,7 +30,7 @@ struct Scene {
   OutputSettings outputs;
   Camera camera;
   PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
-  SensorPtr sensor;  // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
+  SensorPtr sensor;          // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
 
   std::vector<std::shared_ptr<const CompiledMaterial>> materials;
   std::vector<std::string> material_names;
@@ -42,6 +43,9 @@ struct Scene {
   std::vector<int> mesh_light;     // light index of an emissive mesh, -1 otherwise
   const EnvironmentLight* environment = nullptr;
   int environment_light = -1;
+  // Planar mirrors and the lights' images in them (planar_mirrors.h); empty with integrator.mirror_lights
+  // false.
+  MirrorLights mirror_lights;
   std::vector<FlameLight> flames;  // sphere lights in `lights` that flicker in a frame sequence
 
   // Linear polarizers: on the camera (Mueller matrix in the camera's Stokes frame: x along the image x

@@ -107,11 +107,13 @@ void load_settings(const JsonFields& top, Scene& scene) {
   }
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
-    f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization", "sampler"});
+    f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization", "sampler",
+                   "mirror_lights"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
+    s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
     s.polarization = f.string("polarization", s.polarization);

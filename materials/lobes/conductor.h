@@ -21,7 +21,7 @@ class SmoothConductorLobe final : public Lobe {
  public:
   SmoothConductorLobe(const SampledSpectrum& n, const SampledSpectrum& k) : n_(n), k_(k) {}
 
-  uint32_t flags() const override { return kLobeReflection | kLobeDelta | kLobePolarizing; }
+  uint32_t flags() const override { return kLobeReflection | kLobeDelta | kLobePolarizing | kLobeMirror; }
   SampledSpectrum eval(const Vec3&, const Vec3&, const SampledWavelengths&) const override {
     return SampledSpectrum(0.0f);
   }

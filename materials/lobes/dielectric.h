@@ -24,7 +24,7 @@ class SmoothDielectricLobe final : public Lobe {
   SmoothDielectricLobe(float eta, bool opaque) : eta_(eta), opaque_(opaque) {}
 
   uint32_t flags() const override {
-    return kLobeReflection | (opaque_ ? 0u : kLobeTransmission) | kLobeDelta | kLobePolarizing;
+    return kLobeReflection | (opaque_ ? kLobeMirror : kLobeTransmission) | kLobeDelta | kLobePolarizing;
   }
   SampledSpectrum eval(const Vec3&, const Vec3&, const SampledWavelengths&) const override {
     return SampledSpectrum(0.0f);
