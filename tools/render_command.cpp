@@ -50,6 +50,13 @@ void print_summary(const Scene& scene) {
       scene.accel->build_seconds(), scene.accel->memory_bytes() / 1e6,
       triangles ? static_cast<double>(scene.accel->memory_bytes()) / triangles : 0.0);
   std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
+  const std::vector<PlanarMirror>& mirrors = scene.mirror_lights.mirrors();
+  if (!mirrors.empty()) {
+    std::string names;
+    for (const PlanarMirror& m : mirrors) names += (names.empty() ? "" : ", ") + scene.meshes[m.mesh].name;
+    std::cerr << fmt::format("ochre: lights sampled through {} planar mirror{}: {}\n", mirrors.size(),
+                             mirrors.size() == 1 ? "" : "s", names);
+  }
 }
 
 void print_stats(const RenderStats& stats) {
