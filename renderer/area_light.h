@@ -20,6 +20,7 @@ class AreaLight final : public Light {
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override { return power_; }
+  float importance(const Vec3& p) const override;
 
   // Solid-angle pdf of sampling point p (normal ng) from ref, given the point is on this light.
   float pdf(const Vec3& ref, const Vec3& p, const Vec3& ng) const;
@@ -40,6 +41,8 @@ class AreaLight final : public Light {
   Distribution1D triangles_;
   float total_area_ = 0.0f;
   float power_ = 0.0f;
+  Vec3 bound_center_;           // bounding sphere of the mesh
+  float bound_radius2_ = 0.0f;  // its radius squared
 };
 
 }  // namespace ochre

@@ -13,11 +13,18 @@
 namespace ochre {
 
 EnvironmentLight::EnvironmentLight(SpectrumPtr radiance, float scene_radius, float scale)
-    : radiance_(std::move(radiance)), scene_radius_(scene_radius), scale_(scale) {}
+    : radiance_(std::move(radiance)),
+      scene_radius_(scene_radius),
+      scale_(scale),
+      mean_luminance_(spectrum_to_xyz(*radiance_).y) {}
 
 EnvironmentLight::EnvironmentLight(std::shared_ptr<const EnvironmentMap> map, float scene_radius, float scale,
                                    float rotation_degrees)
-    : map_(std::move(map)), d65_(d65()), scene_radius_(scene_radius), scale_(scale) {
+    : map_(std::move(map)),
+      d65_(d65()),
+      scene_radius_(scene_radius),
+      scale_(scale),
+      mean_luminance_(map_->mean_luminance()) {
   const double radians = rotation_degrees * M_PI / 180.0;
   cos_rotation_ = static_cast<float>(std::cos(radians));
   sin_rotation_ = static_cast<float>(std::sin(radians));
@@ -79,8 +86,12 @@ std::optional<LightSample> EnvironmentLight::sample(const Vec3&, const Vec2& u,
 float EnvironmentLight::power() const {
   // Flux of the radiance field through the scene's bounding sphere (pbrt's estimate):
   // pi r^2 x (integral of L over the sphere) = 4 pi^2 r^2 x mean luminance.
-  const double mean = map_ ? map_->mean_luminance() : spectrum_to_xyz(*radiance_).y;
-  return static_cast<float>(4.0 * M_PI * M_PI * scene_radius_ * scene_radius_ * mean * scale_);
+  return static_cast<float>(4.0 * M_PI * M_PI * scene_radius_ * scene_radius_ * mean_luminance_ * scale_);
+}
+
+float EnvironmentLight::importance(const Vec3&) const {
+  return static_cast<float>(kPi * mean_luminance_ *
+                            scale_);  // a plane under the whole sky of the mean radiance
 }
 
 SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda) const {

@@ -37,6 +37,7 @@ class EnvironmentLight final : public Light {
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
+  float importance(const Vec3& p) const override;
 
   // Radiance arriving along -direction (a ray escaping the scene along `direction`, any length > 0).
   SampledSpectrum radiance(const Vec3& direction, const SampledWavelengths& lambda) const;
@@ -74,6 +75,7 @@ class EnvironmentLight final : public Light {
   uint64_t white_memo_key_ = new_wavelength_memo_key();  // D65 x scale at a path's wavelengths, per thread
   float scene_radius_;
   float scale_;
+  double mean_luminance_ = 0.0;  // of the radiance over the sphere, before the scale
   float cos_rotation_ = 1.0f, sin_rotation_ = 0.0f;
 };
 

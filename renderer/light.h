@@ -29,6 +29,10 @@ class Light {
                                             const SampledWavelengths& lambda) const = 0;
   // Flux estimate (W-like, luminance-weighted) used to choose among lights.
   virtual float power() const = 0;
+  // Estimate of the illuminance (luminance-weighted irradiance) the light can give at p, ignoring
+  // visibility and the receiver's orientation: never 0 where the light can reach p (only outside a spot's
+  // cone). Chooses among a scene's few lights at each shading point (scene.h, light_pmfs).
+  virtual float importance(const Vec3& p) const = 0;
   virtual bool is_delta() const { return false; }
 
   // Transmission axis (world) of a linear polarizer in front of the light (light_polarizer.h), if any.

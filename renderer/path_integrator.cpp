@@ -84,6 +84,20 @@ WorldResponse sampled_response(const PathVertex& v, const Vec3& wo, LobeSample& 
   return r;
 }
 
+// Picks an index with probabilities pmf[0..n) for u in [0, 1) (the last one with a non-zero pmf when rounding
+// leaves u beyond the sum).
+size_t pick_light(const Scene::LightPmfs& pmf, size_t n, float u) {
+  float cdf = 0.0f;
+  size_t last = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!(pmf[i] > 0.0f)) continue;
+    cdf += pmf[i];
+    last = i;
+    if (u < cdf) break;
+  }
+  return last;
+}
+
 // The camera's Stokes x axis for a ray: the image x axis, made perpendicular to the ray.
 Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
   const Vec3 right = camera.basis().right;
@@ -97,11 +111,11 @@ Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
 template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                                  PathStats& stats, SensorStokes& L) const {
-  float u_light = 0.0f;
-  const size_t index = scene_.light_selection.sample(
-      sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
-  const float pmf = scene_.light_selection.pmf(index);
+                                  const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
+  const float u_choice = sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice));
+  const size_t index =
+      pmfs ? pick_light(*pmfs, scene_.lights.size(), u_choice) : scene_.light_selection.sample(u_choice);
+  const float pmf = pmfs ? (*pmfs)[index] : scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return;
   const Light& light = *scene_.lights[index];
   const auto ls =
@@ -216,6 +230,12 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
   int chain_mirror = -1;
   float chain_pdf = 0.0f;
   Vec3 chain_origin;
+  // The lights' probabilities at the last vertex that sampled a light, when they depend on the point.
+  const bool local_lights = scene_.local_light_selection();
+  Scene::LightPmfs light_pmfs{};
+  const auto light_pmf = [&](int light) {
+    return local_lights ? light_pmfs[light] : scene_.light_pmf(light);
+  };
   Ray ray = camera_ray;
   float path_length = 0.0f;  // along the path so far, for the texture footprint
   PathVertex v;
@@ -231,7 +251,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
         const SampledSpectrum Le = specular ? scene_.environment->radiance(ray.dir, lambda)
                                             : scene_.environment->radiance(ray.dir, lambda, &env_pdf);
         const float w =
-            specular ? 1.0f : power_heuristic(prev_pdf, scene_.light_pmf(scene_.environment_light) * env_pdf);
+            specular ? 1.0f : power_heuristic(prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
         beta.receive(IncomingLight{Le * w, false, {}}, -ray.dir, L);
       }
       break;
@@ -256,7 +276,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
       const int light = scene_.mesh_light[hit->mesh];
       if (!specular && light >= 0) {
         const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
-        w = power_heuristic(prev_pdf, scene_.light_pmf(light) * area.pdf(prev_p, v.sp.p, v.sp.ng));
+        w = power_heuristic(prev_pdf, light_pmf(light) * area.pdf(prev_p, v.sp.p, v.sp.ng));
       } else if (chain_mirror >= 0 && light >= 0) {
         w = mirrored_emission_weight(chain_mirror, light, chain_origin, chain_pdf, v.sp.p, v.sp.ng);
       }
@@ -272,7 +292,8 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
 
     if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
-      direct_light(v, wo, beta, lambda, sampler, depth, stats, L);
+      if (local_lights) scene_.light_pmfs(v.sp.p, light_pmfs);
+      direct_light(v, wo, beta, lambda, sampler, depth, local_lights ? &light_pmfs : nullptr, stats, L);
       if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
         mirrored_light(v, wo, beta, lambda, sampler, depth, arena, stats, L);
     }

@@ -45,11 +45,12 @@ class PathIntegrator {
   template <class Sampler, class Throughput>
   SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                      const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit) const;
-  // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L.
+  // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L. `pmfs`: the
+  // lights' probabilities at this point (Scene::light_pmfs), or null to choose by power.
   template <class Sampler, class Throughput>
   void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                    PathStats& stats, SensorStokes& L) const;
+                    const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const;
   // Next-event estimation through a planar mirror: one sample of a light's mirror image (planar_mirrors.h),
   // the path x -> mirror -> light MIS-weighted against BSDF sampling of the same path.
   template <class Sampler, class Throughput>

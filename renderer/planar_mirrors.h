@@ -1,5 +1,5 @@
 #pragma once
-// Planar mirrors and the images of the lights seen in them (docs/rendering.md, 'Lights seen in planar
+// Planar mirrors and the images of the lights seen in them (docs/architecture.md, 'Lights seen in planar
 // mirrors').
 //
 // Light that reaches a diffuse point x through a perfect mirror comes, for a path tracer that only samples

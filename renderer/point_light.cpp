@@ -1,11 +1,13 @@
 #include "renderer/point_light.h"
 
+#include <algorithm>
+
 #include "spectra/cie.h"
 
 namespace ochre {
 
 PointLight::PointLight(const Vec3& position, SpectrumPtr intensity)
-    : position_(position), intensity_(std::move(intensity)) {}
+    : position_(position), intensity_(std::move(intensity)), luminance_(spectrum_to_xyz(*intensity_).y) {}
 
 std::optional<LightSample> sample_point_source(const Vec3& position, const Vec3& ref) {
   const Vec3 d = position - ref;
@@ -28,7 +30,11 @@ std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&,
 }
 
 float PointLight::power() const {
-  return 4.0f * kPi * spectrum_to_xyz(*intensity_).y;
+  return 4.0f * kPi * luminance_;
+}
+
+float PointLight::importance(const Vec3& p) const {
+  return luminance_ / std::max(length_squared(position_ - p), 1e-12f);  // inverse-square law
 }
 
 }  // namespace ochre

@@ -16,11 +16,13 @@ class PointLight final : public Light {
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
+  float importance(const Vec3& p) const override;
   bool is_delta() const override { return true; }
 
  private:
   Vec3 position_;
   SpectrumPtr intensity_;
+  float luminance_;  // of the intensity
 };
 
 }  // namespace ochre

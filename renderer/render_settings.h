@@ -19,6 +19,9 @@ struct RenderSettings {
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
   bool mirror_lights = true;  // sample lights through planar mirrors (renderer/planar_mirrors.h)
+  // Light choice for next-event estimation: "local" (by importance at each point, for 2-8 lights; scene.h)
+  // or "power" (by power alone).
+  std::string light_selection = "local";
   uint64_t seed = 0;
   int threads = 0;                    // 0 = all cores
   std::string sampler = "sobol";      // independent | sobol (padded Owen-scrambled (0,2)-sequences)

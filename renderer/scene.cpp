@@ -1,5 +1,7 @@
 #include "renderer/scene.h"
 
+#include <algorithm>
+
 #include "spectra/non_finite.h"
 
 namespace ochre {
@@ -26,6 +28,19 @@ void Scene::set_frame(uint64_t frame, double fps) {
   for (const FlameLight& flame : flames)
     apply_flame_state(flame, flame_state(flame, settings.seed, frame, fps));
   update_light_selection();
+}
+
+void Scene::light_pmfs(const Vec3& p, LightPmfs& out) const {
+  const size_t n = lights.size();
+  float total = 0.0f;
+  for (size_t i = 0; i < n; ++i) {
+    out[i] = std::clamp(finite_or_limit(lights[i]->importance(p)), 0.0f, 1e30f);  // NaN and below 0: 0
+    total += out[i];
+  }
+  const float uniform = 1.0f / static_cast<float>(n);
+  const float scale = total > 0.0f ? 0.9f / total : 0.0f;
+  const float floor = total > 0.0f ? 0.1f * uniform : uniform;
+  for (size_t i = 0; i < n; ++i) out[i] = out[i] * scale + floor;
 }
 
 void Scene::update_light_selection() {

@@ -1,6 +1,7 @@
 #pragma once
 // Scene: everything a render needs, built by load_scene() (scene_loader.h) from a JSON file.
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -66,6 +67,18 @@ struct Scene {
   // The light selection distribution, proportional to the lights' powers.
   void update_light_selection();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
+
+  // A scene of 2 to kMaxLocalLights lights chooses the light for each shading point from the lights'
+  // importance there (Light::importance): a spot light's pool of light is not starved by a bright sky whose
+  // power, integrated over the whole scene, dwarfs it. More lights: by power alone (light_selection).
+  static constexpr size_t kMaxLocalLights = 8;
+  using LightPmfs = std::array<float, kMaxLocalLights>;
+  bool local_light_selection() const {
+    return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
+  }
+  // The probability of choosing each light at p: 90 % in proportion to the importance, 10 % uniform (a
+  // floor for lights whose estimate is off, e.g. through occlusion it ignores).
+  void light_pmfs(const Vec3& p, LightPmfs& out) const;
 };
 
 }  // namespace ochre

@@ -108,12 +108,16 @@ void load_settings(const JsonFields& top, Scene& scene) {
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "seed", "threads", "polarization", "sampler",
-                   "mirror_lights"});
+                   "mirror_lights", "light_selection"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
+    s.light_selection = f.string("light_selection", s.light_selection);
+    if (s.light_selection != "local" && s.light_selection != "power")
+      f.fail("light_selection",
+             fmt::format("unknown light selection '{}' (known: local, power)", s.light_selection));
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
     s.polarization = f.string("polarization", s.polarization);

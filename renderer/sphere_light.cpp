@@ -10,11 +10,15 @@
 namespace ochre {
 
 SphereLight::SphereLight(const Vec3& center, float radius, SpectrumPtr intensity)
-    : center_(center), radius_(radius), intensity_(std::move(intensity)) {}
+    : center_(center),
+      radius_(radius),
+      intensity_(std::move(intensity)),
+      luminance_(spectrum_to_xyz(*intensity_).y) {}
 
 void SphereLight::set_state(const Vec3& center, SpectrumPtr intensity) {
   center_ = center;
   intensity_ = std::move(intensity);
+  luminance_ = spectrum_to_xyz(*intensity_).y;
 }
 
 std::optional<LightSample> SphereLight::sample(const Vec3& ref, const Vec2& u,
@@ -51,7 +55,12 @@ std::optional<LightSample> SphereLight::sample(const Vec3& ref, const Vec2& u,
 }
 
 float SphereLight::power() const {
-  return 4.0f * kPi * spectrum_to_xyz(*intensity_).y;
+  return 4.0f * kPi * luminance_;
+}
+
+float SphereLight::importance(const Vec3& p) const {
+  // A point light at the centre, never nearer than r (see the header).
+  return luminance_ / std::max(length_squared(center_ - p), radius_ * radius_);
 }
 
 }  // namespace ochre

@@ -21,6 +21,7 @@ class SphereLight final : public Light {
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
+  float importance(const Vec3& p) const override;
 
   // A flickering flame moves and changes its intensity between frames (renderer/flame_flicker.h).
   void set_state(const Vec3& center, SpectrumPtr intensity);
@@ -32,6 +33,7 @@ class SphereLight final : public Light {
   Vec3 center_;
   float radius_;
   SpectrumPtr intensity_;
+  float luminance_;  // of the intensity
 };
 
 }  // namespace ochre

@@ -17,7 +17,8 @@ SpotLight::SpotLight(const Vec3& position, const Vec3& direction, float cone_ang
       cone_(cone_angle_deg * kPi / 180.0f),
       falloff_start_(falloff_start_deg * kPi / 180.0f),
       falloff_(falloff),
-      intensity_(std::move(intensity)) {}
+      intensity_(std::move(intensity)),
+      luminance_(spectrum_to_xyz(*intensity_).y) {}
 
 float SpotLight::profile(const Vec3& direction) const {
   const float c = dot(direction_, direction);
@@ -48,7 +49,14 @@ float SpotLight::power() const {
           : ((cone_ - falloff_start_) * cos_falloff_ + std::sin(falloff_start_) - std::sin(cone_)) /
                 (cone_ - falloff_start_);
   const float solid_angle = 2.0f * kPi * ((1.0f - cos_falloff_) + ring);
-  return solid_angle * spectrum_to_xyz(*intensity_).y;
+  return solid_angle * luminance_;
+}
+
+float SpotLight::importance(const Vec3& p) const {
+  const Vec3 d = p - position_;
+  const float d2 = length_squared(d);
+  if (!(d2 > 0.0f)) return 0.0f;
+  return luminance_ * profile(d / std::sqrt(d2)) / d2;
 }
 
 }  // namespace ochre

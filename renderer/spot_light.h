@@ -19,6 +19,7 @@ class SpotLight final : public Light {
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
+  float importance(const Vec3& p) const override;
   bool is_delta() const override { return true; }
 
   // Angular profile in [0, 1] for a direction leaving the light.
@@ -30,6 +31,7 @@ class SpotLight final : public Light {
   float cone_, falloff_start_;  // radians
   Falloff falloff_;
   SpectrumPtr intensity_;
+  float luminance_;  // of the intensity on the axis
 };
 
 }  // namespace ochre

@@ -53,6 +53,9 @@ constexpr float dot(const Vec3& a, const Vec3& b) {
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+inline float length_squared(const Vec3& v) {
+  return dot(v, v);
+}
 inline float length(const Vec3& v) {
   return std::sqrt(dot(v, v));
 }
