@@ -76,8 +76,8 @@ struct Scene {
   bool local_light_selection() const {
     return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
   }
-  // The probability of choosing each light at p: 90 % in proportion to the importance, 10 % uniform (a
-  // floor for lights whose estimate is off, e.g. through occlusion it ignores).
+  // The probability of choosing each light at p: half in proportion to the importance, half by power (a
+  // defensive mix: the estimates ignore occlusion and the receiver's orientation).
   void light_pmfs(const Vec3& p, LightPmfs& out) const;
 };
 

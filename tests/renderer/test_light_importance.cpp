@@ -1,5 +1,5 @@
 // Light::importance and the per-point light choice built on it (Scene::light_pmfs): the estimates' closed
-// forms, and probabilities that follow them with a 10 % uniform floor.
+// forms, and probabilities that follow them half and half with the lights' power.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,24 +43,28 @@ TEST(LightImportance, EstimatesFollowTheInverseSquareLawAndTheSpotProfile) {
   EXPECT_NEAR(sky.importance({5, 5, 5}), M_PI * luminance(0.25f) * 2.0f, 1e-4f);
 }
 
-TEST(LightImportance, PerPointProbabilitiesFollowTheEstimatesWithAUniformFloor) {
+TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
   Scene scene;
   scene.lights.push_back(std::make_unique<PointLight>(Vec3(0, 0, 1), constant(1.0f)));
   scene.lights.push_back(std::make_unique<PointLight>(Vec3(10, 0, 1), constant(1.0f)));
   scene.lights.push_back(std::make_unique<SpotLight>(Vec3(0, 0, 5), Vec3(0, 0, -1), 10.0f, 5.0f,
                                                      constant(1.0f), SpotLight::Falloff::Linear));
+  scene.update_light_selection();
   ASSERT_TRUE(scene.local_light_selection());
+  // By power: the two point lights 4 pi each, the narrow spot 2 pi (1 - cos) and a bit.
+  EXPECT_NEAR(scene.light_pmf(0), scene.light_pmf(1), 1e-7);
+  EXPECT_LT(scene.light_pmf(2), 0.02f);
   Scene::LightPmfs pmf{};
   scene.light_pmfs({0, 0, 0}, pmf);
   // Importances 1, 1/101, 1/25 (times the same luminance).
   const double total = 1.0 + 1.0 / 101.0 + 1.0 / 25.0;
-  EXPECT_NEAR(pmf[0], 0.9 * 1.0 / total + 0.1 / 3, 1e-6);
-  EXPECT_NEAR(pmf[1], 0.9 * (1.0 / 101.0) / total + 0.1 / 3, 1e-6);
-  EXPECT_NEAR(pmf[2], 0.9 * (1.0 / 25.0) / total + 0.1 / 3, 1e-6);
-  // Next to the second light it takes the lead; outside the spot's cone the spot keeps only the floor.
+  EXPECT_NEAR(pmf[0], 0.5 * 1.0 / total + 0.5 * scene.light_pmf(0), 1e-6);
+  EXPECT_NEAR(pmf[1], 0.5 * (1.0 / 101.0) / total + 0.5 * scene.light_pmf(1), 1e-6);
+  EXPECT_NEAR(pmf[2], 0.5 * (1.0 / 25.0) / total + 0.5 * scene.light_pmf(2), 1e-6);
+  // Next to the second light it takes the lead; outside the spot's cone the spot keeps its power share.
   scene.light_pmfs({10, 0, 0}, pmf);
-  EXPECT_GT(pmf[1], 0.8f);
-  EXPECT_NEAR(pmf[2], 0.1 / 3, 1e-6);
+  EXPECT_GT(pmf[1], 0.7f);
+  EXPECT_NEAR(pmf[2], 0.5 * scene.light_pmf(2), 1e-6);
   EXPECT_NEAR(pmf[0] + pmf[1] + pmf[2], 1.0, 1e-6);
 
   // By power only on request, and for one light or more than kMaxLocalLights.
