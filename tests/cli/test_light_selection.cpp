@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "cli/bad_scene.h"
 #include "cli/render_probe.h"
 
 namespace ochre::test {
@@ -53,8 +54,14 @@ TEST(LightSelection, PointLightAndSkyAddUpWithEitherChoice) {
     EXPECT_NEAR(sum / sum_expected, 1.0, 0.01) << selection;
     worst_of[k] = worst;
   }
-  EXPECT_LT(worst_of[0], 0.01);
+  EXPECT_LT(worst_of[0], 0.02);
   EXPECT_GT(worst_of[1], 5 * worst_of[0]);
+}
+
+TEST(LightSelection, UnknownChoiceIsRejected) {
+  expect_rejected({"light_selection",
+                   scene_with("/integrator/light_selection", R"("tree")"),
+                   {"integrator.light_selection", "unknown light selection 'tree'", "local, power"}});
 }
 
 }  // namespace
