@@ -231,7 +231,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
   float chain_pdf = 0.0f;
   Vec3 chain_origin;
   // The lights' probabilities at the last vertex that sampled a light, when they depend on the point.
-  const bool local_lights = scene_.local_light_selection();
+  const bool local_lights = local_lights_;
   Scene::LightPmfs light_pmfs{};
   const auto light_pmf = [&](int light) {
     return local_lights ? light_pmfs[light] : scene_.light_pmf(light);

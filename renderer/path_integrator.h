@@ -30,7 +30,8 @@ struct PathStats {
 
 class PathIntegrator {
  public:
-  PathIntegrator(const Scene& scene, PolarizationMode mode) : scene_(scene), mode_(mode) {}
+  PathIntegrator(const Scene& scene, PolarizationMode mode)
+      : scene_(scene), mode_(mode), local_lights_(scene.local_light_selection()) {}
 
   // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
   // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
@@ -63,6 +64,7 @@ class PathIntegrator {
 
   const Scene& scene_;
   PolarizationMode mode_;
+  bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
 };
 
 }  // namespace ochre
