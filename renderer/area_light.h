@@ -4,6 +4,7 @@
 // textured and spectral emission work the same as in camera rays.
 
 #include <cstdint>
+#include <vector>
 
 #include "materials/graph/compiled_material.h"
 #include "materials/nodes/texture_provider.h"
@@ -38,6 +39,8 @@ class AreaLight final : public Light {
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
 
   Distribution1D triangles_;
+  std::vector<Vec3>
+      normals_;  // unit geometric normal of each triangle (0 if degenerate): one per sample saved
   float total_area_ = 0.0f;
   float power_ = 0.0f;
 };
