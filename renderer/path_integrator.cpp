@@ -98,9 +98,11 @@ template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                                   PathStats& stats, SensorStokes& L) const {
-  float u_light = 0.0f;
-  const size_t index = scene_.light_selection.sample(
-      sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)), &u_light);
+  // One light is picked whatever the number: its dimension is not drawn.
+  const size_t index = scene_.light_selection.size() == 1
+                           ? 0
+                           : scene_.light_selection.sample(
+                                 sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)));
   const float pmf = scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return;
   const Light& light = *scene_.lights[index];
