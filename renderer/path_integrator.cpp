@@ -4,6 +4,7 @@
 
 #include "materials/core/frame.h"
 #include "materials/core/sampling.h"
+#include "materials/graph/uniform_closure_memo.h"
 #include "materials/lobes/closure.h"
 #include "renderer/surface_shading.h"
 
@@ -174,7 +175,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     // units through the triangle's world-per-uv scale.
     ctx.footprint = cone.width_at(path_length);
     if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
-    scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
+    evaluate_memoized(*scene_.materials[mesh.material], ctx, arena, v.closure);
 
     // Emission seen by this path segment (one-sided: front face only).
     if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {
