@@ -1,8 +1,6 @@
 #include "materials/core/sampling.h"
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 
 namespace ochre {
 
@@ -19,26 +17,18 @@ Vec2 cos_sin_quarter_pi(float x) {
   return {c, s};
 }
 
-// a if c, else b, by a bit mask: compilers turn a conditional expression on floats into a branch.
-float select(bool c, float a, float b) {
-  const uint32_t mask = 0u - static_cast<uint32_t>(c);
-  return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
-}
-
 }  // namespace
 
 Vec2 sample_uniform_disk_concentric(const Vec2& u) {
   const float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
   if (ox == 0.0f && oy == 0.0f) return {0.0f, 0.0f};
-  // |ox| > |oy|: theta = pi/4 (oy / ox) in [-pi/4, pi/4]. Otherwise theta = pi/2 - phi with
-  // phi = pi/4 (ox / oy): cos theta = sin phi, sin theta = cos phi. Both cases share one computation on
-  // selected operands: the comparison is a coin flip, so selects beat a branch the CPU mispredicts half
-  // the time (same arithmetic, same bits).
-  const bool x_major = std::fabs(ox) > std::fabs(oy);
-  const float r = select(x_major, ox, oy);
-  const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (select(x_major, oy, ox) / r));
-  const float along = r * cs.x, across = r * cs.y;
-  return {select(x_major, along, across), select(x_major, across, along)};
+  if (std::fabs(ox) > std::fabs(oy)) {  // theta = pi/4 (oy / ox) in [-pi/4, pi/4]
+    const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (oy / ox));
+    return {ox * cs.x, ox * cs.y};
+  }
+  // theta = pi/2 - phi with phi = pi/4 (ox / oy): cos theta = sin phi, sin theta = cos phi.
+  const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (ox / oy));
+  return {oy * cs.y, oy * cs.x};
 }
 
 Vec3 sample_cosine_hemisphere(const Vec2& u) {
