@@ -265,15 +265,25 @@ float max_abs_component(const Vec3& v) {
   return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
 }
 
+// Position, error bound, unit geometric normal (0 for a degenerate triangle) and doubled area at barycentrics
+// (b1, b2) of a triangle.
+struct TrianglePoint {
+  Vec3 p;
+  Vec3 p_error;  // conservative absolute error bound of p per component (offset_ray_origin)
+  Vec3 ng;
+  float double_area = 0;  // |cross(p1 - p0, p2 - p0)|
+};
+
 // Position, error bound, normal and doubled area from the triangle's corners (shared by the two functions
 // below, which load the corners once).
 TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   TrianglePoint t;
   const float b0 = 1.0f - b1 - b2;
-  t.p = p[0] * b0 + p[1] * b1 + p[2] * b2;
+  t.p = barycentric_point(p[0], p[1], p[2], b1, b2);
   const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
   // A point of the triangle is no farther from a corner than the longest edge.
-  const float reach = std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
+  const float reach =
+      std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
   t.p_error =
       (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
   const Vec3 n = cross(e1, e2);
@@ -284,10 +294,10 @@ TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
 
 }  // namespace
 
-TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
+Vec3 triangle_normal(const Mesh& mesh, uint32_t triangle) {
   const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
   const Vec3 p[3] = {mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]]};
-  return point_on(p, b1, b2);
+  return point_on(p, 0.0f, 0.0f).ng;
 }
 
 SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float b2) {

@@ -86,15 +86,21 @@ struct SurfacePoint {
   float area_scale_uv = 0;  // world area per unit uv area of the triangle (0 without usable UVs)
 };
 
-// Position and unit geometric normal (0 for a degenerate triangle) at barycentrics (b1, b2) of a triangle:
-// the part of a SurfacePoint that light sampling needs.
-struct TrianglePoint {
-  Vec3 p;
-  Vec3 p_error;  // conservative absolute error bound of p per component (offset_ray_origin)
-  Vec3 ng;
-  float double_area = 0;  // |cross(p1 - p0, p2 - p0)|
-};
-TrianglePoint triangle_point(const Mesh& mesh, uint32_t triangle, float b1, float b2);
+// The point at barycentrics (b1, b2) of the triangle p0 p1 p2: SurfacePoint::p's arithmetic, shared with
+// light sampling so that both give the same bits.
+inline Vec3 barycentric_point(const Vec3& p0, const Vec3& p1, const Vec3& p2, float b1, float b2) {
+  const float b0 = 1.0f - b1 - b2;
+  return p0 * b0 + p1 * b1 + p2 * b2;
+}
+// Light sampling needs only a point's position and the triangle's unit geometric normal (0 for a degenerate
+// triangle): exactly the p and ng of surface_point(), without its error bound, normal and tangent work. The
+// normal does not depend on the point, so a light computes it once per triangle.
+inline Vec3 triangle_position(const Mesh& mesh, uint32_t triangle, float b1, float b2) {
+  const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
+  return barycentric_point(mesh.positions[corner[0]], mesh.positions[corner[1]], mesh.positions[corner[2]],
+                           b1, b2);
+}
+Vec3 triangle_normal(const Mesh& mesh, uint32_t triangle);
 
 // Shading point of a hit returned by Accel::intersect on the same meshes. The ray is only used
 // as a fallback for p when the triangle is degenerate.

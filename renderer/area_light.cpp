@@ -34,6 +34,8 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
   std::vector<double> areas(mesh.triangle_count());
   for (size_t i = 0; i < areas.size(); ++i) areas[i] = mesh.triangle_area(i);
   triangles_ = Distribution1D(areas);
+  normals_.resize(areas.size());
+  for (size_t i = 0; i < areas.size(); ++i) normals_[i] = triangle_normal(mesh, static_cast<uint32_t>(i));
   total_area_ = static_cast<float>(triangles_.total());
 
   // Power: area-weighted emission at the centroids of up to 64 triangles, times pi (Lambertian emitter).
@@ -90,22 +92,22 @@ std::optional<LightSample> AreaLight::sample(const Vec3& ref, const Vec2& u,
   const size_t tri = triangles_.sample(u.x, &u_tri);
   const Vec2 b = sample_uniform_triangle({u_tri, u.y});
   // Position and normal are all a uniform emitter needs; a textured one gets the whole shading point.
-  const TrianglePoint t = triangle_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y);
-  if (dot(t.ng, t.ng) == 0.0f) return std::nullopt;
+  const Vec3& ng = normals_[tri];
+  if (dot(ng, ng) == 0.0f) return std::nullopt;
 
-  const Vec3 d = t.p - ref;
+  const Vec3 d = triangle_position(mesh_, static_cast<uint32_t>(tri), b.x, b.y) - ref;
   const float dist2 = dot(d, d);
   if (!(dist2 > 0.0f)) return std::nullopt;
   LightSample s;
   s.distance = std::sqrt(dist2);
   s.wi = d / s.distance;
-  const float cos_light = -dot(t.ng, s.wi);
+  const float cos_light = -dot(ng, s.wi);
   if (cos_light <= 0.0f) return std::nullopt;  // back side: one-sided emitter
   s.pdf = dist2 / (cos_light * total_area_);   // area pdf 1/A converted to solid angle
   s.radiance = material_.facts().uniform_over_surface
                    ? uniform_emission(lambda)
                    : evaluate_emission(surface_point(mesh_, static_cast<uint32_t>(tri), b.x, b.y), lambda);
-  s.light_normal = t.ng;
+  s.light_normal = ng;
   return s;
 }
 

@@ -4,6 +4,7 @@
 // textured and spectral emission work the same as in camera rays.
 
 #include <cstdint>
+#include <vector>
 
 #include "materials/graph/compiled_material.h"
 #include "materials/nodes/texture_provider.h"
@@ -39,6 +40,8 @@ class AreaLight final : public Light {
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
 
   Distribution1D triangles_;
+  std::vector<Vec3>
+      normals_;  // unit geometric normal of each triangle (0 if degenerate): one per sample saved
   float total_area_ = 0.0f;
   float power_ = 0.0f;
   Vec3 bound_center_;           // bounding sphere of the mesh

@@ -4,6 +4,7 @@
 
 #include "materials/core/frame.h"
 #include "materials/core/sampling.h"
+#include "materials/graph/uniform_closure_memo.h"
 #include "materials/lobes/closure.h"
 #include "renderer/surface_shading.h"
 
@@ -112,9 +113,13 @@ template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                                   const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
-  const float u_choice = sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice));
-  const size_t index =
-      pmfs ? pick_light(*pmfs, scene_.lights.size(), u_choice) : scene_.light_selection.sample(u_choice);
+  // One light is picked whatever the number: its dimension is not drawn.
+  const size_t index = pmfs ? pick_light(*pmfs, scene_.lights.size(),
+                                         sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)))
+                       : scene_.light_selection.size() == 1
+                           ? 0
+                           : scene_.light_selection.sample(
+                                 sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)));
   const float pmf = pmfs ? (*pmfs)[index] : scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return;
   const Light& light = *scene_.lights[index];
@@ -268,7 +273,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     // units through the triangle's world-per-uv scale.
     ctx.footprint = cone.width_at(path_length);
     if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
-    scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
+    evaluate_memoized(*scene_.materials[mesh.material], ctx, arena, v.closure);
 
     // Emission seen by this path segment (one-sided: front face only).
     if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "spectra/wavelength_memo.h"
+
 namespace ochre {
 
 namespace {
@@ -17,7 +19,10 @@ void append_registers(std::string& text, const uint16_t* registers, int count) {
 }  // namespace
 
 CompiledMaterial::CompiledMaterial(std::string name, MaterialFacts facts, Program program)
-    : name_(std::move(name)), facts_(facts), program_(std::move(program)) {}
+    : name_(std::move(name)),
+      facts_(facts),
+      program_(std::move(program)),
+      memo_key_(new_wavelength_memo_key()) {}
 
 void CompiledMaterial::evaluate(const ShadingContext& ctx, LobeArena& arena, Closure& out) const {
   if (!ctx.lambda) throw std::invalid_argument("material '" + name_ + "': ShadingContext::lambda is not set");

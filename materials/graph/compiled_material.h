@@ -2,6 +2,7 @@
 // CompiledMaterial: a material graph after compilation (material_compiler.h), ready to be
 // evaluated at shading points by any number of threads at once.
 
+#include <cstdint>
 #include <string>
 
 #include "materials/graph/material_facts.h"
@@ -18,6 +19,9 @@ class CompiledMaterial {
 
   const std::string& name() const { return name_; }
   const MaterialFacts& facts() const { return facts_; }
+  // Never 0 and never shared with another material of the process: the key of its closure in the per-thread
+  // memo of uniform materials (uniform_closure_memo.h).
+  uint64_t memo_key() const { return memo_key_; }
 
   // Evaluates the compiled program at a shading point; lobes go into `arena`; `out` is replaced by
   // the resulting lobes and emission. ctx.lambda must be set; ctx.textures when the material
@@ -33,6 +37,7 @@ class CompiledMaterial {
   std::string name_;
   MaterialFacts facts_;
   Program program_;
+  uint64_t memo_key_;
 };
 
 }  // namespace ochre

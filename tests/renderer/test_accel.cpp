@@ -331,28 +331,28 @@ TEST(Accel, SurfacePointInterpolatesColoursAndNormals) {
   EXPECT_NEAR(length(sp.dpdu), 1.0f, 1e-6f);
 }
 
-// Light sampling reads only the position and geometric normal of a point: triangle_point() must give
-// exactly those of surface_point(), and a zero normal for a degenerate triangle.
-TEST(Accel, TrianglePointIsThePositionAndNormalOfTheSurfacePoint) {
+// Light sampling reads only the position and geometric normal of a point: triangle_position() and
+// triangle_normal() must give exactly those of surface_point(), and a zero normal for a degenerate triangle.
+TEST(Accel, TrianglePositionAndNormalAreThoseOfTheSurfacePoint) {
   Mesh tri;
   tri.positions = {{0.1f, -2, 3}, {1.7f, 0.3f, 2.5f}, {-0.4f, 1.2f, 3.9f}, {2, 2, 2}};
   tri.indices = {0, 1, 2, 3, 3, 3};
   tri.normals = {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {0, 0, 1}};
+  const Vec3 ng = triangle_normal(tri, 0);
+  EXPECT_NEAR(length(ng), 1.0f, 1e-6f);
   for (float b1 : {0.0f, 0.2f, 0.7f})
     for (float b2 : {0.0f, 0.1f, 0.3f}) {
       const SurfacePoint sp = surface_point(tri, 0, b1, b2);
-      const TrianglePoint t = triangle_point(tri, 0, b1, b2);
-      EXPECT_EQ(t.p.x, sp.p.x);
-      EXPECT_EQ(t.p.y, sp.p.y);
-      EXPECT_EQ(t.p.z, sp.p.z);
-      EXPECT_EQ(t.ng.x, sp.ng.x);
-      EXPECT_EQ(t.ng.y, sp.ng.y);
-      EXPECT_EQ(t.ng.z, sp.ng.z);
-      EXPECT_NEAR(length(t.ng), 1.0f, 1e-6f);
+      const Vec3 p = triangle_position(tri, 0, b1, b2);
+      EXPECT_EQ(p.x, sp.p.x);
+      EXPECT_EQ(p.y, sp.p.y);
+      EXPECT_EQ(p.z, sp.p.z);
+      EXPECT_EQ(ng.x, sp.ng.x);
+      EXPECT_EQ(ng.y, sp.ng.y);
+      EXPECT_EQ(ng.z, sp.ng.z);
     }
-  const TrianglePoint degenerate = triangle_point(tri, 1, 0.3f, 0.3f);
-  EXPECT_EQ(dot(degenerate.ng, degenerate.ng), 0.0f);
-  EXPECT_EQ(degenerate.double_area, 0.0f);
+  const Vec3 degenerate = triangle_normal(tri, 1);
+  EXPECT_EQ(dot(degenerate, degenerate), 0.0f);
 }
 
 TEST(Accel, InvalidMeshesAreRejected) {
