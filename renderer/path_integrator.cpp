@@ -113,13 +113,12 @@ template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                                   const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
-  // One light is picked whatever the number: its dimension is not drawn.
-  const size_t index = pmfs ? pick_light(*pmfs, scene_.lights.size(),
-                                         sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)))
-                       : scene_.light_selection.size() == 1
-                           ? 0
-                           : scene_.light_selection.sample(
-                                 sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice)));
+  // A single light is picked whatever the number: its dimension is not drawn.
+  size_t index = 0;
+  if (pmfs || scene_.light_selection.size() > 1) {
+    const float u = sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice));
+    index = pmfs ? pick_light(*pmfs, scene_.lights.size(), u) : scene_.light_selection.sample(u);
+  }
   const float pmf = pmfs ? (*pmfs)[index] : scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return;
   const Light& light = *scene_.lights[index];
