@@ -2,10 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
 
 #include "materials/graph/compiled_material.h"
-#include "materials/graph/material_compiler.h"
 #include "materials/lobes/chandrasekhar_halfspace.h"
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
@@ -13,17 +11,10 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "materials/lobes/lobe_arena.h"
 #include "materials/lobes/oren_nayar.h"
+#include "support/test_material.h"
 
 namespace ochre::test {
 namespace {
-
-class NoFiles : public ResourceResolver {
- public:
-  std::filesystem::path resolve(const std::string& path) const override { return path; }
-  int texture(const std::filesystem::path&, const std::string&, int&) override {
-    throw std::runtime_error("no textures here");
-  }
-};
 
 const SampledWavelengths& wavelengths() {
   static const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
@@ -32,8 +23,7 @@ const SampledWavelengths& wavelengths() {
 
 // Evaluates the material's closure at (wo, wi).
 SampledSpectrum evaluate(const std::string& json, const Vec3& wo, const Vec3& wi) {
-  NoFiles resolver;
-  const auto material = compile_material(nlohmann::json::parse(json), "m", "scene.json", resolver);
+  const auto material = compile_test_material(json);
   ShadingContext ctx;
   ctx.lambda = &wavelengths();
   LobeArena arena;
@@ -68,9 +58,7 @@ TEST(LambertSphereNode, ParticleAlbedoAndVariants) {
   EXPECT_FLOAT_EQ(
       evaluate(R"({"type": "lambert_sphere", "particle_albedo": 0.7, "variant": "exact"})", kWo, kWi)[3],
       lambert_sphere_exact(lambert_sphere_exact_constants(0.7f), mu_i, mu_o, w));
-  NoFiles resolver;
-  EXPECT_ANY_THROW(compile_material(nlohmann::json::parse(R"({"type": "lambert_sphere", "variant": "slow"})"),
-                                    "m", "scene.json", resolver));
+  EXPECT_ANY_THROW(compile_test_material(R"({"type": "lambert_sphere", "variant": "slow"})"));
 }
 
 TEST(LambertSphereNode, OrenNayarAndChandrasekhar) {

@@ -3,30 +3,19 @@
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-#include <stdexcept>
 
-#include "materials/graph/material_compiler.h"
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
 #include "renderer/area_light.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/surface_shading.h"
+#include "support/test_material.h"
 
 namespace ochre {
 namespace {
 
-class NoFiles : public ResourceResolver {
- public:
-  std::filesystem::path resolve(const std::string& path) const override { return path; }
-  int texture(const std::filesystem::path&, const std::string&, int&) override {
-    throw std::runtime_error("no textures in this test");
-  }
-};
-
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
-  NoFiles files;
-  return compile_material(nlohmann::json::parse(json), "light", "test.json", files);
+  return test::compile_test_material(json, "light");
 }
 
 SampledSpectrum fresh_emission(const CompiledMaterial& m, const SurfacePoint& sp,

@@ -3,28 +3,17 @@
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-#include <stdexcept>
 
-#include "materials/graph/material_compiler.h"
 #include "renderer/planar_mirrors.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/transform.h"
+#include "support/test_material.h"
 
 namespace ochre {
 namespace {
 
-class NoFiles : public ResourceResolver {
- public:
-  std::filesystem::path resolve(const std::string& path) const override { return path; }
-  int texture(const std::filesystem::path&, const std::string&, int&) override {
-    throw std::runtime_error("no textures in this test");
-  }
-};
-
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
-  NoFiles files;
-  return compile_material(nlohmann::json::parse(json), "m", "test.json", files);
+  return test::compile_test_material(json);
 }
 
 // A 2 x 3 plane tilted about x by 30 degrees and moved: its plane is not an axis plane.
