@@ -76,8 +76,8 @@ struct Scene {
   bool local_light_selection() const {
     return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
   }
-  // The probability of choosing each light at p: half in proportion to the importance, half by power (a
-  // defensive mix: the estimates ignore occlusion and the receiver's orientation).
+  // The probability of choosing each light at p: a quarter in proportion to the importance, three quarters by
+  // power (a defensive mix: the estimates ignore occlusion and the receiver's orientation).
   void light_pmfs(const Vec3& p, LightPmfs& out) const;
 };
 

@@ -1,5 +1,5 @@
 // Light::importance and the per-point light choice built on it (Scene::light_pmfs): the estimates' closed
-// forms, and probabilities that follow them half and half with the lights' power.
+// forms, and probabilities that follow them a quarter, and the lights' power three quarters.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,13 +58,13 @@ TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
   scene.light_pmfs({0, 0, 0}, pmf);
   // Importances 1, 1/101, 1/25 (times the same luminance).
   const double total = 1.0 + 1.0 / 101.0 + 1.0 / 25.0;
-  EXPECT_NEAR(pmf[0], 0.5 * 1.0 / total + 0.5 * scene.light_pmf(0), 1e-6);
-  EXPECT_NEAR(pmf[1], 0.5 * (1.0 / 101.0) / total + 0.5 * scene.light_pmf(1), 1e-6);
-  EXPECT_NEAR(pmf[2], 0.5 * (1.0 / 25.0) / total + 0.5 * scene.light_pmf(2), 1e-6);
+  EXPECT_NEAR(pmf[0], 0.25 * 1.0 / total + 0.75 * scene.light_pmf(0), 1e-6);
+  EXPECT_NEAR(pmf[1], 0.25 * (1.0 / 101.0) / total + 0.75 * scene.light_pmf(1), 1e-6);
+  EXPECT_NEAR(pmf[2], 0.25 * (1.0 / 25.0) / total + 0.75 * scene.light_pmf(2), 1e-6);
   // Next to the second light it takes the lead; outside the spot's cone the spot keeps its power share.
   scene.light_pmfs({10, 0, 0}, pmf);
-  EXPECT_GT(pmf[1], 0.7f);
-  EXPECT_NEAR(pmf[2], 0.5 * scene.light_pmf(2), 1e-6);
+  EXPECT_GT(pmf[1], pmf[0] + 0.2f);
+  EXPECT_NEAR(pmf[2], 0.75 * scene.light_pmf(2), 1e-6);
   EXPECT_NEAR(pmf[0] + pmf[1] + pmf[2], 1.0, 1e-6);
 
   // By power only on request, and for one light or more than kMaxLocalLights.
