@@ -51,18 +51,19 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
   }
   power_ = area > 0.0 ? static_cast<float>(kPi * total_area_ * weighted / area) : 0.0f;
 
-  Vec3 lo = mesh.positions.empty() ? Vec3() : mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) lo = min(lo, p), hi = max(hi, p);
-  bound_center_ = (lo + hi) * 0.5f;
-  bound_radius2_ = length_squared(hi - lo) * 0.25f;
+  if (!mesh.positions.empty()) {
+    const Mesh::Bounds b = mesh.bounds();
+    bound_center_ = (b.lo + b.hi) * 0.5f;
+    bound_radius2_ = length_squared(b.hi - b.lo) * 0.25f;
+  }
+  mean_radiance_ = total_area_ > 0.0f ? power_ / (kPi * total_area_) : 0.0f;
 }
 
 float AreaLight::importance(const Vec3& p) const {
   // Mean radiance times the solid angle the light can subtend (its area over the squared distance beyond its
   // bounding sphere), at most a hemisphere's pi.
-  const float mean_radiance = total_area_ > 0.0f ? power_ / (kPi * total_area_) : 0.0f;
   const float d2 = length_squared(p - bound_center_) - bound_radius2_;
-  return mean_radiance * (d2 > total_area_ / kPi ? total_area_ / d2 : kPi);
+  return mean_radiance_ * (d2 > total_area_ / kPi ? total_area_ / d2 : kPi);
 }
 
 SampledSpectrum AreaLight::emitted(const SurfacePoint& sp, const Vec3& to_viewer,

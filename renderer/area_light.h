@@ -46,6 +46,7 @@ class AreaLight final : public Light {
   float power_ = 0.0f;
   Vec3 bound_center_;           // bounding sphere of the mesh
   float bound_radius2_ = 0.0f;  // its radius squared
+  float mean_radiance_ = 0.0f;  // luminance, over the surface (importance())
 };
 
 }  // namespace ochre

@@ -90,8 +90,8 @@ float EnvironmentLight::power() const {
 }
 
 float EnvironmentLight::importance(const Vec3&) const {
-  return static_cast<float>(kPi * mean_luminance_ *
-                            scale_);  // a plane under the whole sky of the mean radiance
+  // The illuminance of a plane under a whole sky of the mean radiance.
+  return static_cast<float>(kPi * mean_luminance_ * scale_);
 }
 
 SampledSpectrum EnvironmentLight::radiance(const Vec3& direction, const SampledWavelengths& lambda) const {

@@ -41,6 +41,15 @@ float Mesh::triangle_area(size_t triangle) const {
   return 0.5f * length(cross(p1 - p0, p2 - p0));
 }
 
+Mesh::Bounds Mesh::bounds() const {
+  Bounds b;
+  for (const Vec3& p : positions) {
+    b.lo = min(b.lo, p);
+    b.hi = max(b.hi, p);
+  }
+  return b;
+}
+
 float Mesh::surface_area() const {
   double sum = 0;
   for (size_t i = 0; i < triangle_count(); ++i) sum += triangle_area(i);

@@ -2,6 +2,7 @@
 // Mesh: an indexed triangle mesh with optional per-vertex normals, UVs and colours.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -29,6 +30,16 @@ struct Mesh {
   float triangle_area(size_t triangle) const;
   // Sum of the triangle areas.
   float surface_area() const;
+  // Axis-aligned box of the positions (lo = +inf, hi = -inf when there are none).
+  struct Bounds {
+    Vec3 lo{INFINITY, INFINITY, INFINITY};
+    Vec3 hi{-INFINITY, -INFINITY, -INFINITY};
+    void include(const Bounds& other) {
+      lo = min(lo, other.lo);
+      hi = max(hi, other.hi);
+    }
+  };
+  Bounds bounds() const;
 
   // Applies `to_world` to positions and (by the inverse transpose, renormalized) to normals.
   // When the transform flips handedness the winding is reversed so the geometric normal keeps

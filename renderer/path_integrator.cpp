@@ -162,9 +162,10 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   // direction and pdf of x' -> y reflected in the plane.
   const Vec2 u = sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition));
   const Vec2 u_shifted{u.x < 0.5f ? u.x + 0.5f : u.x - 0.5f, u.y < 0.5f ? u.y + 0.5f : u.y - 0.5f};
-  const auto ls = light.sample(mirror.reflect_point(v.sp.p), u_shifted, lambda);
+  const Vec3 x_image = mirror.reflect_point(v.sp.p);
+  const auto ls = light.sample(x_image, u_shifted, lambda);
   if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black() || std::isinf(ls->distance)) return;
-  const Vec3 y = mirror.reflect_point(v.sp.p) + ls->wi * ls->distance;
+  const Vec3 y = x_image + ls->wi * ls->distance;
   if (mirror.signed_distance(y) * side <= 0.0f) return;  // the light is behind the mirror
   const Vec3 wi = mirror.reflect_direction(ls->wi);
   const Vec3 wi_local = v.frame.to_local(wi);
@@ -182,21 +183,22 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (!hit || static_cast<int>(hit->mesh) != mirror.mesh) return;
   PathVertex m;
   m.sp = surface_point(scene_.meshes, *hit, to_mirror);
-  const Mesh& mesh = scene_.meshes[hit->mesh];
-  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
-  scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
   const Vec3 wo_m = -wi;
   m.ng = dot(m.sp.ng, wo_m) >= 0.0f ? m.sp.ng : -m.sp.ng;
-  m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
-  m.wo_local = m.frame.to_local(wo_m);
-  auto exit = m.closure.sample(m.wo_local, 0.5f, Vec2{0.5f, 0.5f}, lambda);  // the mirror's only exit
-  if (!exit || exit->weight.is_black()) return;
   Ray shadow;
   shadow.origin = offset_ray_origin(m.sp.p, m.sp.p_error, m.ng, ls->wi);
   shadow.dir = ls->wi;
   shadow.tmax = length(y - m.sp.p) * (1.0f - 1e-4f);
   ++stats.shadow_rays;
-  if (scene_.accel->occluded(shadow)) return;
+  if (scene_.accel->occluded(shadow)) return;  // before the mirror's material: occluded samples skip it
+
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
+  scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
+  m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
+  m.wo_local = m.frame.to_local(wo_m);
+  auto exit = m.closure.sample(m.wo_local, 0.5f, Vec2{0.5f, 0.5f}, lambda);  // the mirror's only exit
+  if (!exit || exit->weight.is_black()) return;
 
   const float light_pdf = choice.pmf * ls->pdf;
   const float mis = ls->delta || ls->only_by_light_sampling

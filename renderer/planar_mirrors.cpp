@@ -34,9 +34,8 @@ std::optional<PlanarMirror> mesh_plane(const Mesh& mesh) {
   PlanarMirror plane;
   plane.normal = triangle_cross(mesh, largest) / largest_length;
   plane.offset = dot(plane.normal, mesh.positions[mesh.indices[3 * largest]]);
-  Vec3 lo = mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) lo = min(lo, p), hi = max(hi, p);
-  const float tolerance = kPlaneTolerance * std::max(length(hi - lo), 1e-20f);
+  const Mesh::Bounds box = mesh.bounds();
+  const float tolerance = kPlaneTolerance * std::max(length(box.hi - box.lo), 1e-20f);
   for (const Vec3& p : mesh.positions)
     if (std::abs(plane.signed_distance(p)) > tolerance) return std::nullopt;
   // Interpolated shading normals must be the plane's (one orientation, or interpolation could tilt them).

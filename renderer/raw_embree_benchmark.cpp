@@ -25,20 +25,11 @@ constexpr uint32_t kRaysPerBatch = 4096;
 // Batches handed to the pool between two looks at the clock.
 constexpr uint32_t kBatchesPerRound = 256;
 
-struct Bounds {
-  Vec3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-          std::numeric_limits<float>::max()};
-  Vec3 hi{std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
-          std::numeric_limits<float>::lowest()};
-};
+using Bounds = Mesh::Bounds;
 
 Bounds mesh_bounds(const std::vector<Mesh>& meshes) {
   Bounds b;
-  for (const Mesh& mesh : meshes)
-    for (const Vec3& p : mesh.positions) {
-      b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-      b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-    }
+  for (const Mesh& mesh : meshes) b.include(mesh.bounds());
   return b;
 }
 

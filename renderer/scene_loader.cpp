@@ -597,13 +597,9 @@ void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) 
 }
 
 float bounding_radius(const std::vector<Mesh>& meshes) {
-  Vec3 lo(INFINITY, INFINITY, INFINITY), hi(-INFINITY, -INFINITY, -INFINITY);
-  for (const Mesh& m : meshes)
-    for (const Vec3& p : m.positions) {
-      lo = min(lo, p);
-      hi = max(hi, p);
-    }
-  return meshes.empty() || !(hi.x >= lo.x) ? 1.0f : std::max(1e-3f, 0.5f * length(hi - lo));
+  Mesh::Bounds b;
+  for (const Mesh& m : meshes) b.include(m.bounds());
+  return meshes.empty() || !(b.hi.x >= b.lo.x) ? 1.0f : std::max(1e-3f, 0.5f * length(b.hi - b.lo));
 }
 
 void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
