@@ -147,7 +147,7 @@ void Film::add_spectral_sample(int x, int y, const SampledSpectrum& L, const Sam
     if (!(pdf > 0.0f) || !std::isfinite(L[i])) continue;
     const int bin = static_cast<int>(std::floor((lambda[i] - lambda_min_) / bin_width_));
     if (bin < 0 || bin >= spectral_bins_) continue;
-    // E[L(l) 1_bin(l) / pdf(l)] = integral of L over the bin; / width = the bin's mean; / 4 lanes.
+    // E[L(l) 1_bin(l) / pdf(l)] = integral of L over the bin; / width = the bin's mean; / the lanes.
     bins[bin] +=
         to_fixed(static_cast<double>(L[i]) / (static_cast<double>(pdf) * bin_width_ * kSpectrumSamples));
   }

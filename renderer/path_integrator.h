@@ -1,7 +1,7 @@
 #pragma once
 // Unidirectional spectral path tracer: next-event estimation, multiple importance sampling
 // (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
-// lights handled. Radiance is traced for the 4 hero wavelengths of the path, carrying the Mueller
+// lights handled. Radiance is traced for the 8 hero wavelengths of the path, carrying the Mueller
 // product of the polarization mode (path_throughput.h): off, intensity or stokes.
 
 #include <cstdint>

@@ -7,7 +7,7 @@
 //   kCieYIntegral                  sum of ybar over 360..830 nm at 1 nm steps (as in pbrt-v4)
 //   spectrum_to_xyz(s)             1 nm Riemann sum of s xbar, s ybar, s zbar over 360..830 nm
 //                                  divided by kCieYIntegral, so that a constant 1 spectrum has Y = 1
-//   sampled_to_xyz(L, lambda)      Monte-Carlo estimate of spectrum_to_xyz from one path's 4 hero
+//   sampled_to_xyz(L, lambda)      Monte-Carlo estimate of spectrum_to_xyz from one path's 8 hero
 //                                  wavelengths: mean over lanes of cmf(l_i) L_i / pdf_i over
 //                                  kCieYIntegral (lanes with pdf 0, i.e. terminated, count as 0)
 //   d65(), illuminant_a()          CIE illuminants scaled to luminance 1 (spectrum_to_xyz(s).y == 1):

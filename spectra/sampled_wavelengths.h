@@ -1,8 +1,8 @@
 #pragma once
-// SampledWavelengths: the 4 hero wavelengths of one path and their pdfs.
-// One uniform number u gives lambda_i = visible_sample(u + i/4 mod 1): rotated stratification
+// SampledWavelengths: the kSpectrumSamples (8) hero wavelengths of one path and their pdfs.
+// One uniform number u gives lambda_i = visible_sample(u + i/8 mod 1): rotated stratification
 // over 360-830 nm with the visible-importance pdf of Radziszewski et al. (the one Mitsuba 3 and
-// pbrt-v4 use), so the 4 samples are stratified and each follows the same marginal pdf.
+// pbrt-v4 use), so the 8 samples are stratified and each follows the same marginal pdf.
 
 #include "spectra/sampled_spectrum.h"
 
@@ -14,7 +14,7 @@ inline constexpr float kLambdaMax = 830.0f;
 // Visible-importance sampling of one wavelength on [360, 830] nm:
 // pdf(lambda) = 0.0039398042 / cosh^2(0.0072 (lambda - 538)).
 float sample_visible_wavelength(float u);
-// The fractional part of u + i/4: the rotation that stratifies the 4 hero wavelengths of one u.
+// The fractional part of u + i/8: the rotation that stratifies the 8 hero wavelengths of one u.
 float hero_rotation(float u, int i);
 float visible_wavelength_pdf(float lambda);
 

@@ -8,7 +8,7 @@
 //   SensorResponse(name, r, g, b, lo, hi)  tabulated sensitivities, zero outside [lo, hi] nm (an IR-cut or
 //                                     IR-pass filter ends them); resampled at 1 nm; normalised so that a
 //                                     constant radiance 1 gives G = 1 (as it gives Y = 1 for the observer)
-//   sample_wavelengths(u)             the 4 hero wavelengths over [lo, hi]: pdf proportional to r + g + b
+//   sample_wavelengths(u)             the 8 hero wavelengths over [lo, hi]: pdf proportional to r + g + b
 //                                     plus 5 % of its mean (piecewise constant per nm), so every wavelength
 //                                     the sensor sees can be sampled, rotated like SampledWavelengths
 //   response(L, lambda)               Monte-Carlo estimate of the channel integrals from one path

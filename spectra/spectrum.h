@@ -14,7 +14,7 @@ class Spectrum {
   virtual ~Spectrum() = default;
   // Value at one wavelength in nm.
   virtual float eval(float lambda_nm) const = 0;
-  // Values at the 4 wavelengths of a path.
+  // Values at the wavelengths of a path.
   virtual SampledSpectrum sample(const SampledWavelengths& lambda) const {
     SampledSpectrum s;
     for (int i = 0; i < kSpectrumSamples; ++i) s[i] = eval(lambda[i]);

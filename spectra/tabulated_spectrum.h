@@ -39,7 +39,7 @@ class TabulatedSpectrum final : public Spectrum {
                     TableExtrapolation extrapolation = TableExtrapolation::kClamp);
 
   float eval(float lambda_nm) const override;
-  // The four lanes without a virtual call each (eval is inlined here: the class is final).
+  // Every lane without a virtual call each (eval is inlined here: the class is final).
   SampledSpectrum sample(const SampledWavelengths& lambda) const override;
   // Exact maximum over [360, 830] nm (the table is piecewise linear).
   float max_value() const override { return max_value_; }

@@ -1,7 +1,7 @@
 #pragma once
 // WavelengthMemo: a per-thread memo of spectra sampled at a path's wavelengths.
 //
-// A path keeps its four wavelengths from the camera to its last vertex, and many spectra it samples do not
+// A path keeps its wavelengths from the camera to its last vertex, and many spectra it samples do not
 // depend on the shading point: a material's tabulated reflectance, a uniform emitter, the D65 white of an
 // environment map's texels. Each such spectrum takes a key from new_wavelength_memo_key() (a number never
 // handed out twice in the process, so a key cannot outlive its spectrum as a reused address could) and asks

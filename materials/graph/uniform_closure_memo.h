@@ -2,7 +2,7 @@
 // evaluate_memoized(): a material's closure, remembered per thread for the path's wavelengths when the
 // material reads nothing of the shading point (MaterialFacts::uniform_over_surface).
 //
-// A path keeps its four wavelengths from the camera to its last vertex, and a material uniform over the
+// A path keeps its wavelengths from the camera to its last vertex, and a material uniform over the
 // surface (every material of a Cornell box: a constant or tabulated Lambert) gives the same closure at every
 // vertex that hits it. The first hit of each such material on a path runs its program; later hits copy the
 // closure from a per-thread direct-mapped table (64 entries keyed by CompiledMaterial::memo_key(), a number

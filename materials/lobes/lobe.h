@@ -77,7 +77,7 @@ inline bool same_hemisphere(const Vec3& a, const Vec3& b) {
 class Lobe {
  public:
   virtual uint32_t flags() const = 0;
-  // Unpolarized BSDF value (Mueller M00) at the 4 wavelengths, without the cosine.
+  // Unpolarized BSDF value (Mueller M00) at the path's wavelengths, without the cosine.
   virtual SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const = 0;
   // Solid-angle pdf with which sample() produces wi (hero wavelength).
   virtual float pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const = 0;

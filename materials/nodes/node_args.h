@@ -90,11 +90,12 @@ class NodeArgs {
     return (carries & 0x80000000u) == 0;
   }
   void make_finite_spectrum(SampledSpectrum& s) const {
-    float v[kSpectrumSamples] = {s[0], s[1], s[2], s[3]};
+    float v[kSpectrumSamples];
+    for (int k = 0; k < kSpectrumSamples; ++k) v[k] = s[k];
     if (all_finite(v, kSpectrumSamples)) [[likely]]
       return;
     make_finite(v, kSpectrumSamples, ctx.nonfinite);
-    s = {v[0], v[1], v[2], v[3]};
+    for (int k = 0; k < kSpectrumSamples; ++k) s[k] = v[k];
   }
   void store(uint16_t at, const float* v, int n) const {
     for (int k = 0; k < n; ++k) frame_[at + k] = v[k];
@@ -106,11 +107,14 @@ class NodeArgs {
     store(at, v, 3);
   }
   void store_spectrum(uint16_t at, const SampledSpectrum& s) const {
-    const float v[kSpectrumSamples] = {s[0], s[1], s[2], s[3]};
+    float v[kSpectrumSamples];
+    for (int k = 0; k < kSpectrumSamples; ++k) v[k] = s[k];
     store(at, v, kSpectrumSamples);
   }
   SampledSpectrum load_spectrum(uint16_t at) const {
-    return {frame_[at], frame_[at + 1], frame_[at + 2], frame_[at + 3]};
+    SampledSpectrum s;
+    for (int k = 0; k < kSpectrumSamples; ++k) s[k] = frame_[at + k];
+    return s;
   }
 
   float* frame_;

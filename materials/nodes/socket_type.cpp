@@ -1,5 +1,7 @@
 #include "materials/nodes/socket_type.h"
 
+#include "spectra/sampled_spectrum.h"
+
 namespace ochre {
 
 const char* to_string(SocketType type) {
@@ -47,7 +49,7 @@ int register_floats(SocketType type) {
       return 3;
     case SocketType::kSpectrum:
     case SocketType::kClosure:
-      return 4;
+      return kSpectrumSamples;
   }
   return 0;
 }

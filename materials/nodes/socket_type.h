@@ -10,7 +10,7 @@ namespace ochre {
 enum class SocketType : uint8_t {
   kFloat,
   kColour,    // linear Rec.709 RGB
-  kSpectrum,  // a function of wavelength, sampled at the path's 4 wavelengths at run time
+  kSpectrum,  // a function of wavelength, sampled at the path's 8 wavelengths at run time
   kVector,    // 3D vector (uv coordinates are (u, v, 0))
   kClosure,   // a weighted sum of BSDF lobes plus emission
 };

@@ -11,6 +11,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
+#include "support/spectrum_lanes.h"
 
 namespace ochre::test {
 namespace {
@@ -47,7 +48,7 @@ double ns_per_call(const Directions& d, F f) {
 
 TEST(LambertSphereBenchmark, NanosecondsPerEvaluation) {
   const Directions d(50'000);
-  const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   const float c = 0.8f;
   const LambertSphereConstants<float> k = lambert_sphere_constants(c);
   const LambertSphereExactConstants ke = lambert_sphere_exact_constants(c);
@@ -63,7 +64,7 @@ TEST(LambertSphereBenchmark, NanosecondsPerEvaluation) {
       d, [&](const Vec3& wo, const Vec3& wi) { return lambert_sphere_fast(k, wi.z, wo.z, dot(wi, wo)); });
   const double t_exact = ns_per_call(
       d, [&](const Vec3& wo, const Vec3& wi) { return lambert_sphere_exact(ke, wi.z, wo.z, dot(wi, wo)); });
-  const SampledSpectrum cs(0.3f, 0.6f, 0.8f, 0.95f);
+  const SampledSpectrum cs = lanes({0.3f, 0.6f, 0.8f, 0.95f});
   const LambertSphereLobe full(LambertSphereVariant::kFull, cs), fast(LambertSphereVariant::kFast, cs),
       exact(LambertSphereVariant::kExact, cs);
   auto lobe_time = [&](const Lobe& lobe) {

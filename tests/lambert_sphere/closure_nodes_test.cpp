@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-
 #include "materials/graph/compiled_material.h"
 #include "materials/lobes/chandrasekhar_halfspace.h"
 #include "materials/lobes/closure.h"
@@ -11,13 +10,14 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "materials/lobes/lobe_arena.h"
 #include "materials/lobes/oren_nayar.h"
+#include "support/spectrum_lanes.h"
 #include "support/test_material.h"
 
 namespace ochre::test {
 namespace {
 
 const SampledWavelengths& wavelengths() {
-  static const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  static const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   return lambda;
 }
 

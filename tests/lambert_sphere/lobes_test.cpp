@@ -14,6 +14,7 @@
 #include "materials/lobes/oren_nayar.h"
 #include "materials/lobes/sampling_check.h"
 #include "materials/numerics/h_function.h"
+#include "support/spectrum_lanes.h"
 
 namespace ochre::test {
 namespace {
@@ -21,7 +22,7 @@ namespace {
 constexpr double kPiD = 3.14159265358979323846;
 
 const SampledWavelengths& wavelengths() {
-  static const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  static const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   return lambda;
 }
 
@@ -43,7 +44,7 @@ void expect_sampling_matches_pdf(const Lobe& lobe, const char* name) {
 }
 
 TEST(LambertSphereLobe, SamplingMatchesPdf) {
-  const SampledSpectrum c(0.2f, 0.6f, 0.9f, 1.0f);
+  const SampledSpectrum c = lanes({0.2f, 0.6f, 0.9f, 1.0f});
   expect_sampling_matches_pdf(LambertSphereLobe(LambertSphereVariant::kFull, c), "full");
   expect_sampling_matches_pdf(LambertSphereLobe(LambertSphereVariant::kFast, c), "fast");
   expect_sampling_matches_pdf(LambertSphereLobe(LambertSphereVariant::kExact, c), "exact");
@@ -52,7 +53,7 @@ TEST(LambertSphereLobe, SamplingMatchesPdf) {
 // The lobe uses the tabulated constants (lambert_sphere_constants_table.h; within 2e-4 of the direct
 // ones, tests/lambert_sphere/constants_table_test.cpp).
 TEST(LambertSphereLobe, EvaluatesTheModelPerWavelength) {
-  const SampledSpectrum c(0.0f, 0.5f, 0.9f, 1.0f);
+  const SampledSpectrum c = lanes({0.0f, 0.5f, 0.9f, 1.0f});
   const LambertSphereLobe lobe(LambertSphereVariant::kFull, c);
   const Vec3 wo = direction(0.7f, 0.0f), wi = direction(0.4f, 2.0f);
   const SampledSpectrum f = lobe.eval(wo, wi, wavelengths());
@@ -114,7 +115,7 @@ TEST(Chandrasekhar, TabulatedHFunctionAndEnergy) {
           [&](double a, double b, double) { return chandrasekhar_brdf(k, float(a), float(b)); }, mu);
       EXPECT_NEAR(albedo, 1.0 - isotropic_h_exact(mu, c) * std::sqrt(1.0 - c), 2e-3) << c << " " << mu;
     }
-  expect_sampling_matches_pdf(ChandrasekharLobe(SampledSpectrum(0.3f, 0.6f, 0.9f, 1.0f)), "chandrasekhar");
+  expect_sampling_matches_pdf(ChandrasekharLobe(lanes({0.3f, 0.6f, 0.9f, 1.0f})), "chandrasekhar");
 }
 
 }  // namespace

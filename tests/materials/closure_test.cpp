@@ -11,11 +11,12 @@
 #include "material_test_support.h"
 #include "materials/lobes/conductor.h"
 #include "materials/lobes/lambert.h"
+#include "support/spectrum_lanes.h"
 
 namespace ochre::test {
 namespace {
 
-const SampledSpectrum kWeight{0.25f, 0.5f, 0.75f, 1.0f};
+const SampledSpectrum kWeight = lanes({0.25f, 0.5f, 0.75f, 1.0f});
 
 void expect_one_lobe_sample_is_the_mixture_estimator(const Lobe& lobe, const Vec3& wo) {
   Closure closure;

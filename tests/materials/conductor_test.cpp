@@ -15,6 +15,7 @@
 #include "materials/lobes/fresnel.h"
 #include "polarization_test_support.h"
 #include "spectra/named_spectra.h"
+#include "support/spectrum_lanes.h"
 
 namespace ochre::test {
 namespace {
@@ -22,8 +23,7 @@ namespace {
 const SampledSpectrum kSilverN(0.136125f), kSilverK(4.010625f);
 
 TEST(SmoothConductor, MirrorsWithTheFresnelReflectance) {
-  const SmoothConductorLobe lobe(SampledSpectrum(0.2f, 0.5f, 1.2f, 4.073f),
-                                 SampledSpectrum(3.0f, 2.5f, 7.0f, 0.028f));
+  const SmoothConductorLobe lobe(lanes({0.2f, 0.5f, 1.2f, 4.073f}), lanes({3.0f, 2.5f, 7.0f, 0.028f}));
   for (float theta : {0.0f, 0.3f, 1.0f, 1.5f}) {
     const Vec3 wo = direction(theta, 0.7f);
     const auto s = lobe.sample(wo, 0.5f, {0.3f, 0.3f}, test_wavelengths());
@@ -34,9 +34,10 @@ TEST(SmoothConductor, MirrorsWithTheFresnelReflectance) {
     EXPECT_NEAR(s->wi.x, -wo.x, 1e-7f);
     EXPECT_NEAR(s->wi.y, -wo.y, 1e-7f);
     EXPECT_NEAR(s->wi.z, wo.z, 1e-7f);
-    const float n[] = {0.2f, 0.5f, 1.2f, 4.073f}, k[] = {3.0f, 2.5f, 7.0f, 0.028f};
+    const float n[] = {0.2f, 0.5f, 1.2f, 4.073f},
+                k[] = {3.0f, 2.5f, 7.0f, 0.028f};  // repeated across the lanes
     for (int i = 0; i < kSpectrumSamples; ++i) {
-      EXPECT_NEAR(s->weight[i], fresnel_conductor(wo.z, n[i], k[i]), 1e-6f);
+      EXPECT_NEAR(s->weight[i], fresnel_conductor(wo.z, n[i % 4], k[i % 4]), 1e-6f);
       EXPECT_FLOAT_EQ(s->mueller.m[i](0, 0), s->weight[i]);
     }
     EXPECT_TRUE(valid_frames(s->mueller, wo, s->wi));
@@ -103,8 +104,8 @@ TEST(SmoothConductor, ZeroKIsTheDielectricReflection) {
 }
 
 TEST(RoughConductor, MuellerM00EqualsEvalAndFramesAreValid) {
-  const RoughConductorLobe lobe(SampledSpectrum(0.2f, 0.5f, 1.2f, 0.14f),
-                                SampledSpectrum(3.0f, 2.5f, 7.0f, 4.0f), 0.3f, 0.15f);
+  const RoughConductorLobe lobe(lanes({0.2f, 0.5f, 1.2f, 0.14f}), lanes({3.0f, 2.5f, 7.0f, 4.0f}), 0.3f,
+                                0.15f);
   Pcg32 rng(11);
   int nonzero = 0;
   for (int i = 0; i < 2000; ++i) {

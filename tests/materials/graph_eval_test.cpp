@@ -12,6 +12,7 @@
 #include "spectra/cie.h"
 #include "spectra/named_spectra.h"
 #include "spectra/rgb_spectrum.h"
+#include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -67,7 +68,7 @@ TEST_F(GraphEval, InlineSpectrumTableIsLinearBetweenItsEntries) {
   const char* table =
       R"({"type": "lambert", "color": {"wavelengths": [400, 500, 600], "values": [0.2, 0.6, 0.4]%s}})";
   auto weight_at = [&](float nm, const char* extra) {
-    lambda = SampledWavelengths::fixed({nm, nm, nm, nm});
+    lambda = SampledWavelengths::fixed(lanes({nm, nm, nm, nm}));
     char text[256];
     std::snprintf(text, sizeof text, table, extra);
     return evaluate(text).lobe(0).weight[0];
@@ -281,8 +282,7 @@ TEST_F(GraphEval, SpectrumFromCsvFile) {
       "d": {"type": "lambert", "color": {"link": "refl"}}}, "output": "d"})");
   // Linear between the entries, clamped beyond the last one.
   expect_spectrum_eq(c.lobe(0).weight,
-                     0.5f * SampledSpectrum(0.1f, 0.1f + 0.1f * 100.0f / 150.0f, 0.2f + 0.7f / 3.0f, 0.9f),
-                     1e-5f);
+                     0.5f * lanes({0.1f, 0.1f + 0.1f * 100.0f / 150.0f, 0.2f + 0.7f / 3.0f, 0.9f}), 1e-5f);
   const Closure& d = evaluate(R"({"type": "lambert", "color": {"file": "red.csv"}})");
   EXPECT_FLOAT_EQ(d.lobe(0).weight[0], 0.1f);
 }
@@ -290,7 +290,7 @@ TEST_F(GraphEval, SpectrumFromCsvFile) {
 // A table over 450-650 nm seen at 400, 500, 600 and 700 nm: the outer two are outside it.
 TEST_F(GraphEval, SpectrumFileExtrapolation) {
   std::ofstream(resolver.resolve("lamp.csv")) << "nm,e\n450,2\n550,4\n650,6\n";
-  const SampledSpectrum held(2.0f, 3.0f, 5.0f, 6.0f), zero(0.0f, 3.0f, 5.0f, 0.0f);
+  const SampledSpectrum held = lanes({2.0f, 3.0f, 5.0f, 6.0f}), zero = lanes({0.0f, 3.0f, 5.0f, 0.0f});
   for (const char* node : {R"({"type": "spectrum", "file": "lamp.csv"})",
                            R"({"type": "spectrum", "file": "lamp.csv", "extrapolate": "clamp"})"}) {
     const Closure& c = evaluate(R"({"nodes": {"s": )" + std::string(node) +

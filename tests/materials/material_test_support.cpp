@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -36,7 +37,7 @@ std::shared_ptr<const CompiledMaterial> compile(const std::string& json_text) {
 }
 
 const SampledWavelengths& test_wavelengths() {
-  static const SampledWavelengths lambda = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  static const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   return lambda;
 }
 

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "support/spectrum_lanes.h"
+
 namespace ochre::test {
 namespace {
 
@@ -74,7 +76,7 @@ TEST(Mueller, PolarizerAtFourAnglesOnUnpolarizedLight) {
 TEST(Mueller, DepolarizerAndAbsorber) {
   expect_stokes(depolarizer(0.8f) * Stokes{{1, .5f, .5f, .5f}}, Stokes{{0.8f, 0, 0, 0}});
   expect_stokes(absorber(0.25f) * Stokes{{1, .5f, -.5f, .5f}}, Stokes{{.25f, .125f, -.125f, .125f}});
-  const MuellerSpectrum d = depolarizer(SampledSpectrum(0.1f, 0.2f, 0.3f, 0.4f));
+  const MuellerSpectrum d = depolarizer(lanes({0.1f, 0.2f, 0.3f, 0.4f}));
   EXPECT_FLOAT_EQ(d[2](0, 0), 0.3f);
   EXPECT_EQ(d[2](1, 1), 0.0f);
 }

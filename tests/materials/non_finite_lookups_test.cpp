@@ -19,6 +19,9 @@
 #include "materials/lobes/oren_nayar.h"
 #include "materials/numerics/h_function.h"
 #include "support/awkward_floats.h"
+#include "support/spectrum_lanes.h"
+
+using ochre::test::lanes;
 
 namespace ochre {
 namespace {
@@ -97,8 +100,7 @@ TEST(NonFiniteLookups, ExactHFunctions) {
 
 // A lobe built from `albedo_or_roughness` must evaluate and sample to finite values in every direction.
 void expect_finite_lobe(const Lobe& lobe, float parameter) {
-  const SampledWavelengths lambda =
-      SampledWavelengths::fixed(SampledSpectrum(400.0f, 500.0f, 600.0f, 700.0f));
+  const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   Pcg32 rng(11);
   for (int n = 0; n < 64; ++n) {
     const Vec3 wo = normalize(Vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float()));
@@ -116,7 +118,8 @@ void expect_finite_lobe(const Lobe& lobe, float parameter) {
 }
 
 TEST(NonFiniteLookups, LobesBuiltFromNonFiniteParameters) {
-  const SampledSpectrum copper_n(0.27f, 1.1f, 1.2f, 0.2f), copper_k(3.4f, 2.6f, 2.4f, 4.0f);
+  const SampledSpectrum copper_n = lanes({0.27f, 1.1f, 1.2f, 0.2f}),
+                        copper_k = lanes({3.4f, 2.6f, 2.4f, 4.0f});
   for (float x : awkward_floats()) {
     const SampledSpectrum s(x);
     for (LambertSphereVariant v :

@@ -16,6 +16,7 @@
 #include "materials/lobes/lambert.h"
 #include "materials/nodes/node_args.h"
 #include "support/awkward_floats.h"
+#include "support/spectrum_lanes.h"
 
 namespace ochre::test {
 namespace {
@@ -33,13 +34,18 @@ class NodeArgsBoundary : public ::testing::Test {
     ctx.nonfinite = &tally;
   }
   NodeArgs args() { return NodeArgs(ctx, frame.data(), in.data(), out.data(), nullptr, ~0u, arena, closure); }
+  // Two spectrum-wide inputs then two outputs (a float, colour or vector output uses the first floats of its
+  // register).
+  static constexpr int kIn1 = kSpectrumSamples, kOut0 = 2 * kSpectrumSamples, kOut1 = 3 * kSpectrumSamples;
   SampledSpectrum at(int offset) const {
-    return {frame[offset], frame[offset + 1], frame[offset + 2], frame[offset + 3]};
+    SampledSpectrum s;
+    for (int k = 0; k < kSpectrumSamples; ++k) s[k] = frame[offset + k];
+    return s;
   }
 
-  std::array<float, 16> frame{};
-  std::array<uint16_t, 2> in{0, 4};
-  std::array<uint16_t, 2> out{8, 12};
+  std::array<float, 4 * kSpectrumSamples> frame{};
+  std::array<uint16_t, 2> in{0, kIn1};
+  std::array<uint16_t, 2> out{kOut0, kOut1};
   NonFiniteTally tally;
   ShadingContext ctx;
   LobeArena arena{1024};
@@ -49,52 +55,52 @@ class NodeArgsBoundary : public ::testing::Test {
 TEST_F(NodeArgsBoundary, FiniteWritesAreUnchangedAndNotCounted) {
   const NodeArgs a = args();
   a.set_float(0, -0.0f);
-  EXPECT_TRUE(std::signbit(frame[8]));
+  EXPECT_TRUE(std::signbit(frame[kOut0]));
   a.set_colour(0, {kLargest, 1e-45f, -kLargest});
-  EXPECT_EQ(frame[8], kLargest);
-  EXPECT_EQ(frame[9], 1e-45f);
-  EXPECT_EQ(frame[10], -kLargest);
+  EXPECT_EQ(frame[kOut0], kLargest);
+  EXPECT_EQ(frame[kOut0 + 1], 1e-45f);
+  EXPECT_EQ(frame[kOut0 + 2], -kLargest);
   a.set_vector(1, {0.5f, -2.0f, 3e38f});
-  EXPECT_EQ(frame[14], 3e38f);
-  a.set_spectrum(1, {1.0f, 2.0f, 3.0f, 4.0f});
-  EXPECT_EQ(at(12), SampledSpectrum(1.0f, 2.0f, 3.0f, 4.0f));
+  EXPECT_EQ(frame[kOut1 + 2], 3e38f);
+  a.set_spectrum(1, lanes({1.0f, 2.0f, 3.0f, 4.0f}));
+  EXPECT_EQ(at(kOut1), lanes({1.0f, 2.0f, 3.0f, 4.0f}));
   EXPECT_EQ(tally.values, 0u);
 }
 
 TEST_F(NodeArgsBoundary, EachNonFiniteWriteIsMadeFiniteAndCountedOnce) {
   const NodeArgs a = args();
   a.set_float(0, kNaN);
-  EXPECT_EQ(std::bit_cast<uint32_t>(frame[8]), 0u);
+  EXPECT_EQ(std::bit_cast<uint32_t>(frame[kOut0]), 0u);
   EXPECT_EQ(tally.values, 1u);
   a.set_colour(0, {kInf, 0.5f, kNaN});
-  EXPECT_EQ(frame[8], kLargest);
-  EXPECT_EQ(frame[9], 0.5f);
-  EXPECT_EQ(frame[10], 0.0f);
+  EXPECT_EQ(frame[kOut0], kLargest);
+  EXPECT_EQ(frame[kOut0 + 1], 0.5f);
+  EXPECT_EQ(frame[kOut0 + 2], 0.0f);
   EXPECT_EQ(tally.values, 2u);
   a.set_vector(1, {-kInf, 1.0f, 2.0f});
-  EXPECT_EQ(frame[12], -kLargest);
+  EXPECT_EQ(frame[kOut1], -kLargest);
   EXPECT_EQ(tally.values, 3u);
-  a.set_spectrum(1, {kNaN, kInf, -kInf, 0.25f});
-  EXPECT_EQ(at(12), SampledSpectrum(0.0f, kLargest, -kLargest, 0.25f));
+  a.set_spectrum(1, lanes({kNaN, kInf, -kInf, 0.25f}));
+  EXPECT_EQ(at(kOut1), lanes({0.0f, kLargest, -kLargest, 0.25f}));
   EXPECT_EQ(tally.values, 4u);
 }
 
 TEST_F(NodeArgsBoundary, ClosureWeightsThatOverflowAreLimited) {
-  for (int k = 0; k < 4; ++k) frame[k] = kLargest;
+  for (int k = 0; k < kSpectrumSamples; ++k) frame[k] = kLargest;
   args().add_weight(0, SampledSpectrum(kLargest));
   EXPECT_EQ(at(0), SampledSpectrum(kLargest));
   EXPECT_EQ(tally.values, 1u);
   args().add_weight(1, SampledSpectrum(0.5f));
-  EXPECT_EQ(at(4), SampledSpectrum(0.5f));
+  EXPECT_EQ(at(kIn1), SampledSpectrum(0.5f));
   EXPECT_EQ(tally.values, 1u);
 }
 
 TEST_F(NodeArgsBoundary, LobeWeightsAreFinite) {
   const NodeArgs a = args();
   const LambertLobe* lobe = arena.make<LambertLobe>();
-  a.add_lobe(lobe, SampledSpectrum(kInf, kNaN, 1.0f, 2.0f));
+  a.add_lobe(lobe, lanes({kInf, kNaN, 1.0f, 2.0f}));
   ASSERT_EQ(closure.lobe_count(), 1);
-  EXPECT_EQ(closure.lobe(0).weight, SampledSpectrum(kLargest, 0.0f, 1.0f, 2.0f));
+  EXPECT_EQ(closure.lobe(0).weight, lanes({kLargest, 0.0f, 1.0f, 2.0f}));
   a.add_lobe(lobe, SampledSpectrum(kNaN));  // all NaN: weight 0, so no lobe
   EXPECT_EQ(closure.lobe_count(), 1);
   a.add_lobe(lobe, SampledSpectrum(0.5f));
@@ -109,21 +115,21 @@ TEST_F(NodeArgsBoundary, EmissionThatOverflowsWhenSummedIsLimited) {
   a.add_emission(SampledSpectrum(kLargest));  // two finite emissions whose sum overflows
   EXPECT_EQ(closure.emission(), SampledSpectrum(kLargest));
   EXPECT_EQ(tally.values, 1u);
-  a.add_emission(SampledSpectrum(kNaN, 0.0f, 0.0f, 0.0f));
-  EXPECT_EQ(closure.emission(), SampledSpectrum(0.0f, kLargest, kLargest, kLargest));
+  a.add_emission(lanes({kNaN, 0.0f, 0.0f, 0.0f}));
+  EXPECT_EQ(closure.emission(), lanes({0.0f, kLargest, kLargest, kLargest}));
   EXPECT_EQ(tally.values, 2u);
 }
 
 TEST_F(NodeArgsBoundary, WithoutATallyValuesAreStillMadeFinite) {
   ctx.nonfinite = nullptr;
   args().set_spectrum(0, SampledSpectrum(kInf));
-  EXPECT_EQ(at(8), SampledSpectrum(kLargest));
+  EXPECT_EQ(at(kOut0), SampledSpectrum(kLargest));
 }
 
 TEST_F(NodeArgsBoundary, ConstantFoldingKeepsTheValueToReportIt) {
   tally.keep_values = true;
   args().set_float(0, kInf);
-  EXPECT_EQ(frame[8], kInf);
+  EXPECT_EQ(frame[kOut0], kInf);
   EXPECT_EQ(tally.values, 1u);
 }
 

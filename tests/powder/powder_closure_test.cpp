@@ -13,6 +13,7 @@
 #include "materials/lobes/lobe_arena.h"
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_model.h"
+#include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -31,7 +32,7 @@ class Files : public ResourceResolver {
 };
 
 const SampledWavelengths& wavelengths() {
-  static const SampledWavelengths lambda = SampledWavelengths::fixed({450.0f, 550.0f, 650.0f, 700.0f});
+  static const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({450.0f, 550.0f, 650.0f, 700.0f}));
   return lambda;
 }
 

@@ -114,39 +114,45 @@ double albedo_by_quadrature(const PowderLobe& lobe, const Vec3& wo, const Sample
 }
 
 TEST(PowderSampling, SpectralMisEstimatesTheAlbedoOfEveryWavelength) {
-  // Four different wavelengths and albedos; the hero (lane 0) draws, the weights divide by the mean of the
-  // four mixtures' pdfs. Averaged over which lane is the hero (the renderer's wavelength sets are
+  // Different wavelengths and albedos in every lane; the hero (lane 0) draws, the weights divide by the mean
+  // of the lanes' mixture pdfs. Averaged over which lane is the hero (the renderer's wavelength sets are
   // rotations, so each lane is the hero equally often), every lane's albedo is estimated without bias.
+  constexpr int kLanes = kSpectrumSamples;
   PowderParams<float> p;
   p.kappa = 1.0f;
   p.surface_amplitude = 1e-4f;
   p.correlation_length = 0.6f;
-  const float lambdas[4] = {420.0f, 520.0f, 620.0f, 720.0f}, rhos[4] = {0.3f, 0.5f, 0.7f, 0.9f};
+  std::array<float, kLanes> lambdas, rhos;
+  for (int i = 0; i < kLanes; ++i) {
+    lambdas[i] = 420.0f + 300.0f * float(i) / (kLanes - 1);
+    rhos[i] = 0.3f + 0.6f * float(i) / (kLanes - 1);
+  }
   const Vec3 wo = direction(35.0f, 0.2f);
   std::mt19937_64 rng(8);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  std::array<double, 4> sum{}, sum2{};
-  const int per_rotation = 150000;
-  for (int rotation = 0; rotation < 4; ++rotation) {
+  std::array<double, kLanes> sum{}, sum2{};
+  const int per_rotation = 600000 / kLanes;
+  for (int rotation = 0; rotation < kLanes; ++rotation) {
     SampledSpectrum l, r;
-    for (int i = 0; i < 4; ++i) l[i] = lambdas[(i + rotation) % 4], r[i] = rhos[(i + rotation) % 4];
+    for (int i = 0; i < kLanes; ++i)
+      l[i] = lambdas[(i + rotation) % kLanes], r[i] = rhos[(i + rotation) % kLanes];
     const PowderLobe lobe = lobe_at(p, l, r);
     const SampledWavelengths lambda = SampledWavelengths::fixed(l);
     for (int s = 0; s < per_rotation; ++s) {
       const auto sample = lobe.sample(wo, u(rng), {u(rng), u(rng)}, lambda);
-      for (int i = 0; i < 4; ++i) {
+      for (int i = 0; i < kLanes; ++i) {
         const double w = sample ? sample->weight[i] : 0.0;
-        const int original = (i + rotation) % 4;
+        const int original = (i + rotation) % kLanes;
         sum[original] += w;
         sum2[original] += w * w;
       }
     }
   }
   SampledSpectrum l, r;
-  for (int i = 0; i < 4; ++i) l[i] = lambdas[i], r[i] = rhos[i];
+  for (int i = 0; i < kLanes; ++i) l[i] = lambdas[i], r[i] = rhos[i];
   const PowderLobe reference = lobe_at(p, l, r);
-  const int n = 4 * per_rotation;
-  for (int i = 0; i < 4; ++i) {
+  const int n = kLanes * per_rotation;
+  for (int i = 0; i < kLanes; ++i) {
     const double mean = sum[i] / n, se = std::sqrt(std::max(0.0, sum2[i] / n - mean * mean) / n);
     const double exact = albedo_by_quadrature(reference, wo, SampledWavelengths::fixed(l), i);
     EXPECT_NEAR(mean, exact, 4.0 * se + 2e-4 * exact) << "lane " << i << " (" << lambdas[i] << " nm)";

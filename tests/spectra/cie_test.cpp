@@ -10,6 +10,9 @@
 
 #include "spectra/constant_spectrum.h"
 #include "spectra/embedded_tables.h"
+#include "support/spectrum_lanes.h"
+
+using ochre::test::lanes;
 
 namespace ochre {
 namespace {
@@ -68,12 +71,12 @@ TEST(Cie, IlluminantA) {
 }
 
 TEST(Cie, SampledToXyzWithFixedWavelengthsIsTheWeightedMean) {
-  const auto w = SampledWavelengths::fixed({450.0f, 500.0f, 550.0f, 600.0f});
-  const SampledSpectrum L(1.0f, 2.0f, 3.0f, 4.0f);
+  const auto w = SampledWavelengths::fixed(lanes({450.0f, 500.0f, 550.0f, 600.0f}));
+  const SampledSpectrum L = lanes({1.0f, 2.0f, 3.0f, 4.0f});
   const XYZ xyz = sampled_to_xyz(L, w);
   float y = 0.0f;
-  for (int i = 0; i < 4; ++i) y += L[i] * cie_y(w[i]);
-  EXPECT_NEAR(xyz.y, y / 4.0f / kCieYIntegral, 1e-7f);
+  for (int i = 0; i < kSpectrumSamples; ++i) y += L[i] * cie_y(w[i]);
+  EXPECT_NEAR(xyz.y, y / kSpectrumSamples / kCieYIntegral, 1e-7f);
 }
 
 // Mean of sampled_to_xyz over n paths with wavelengths from `sampler`.

@@ -10,6 +10,10 @@
 #include <random>
 #include <vector>
 
+#include "support/spectrum_lanes.h"
+
+using ochre::test::lanes;
+
 namespace ochre {
 namespace {
 
@@ -72,31 +76,31 @@ TEST(SampledWavelengths, HistogramFollowsPdf) {
   }
 }
 
-TEST(SampledWavelengths, HeroRotationStratifiesTheFourLanes) {
+TEST(SampledWavelengths, HeroRotationStratifiesTheLanes) {
+  std::vector<float> every_stratum;
+  for (int i = 0; i < kSpectrumSamples; ++i) every_stratum.push_back(float(i));
   for (float u : {0.0f, 0.13f, 0.5f, 0.99f}) {
     const auto w = SampledWavelengths::sample_visible(u);
-    std::vector<float> quarters;
+    std::vector<float> strata;
     for (int i = 0; i < kSpectrumSamples; ++i) {
-      const float ui = std::fmod(u + i * 0.25f, 1.0f);
-      EXPECT_FLOAT_EQ(w[i], sample_visible_wavelength(ui));
+      const float ui = std::fmod(u + float(i) / kSpectrumSamples, 1.0f);
+      EXPECT_NEAR(w[i], sample_visible_wavelength(ui), 1e-3f);
       EXPECT_NEAR(w.pdf()[i], visible_wavelength_pdf(w[i]), 2e-6f * w.pdf()[i]);
-      quarters.push_back(std::floor(ui * 4.0f));
+      strata.push_back(std::floor(ui * kSpectrumSamples));
     }
-    std::sort(quarters.begin(), quarters.end());
-    EXPECT_EQ(quarters, (std::vector<float>{0, 1, 2, 3})) << "one lane per quarter of the CDF, u = " << u;
+    std::sort(strata.begin(), strata.end());
+    EXPECT_EQ(strata, every_stratum) << "one lane per 1/" << kSpectrumSamples << " of the CDF, u = " << u;
   }
 }
 
 TEST(SampledWavelengths, UniformSampling) {
   const auto w = SampledWavelengths::sample_uniform(0.1f);
-  const float expected[4] = {360.0f + 0.1f * 470.0f, 360.0f + 0.35f * 470.0f, 360.0f + 0.6f * 470.0f,
-                             360.0f + 0.85f * 470.0f};
-  for (int i = 0; i < 4; ++i) {
-    EXPECT_NEAR(w[i], expected[i], 1e-3);
+  for (int i = 0; i < kSpectrumSamples; ++i) {  // 0.1 + i / kSpectrumSamples of the range, below 1
+    EXPECT_NEAR(w[i], 360.0f + (0.1f + float(i) / kSpectrumSamples) * 470.0f, 1e-3);
     EXPECT_FLOAT_EQ(w.pdf()[i], 1.0f / 470.0f);
   }
   const auto narrow = SampledWavelengths::sample_uniform(0.9f, 400.0f, 700.0f);
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < kSpectrumSamples; ++i) {
     EXPECT_GE(narrow[i], 400.0f);
     EXPECT_LE(narrow[i], 700.0f);
     EXPECT_FLOAT_EQ(narrow.pdf()[i], 1.0f / 300.0f);
@@ -104,8 +108,8 @@ TEST(SampledWavelengths, UniformSampling) {
 }
 
 TEST(SampledWavelengths, FixedHasUnitPdf) {
-  const auto w = SampledWavelengths::fixed({450.0f, 500.0f, 550.0f, 600.0f});
-  EXPECT_EQ(w.lambda(), SampledSpectrum(450.0f, 500.0f, 550.0f, 600.0f));
+  const auto w = SampledWavelengths::fixed(lanes({450.0f, 500.0f, 550.0f, 600.0f}));
+  EXPECT_EQ(w.lambda(), lanes({450.0f, 500.0f, 550.0f, 600.0f}));
   EXPECT_EQ(w.pdf(), SampledSpectrum(1.0f));
   EXPECT_FALSE(w.secondary_terminated());
 }
@@ -115,10 +119,10 @@ TEST(SampledWavelengths, TerminateSecondaryKeepsTheHeroUnbiased) {
   const float hero_pdf = w.pdf()[0];
   w.terminate_secondary();
   EXPECT_TRUE(w.secondary_terminated());
-  EXPECT_FLOAT_EQ(w.pdf()[0], hero_pdf / 4.0f);
+  EXPECT_FLOAT_EQ(w.pdf()[0], hero_pdf / kSpectrumSamples);
   for (int i = 1; i < kSpectrumSamples; ++i) EXPECT_EQ(w.pdf()[i], 0.0f);
   w.terminate_secondary();  // idempotent
-  EXPECT_FLOAT_EQ(w.pdf()[0], hero_pdf / 4.0f);
+  EXPECT_FLOAT_EQ(w.pdf()[0], hero_pdf / kSpectrumSamples);
 }
 
 }  // namespace

@@ -15,7 +15,10 @@
 #include "spectra/constant_spectrum.h"
 #include "spectra/product_spectrum.h"
 #include "spectra/scaled_spectrum.h"
+#include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
+
+using ochre::test::lanes;
 
 namespace ochre {
 namespace {
@@ -41,8 +44,8 @@ TEST(TabulatedSpectrum, InterpolatesLinearlyAndClampsOutside) {
   EXPECT_FLOAT_EQ(s.eval(830.0f), 0.4f);
   EXPECT_FLOAT_EQ(s.max_value(), 0.6f);
   EXPECT_FALSE(s.is_constant());
-  const auto sampled = s.sample(SampledWavelengths::fixed({380.0f, 450.0f, 600.0f, 800.0f}));
-  EXPECT_EQ(sampled, SampledSpectrum(0.2f, s.eval(450.0f), s.eval(600.0f), 0.4f));
+  const auto sampled = s.sample(SampledWavelengths::fixed(lanes({380.0f, 450.0f, 600.0f, 800.0f})));
+  EXPECT_EQ(sampled, lanes({0.2f, s.eval(450.0f), s.eval(600.0f), 0.4f}));
 }
 
 // Wavelengths just outside a table's ends: the nearest floats below the first and above the last.
@@ -72,8 +75,8 @@ TEST(TabulatedSpectrum, ClampHoldsTheEndValuesOutsideTheTable) {
   for (const auto& l : kTableWavelengths) {
     const TabulatedSpectrum s(l, kTableValues, TableExtrapolation::kClamp);
     expect_ends_and_outside(s, 0.2f, 0.4f);
-    EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
-              SampledSpectrum(0.2f, 0.2f, 0.4f, 0.4f));
+    EXPECT_EQ(s.sample(SampledWavelengths::fixed(lanes({360.0f, 400.0f, 700.0f, 830.0f}))),
+              lanes({0.2f, 0.2f, 0.4f, 0.4f}));
   }
   // The default is clamp, as before the choice existed.
   EXPECT_EQ(TabulatedSpectrum({400.0f, 700.0f}, {0.2f, 0.4f}).eval(800.0f), 0.4f);
@@ -86,8 +89,8 @@ TEST(TabulatedSpectrum, ZeroVanishesOutsideTheTableOnly) {
     // Just inside, the table's interpolation, as with clamp.
     EXPECT_EQ(s.eval(just_above(400.0f)), TabulatedSpectrum(l, kTableValues).eval(just_above(400.0f)));
     EXPECT_EQ(s.eval(just_below(700.0f)), TabulatedSpectrum(l, kTableValues).eval(just_below(700.0f)));
-    EXPECT_EQ(s.sample(SampledWavelengths::fixed({360.0f, 400.0f, 700.0f, 830.0f})),
-              SampledSpectrum(0.0f, 0.2f, 0.4f, 0.0f));
+    EXPECT_EQ(s.sample(SampledWavelengths::fixed(lanes({360.0f, 400.0f, 700.0f, 830.0f}))),
+              lanes({0.0f, 0.2f, 0.4f, 0.0f}));
   }
 }
 
@@ -200,7 +203,7 @@ TEST(SimpleSpectra, ConstantScaledProduct) {
   const ProductSpectrum product(t, c);
   EXPECT_FLOAT_EQ(product.eval(700.0f), 1.0f);
   EXPECT_FLOAT_EQ(product.max_value(), 1.0f);
-  const auto w = SampledWavelengths::fixed({400.0f, 500.0f, 600.0f, 700.0f});
+  const auto w = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
   EXPECT_EQ(product.sample(w), t->sample(w) * 0.25f);
 
   EXPECT_THROW(ScaledSpectrum(nullptr, 1.0f), std::invalid_argument);

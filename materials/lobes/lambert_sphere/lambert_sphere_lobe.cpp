@@ -28,7 +28,7 @@ SampledSpectrum LambertSphereLobe::eval(const Vec3& wo, const Vec3& wi, const Sa
     for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_exact(exact_[k], g);
     return f;
   }
-  // The direction-dependent parts once for the 4 wavelengths.
+  // The direction-dependent parts once for all the wavelengths.
   const LambertSphereGeometry<float> g = lambert_sphere_geometry(mu_i, mu_o, wi_dot_wo);
   if (variant_ == LambertSphereVariant::kFast) {
     const float factor = lambert_sphere_fast_factor(mu_i, mu_o, wi_dot_wo);

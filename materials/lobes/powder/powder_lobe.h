@@ -8,7 +8,7 @@
 //   (c) the Harvey-Shack lobe: wi_xy = -wo_xy + lambda F with F normal, variance 1 / (2 pi^2 l_c^2) per axis,
 // chosen with probabilities from the lobe's energy estimates. Each wavelength has its own mixture (the
 // cone's width scales with lambda, the surface lobe's too); sample() draws from the hero wavelength's and
-// pdf() is the mean of the four wavelengths' mixture pdfs, which weights the wavelengths by the balance
+// pdf() is the mean of the path's wavelengths' mixture pdfs, which weights the wavelengths by the balance
 // heuristic (hero-wavelength spectral MIS, Wilkie et al. 2014) and is what MIS with light sampling sees.
 // An ideal depolarizer.
 

@@ -1,6 +1,7 @@
 #include "materials/lobes/vgroove/groove_frame.h"
 
 #include <cmath>
+#include <utility>
 
 namespace ochre {
 
@@ -10,9 +11,15 @@ GrooveFrame::GrooveFrame(const Vec3& axis) {
   across_ = {-axis_.y, axis_.x, 0.0};
 }
 
+namespace {
+template <size_t... I>
+GrooveResponses responses_per_lane(ChainModel model, const FacetSpectrum& facet, std::index_sequence<I...>) {
+  return {ChainResponse(model, facet.at(I))...};
+}
+}  // namespace
+
 GrooveResponses groove_responses(ChainModel model, const FacetSpectrum& facet) {
-  return {ChainResponse(model, facet.at(0)), ChainResponse(model, facet.at(1)),
-          ChainResponse(model, facet.at(2)), ChainResponse(model, facet.at(3))};
+  return responses_per_lane(model, facet, std::make_index_sequence<kSpectrumSamples>());
 }
 
 LobeSample groove_sample(const GrooveFrame& frame, const Vec3d& exit, const ChainFrames& chain,
