@@ -51,6 +51,16 @@ class Metrics(unittest.TestCase):
         self.assertAlmostEqual(rb.figure_of_merit(lifted, floor), 0.5, places=9)
         self.assertGreater(rb.figure_of_merit(lifted), 0.5)
 
+    def test_relmse_at_reads_the_log_log_fit(self):
+        rows = [dict(spp=s, seconds=0.1 * s, relmse=0.02 * (0.1 * s) ** -1.2) for s in (8, 32, 128)]  # 0.8-12.8 s
+        value, extrapolated = rb.relmse_at(rows, 1.0)
+        self.assertAlmostEqual(value, 0.02, places=12)
+        self.assertFalse(extrapolated)
+        value, extrapolated = rb.relmse_at(rows, 40.0)  # beyond the sweep, within 4x: extrapolated along the fit
+        self.assertAlmostEqual(value, 0.02 * 40.0 ** -1.2, places=12)
+        self.assertTrue(extrapolated)
+        self.assertEqual(rb.relmse_at(rows, 0.1), (None, True))  # 8x below the shortest render
+
     def test_monte_carlo_images_give_sigma_squared_times_seconds_per_sample(self):
         rng = np.random.default_rng(7)
         truth = rng.uniform(0.2, 2.0, (64, 64, 3))

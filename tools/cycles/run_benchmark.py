@@ -13,6 +13,9 @@ fixed, so the image is the same). Render seconds exclude scene loading and BVH b
 Cycles' 'Render time (without synchronization)', ochre-converge's in-process render timer.
 relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over pixels and R, G, B; C = relMSE x seconds, the
 geometric mean over the swept spp (lower is better: relMSE ~ C / t), also with the floor subtracted.
+relMSE at 1 s and at 10 s are read off the least-squares line through (log seconds, log relMSE) of the
+sweep, marked * where that time lies outside the swept render times ('-' beyond 4x).
+--summarise rewrites summary.md from OUT/results.csv and the reference halves in OUT/exr without rendering.
 The luminance relMSE (Rec.709 Y, same epsilon) at --colour-spp shows how much of the error is colour noise.
 
 An ochre variant NAME:key=value,... sets keys of the scene's "integrator" block (rr_depth, max_depth,
@@ -51,8 +54,24 @@ def figure_of_merit(rows, floor=0.0):
     return math.exp(np.mean([math.log(max(r['relmse'] - floor, 1e-12) * r['seconds']) for r in rows]))
 
 
+def loglog_fit(rows):
+    """Least-squares line through (log seconds, log relMSE): (slope, intercept)."""
+    slope, intercept = np.polyfit([math.log(r['seconds']) for r in rows], [math.log(r['relmse']) for r in rows], 1)
+    return float(slope), float(intercept)
+
+
 def loglog_slope(rows):
-    return float(np.polyfit([math.log(r['seconds']) for r in rows], [math.log(r['relmse']) for r in rows], 1)[0])
+    return loglog_fit(rows)[0]
+
+
+def relmse_at(rows, seconds):
+    """(relMSE after `seconds` of rendering read off the log-log fit, extrapolated?); (None, True) when
+    `seconds` lies more than a factor 4 outside the swept render times."""
+    times = [r['seconds'] for r in rows]
+    if seconds < min(times) / 4 or seconds > max(times) * 4:
+        return None, True
+    slope, intercept = loglog_fit(rows)
+    return math.exp(intercept + slope * math.log(seconds)), not min(times) <= seconds <= max(times)
 
 
 def read_exr(path):  # -> float64 array (height, width, 3): R, G, B
@@ -140,14 +159,16 @@ def variant_scene(args, spec):
     return name, path, os.path.abspath(ochre_bin)
 
 
+def reference_halves(args, tag):
+    return [os.path.join(args.out, 'exr', f'ref_{tag}_{args.ref_spp // 2}spp_seed{seed}.exr') for seed in (1001, 1002)]
+
+
 def reference(args, r, tag):
-    halves = []
-    for seed in (1001, 1002):
-        exr = os.path.join(args.out, 'exr', f'ref_{tag}_{args.ref_spp // 2}spp_seed{seed}.exr')
+    halves = reference_halves(args, tag)
+    for seed, exr in zip((1001, 1002), halves):
         if not (args.reuse_ref and os.path.exists(exr)):
             print(f'{tag}: reference half, {args.ref_spp // 2} spp, seed {seed}', flush=True)
             r.render(args.ref_spp // 2, seed, exr)
-        halves.append(exr)
     a, b = (read_exr(h) for h in halves)
     ref_exr = os.path.join(args.out, 'exr', f'ref_{tag}.exr')
     subprocess.run(['oiiotool', halves[0], '--ch', 'R,G,B', halves[1], '--ch', 'R,G,B', '--add', '--mulc', '0.5',
@@ -155,11 +176,56 @@ def reference(args, r, tag):
     return 0.5 * (a + b), reference_floor(a, b), ref_exr
 
 
-def summarise(label, spps_rows, floor, pixels, colour):
+def summarise(label, spps_rows, floor, pixels, colour_spp):
     rows = sorted(spps_rows, key=lambda r: r['spp'])
+    at = next(r for r in rows if r['spp'] == colour_spp)
     return dict(label=label, C=figure_of_merit(rows), C_minus_floor=figure_of_merit(rows, floor),
-                floor=floor, slope=loglog_slope(rows), samples_per_s=pixels * rows[-1]['spp'] / rows[-1]['seconds'],
-                **colour)
+                floor=floor, slope=loglog_slope(rows), at_1s=relmse_at(rows, 1.0), at_10s=relmse_at(rows, 10.0),
+                samples_per_s=pixels * rows[-1]['spp'] / rows[-1]['seconds'],
+                rgb_over_luminance=at['relmse'] / at['luminance_relmse'])
+
+
+def summarise_results(args):
+    """The summaries of an earlier run, from OUT/results.csv and its reference halves."""
+    rows = [dict(r, spp=int(r['spp']), seconds=float(r['seconds']), relmse=float(r['relmse']),
+                 luminance_relmse=float(r['luminance_relmse']))
+            for r in csv.DictReader(open(os.path.join(args.out, 'results.csv')))]
+    summaries = []
+    for renderer in ('cycles', 'ochre'):
+        mine = [r for r in rows if r['renderer'] == renderer]
+        if not mine:
+            continue
+        a, b = (read_exr(h) for h in reference_halves(args, renderer))
+        for variant in dict.fromkeys(r['variant'] for r in mine):
+            label = 'Cycles' if renderer == 'cycles' else f'ochre {variant}'
+            summaries.append(summarise(label, [r for r in mine if r['variant'] == variant], reference_floor(a, b),
+                                       a.shape[0] * a.shape[1], args.colour_spp))
+    return summaries
+
+
+def summary_table(args, summaries):
+    base = next((s['C'] for s in summaries if s['label'] == 'Cycles'), None)
+    lines = [f'scene `{os.path.relpath(args.scene, ROOT)}`, spp {args.spps}, {args.threads} threads, '
+             f'references {args.ref_spp} spp, best of {args.repeat}',
+             '', '| renderer | C = relMSE x s | C, reference floor subtracted | C / C(Cycles) | samples/s '
+             f'| relMSE at 1 s | relMSE at 10 s | log-log slope | RGB / luminance relMSE at {args.colour_spp} spp |',
+             '|---|---|---|---|---|---|---|---|---|']
+
+    def at(fit):
+        value, extrapolated = fit
+        return '-' if value is None else f"{value:.3g}{'*' if extrapolated else ''}"
+    for s in summaries:
+        ratio = f"{s['C'] / base:.2f}" if base else '-'
+        lines.append(f"| {s['label']} | {s['C']:.4g} | {s['C_minus_floor']:.4g} | {ratio} | "
+                     f"{s['samples_per_s'] / 1e6:.3f} M | {at(s['at_1s'])} | {at(s['at_10s'])} | {s['slope']:.2f} | "
+                     f"{s['rgb_over_luminance']:.3f} |")
+    return '\n'.join(lines) + '\n'
+
+
+def write_summary(args, summaries):
+    table = summary_table(args, summaries)
+    open(os.path.join(args.out, 'summary.md'), 'w').write(table)
+    print(table, end='')
 
 
 def main():
@@ -176,9 +242,13 @@ def main():
     ap.add_argument('--blender', default='blender')
     ap.add_argument('--ochre-bin', default=os.path.join(ROOT, 'build/bin'))
     ap.add_argument('--lock', default='', help='run every render under flock LOCK')
+    ap.add_argument('--summarise', action='store_true',
+                    help='only rewrite OUT/summary.md from OUT/results.csv and the reference halves')
     ap.add_argument('--out', required=True)
     args = ap.parse_args()
     args.scene = os.path.abspath(args.scene)
+    if args.summarise:
+        return write_summary(args, summarise_results(args))
     for d in ('exr', 'scenes'):
         os.makedirs(os.path.join(args.out, d), exist_ok=True)
     spps = [int(x) for x in args.spps.split(',')]
@@ -196,9 +266,7 @@ def main():
             rows.append(dict(renderer='cycles', variant='cycles', spp=spp, seconds=seconds, relmse=relmse(x, ref),
                              luminance_relmse=luminance_relmse(x, ref)))
             print(f"cycles spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
-        at = next(r for r in rows if r['spp'] == args.colour_spp)
-        summaries.append(summarise('Cycles', rows, floor, ref.shape[0] * ref.shape[1],
-                                   dict(rgb_over_luminance=at['relmse'] / at['luminance_relmse'])))
+        summaries.append(summarise('Cycles', rows, floor, ref.shape[0] * ref.shape[1], args.colour_spp))
         results += rows
     if 'ochre' in renderers:
         variants = [variant_scene(args, v) for v in (args.variant or ['ochre'])]
@@ -214,26 +282,14 @@ def main():
                 rows.append(dict(renderer='ochre', variant=label, spp=spp, seconds=seconds, relmse=relmse(x, ref),
                                  luminance_relmse=luminance_relmse(x, ref)))
                 print(f"ochre {label} spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
-            at = next(r for r in rows if r['spp'] == args.colour_spp)
-            summaries.append(summarise(f'ochre {label}', rows, floor, ref.shape[0] * ref.shape[1],
-                                       dict(rgb_over_luminance=at['relmse'] / at['luminance_relmse'])))
+            summaries.append(summarise(f'ochre {label}', rows, floor, ref.shape[0] * ref.shape[1], args.colour_spp))
             results += rows
 
     with open(os.path.join(args.out, 'results.csv'), 'w', newline='') as f:
         w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
         w.writeheader()
         w.writerows(results)
-    base = next((s['C'] for s in summaries if s['label'] == 'Cycles'), None)
-    lines = [f'scene `{os.path.relpath(args.scene, ROOT)}`, spp {args.spps}, {args.threads} threads, '
-             f'references {args.ref_spp} spp, best of {args.repeat}',
-             '', '| renderer | C = relMSE x s | C, reference floor subtracted | C / C(Cycles) | samples/s '
-             f'| log-log slope | RGB / luminance relMSE at {args.colour_spp} spp |', '|---|---|---|---|---|---|---|']
-    for s in summaries:
-        ratio = f"{s['C'] / base:.2f}" if base else '-'
-        lines.append(f"| {s['label']} | {s['C']:.4g} | {s['C_minus_floor']:.4g} | {ratio} | "
-                     f"{s['samples_per_s'] / 1e6:.3f} M | {s['slope']:.2f} | {s['rgb_over_luminance']:.3f} |")
-    open(os.path.join(args.out, 'summary.md'), 'w').write('\n'.join(lines) + '\n')
-    print('\n'.join(lines))
+    write_summary(args, summaries)
 
 
 if __name__ == '__main__':
