@@ -2,10 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace ochre {
 
 namespace {
+
+// 1 / z. In double precision as conj(z) / |z|^2: the library's complex division guards against overflow
+// with a slow out-of-line routine (a tenth of the time of a V-groove render, whose reflection chains run in
+// double), which double does not need here: |z| stays within 1e-40..1e80 for any finite float input. In
+// float, |z|^2 would overflow for the largest indices, so the library's division stays.
+template <class T>
+std::complex<T> reciprocal(std::complex<T> z) {
+  if constexpr (std::is_same_v<T, double>) return std::conj(z) * (1.0 / std::norm(z));
+  return T(1) / z;
+}
+
+// The principal square root. In double precision with |z| as sqrt(x^2 + y^2): the library's csqrt calls
+// hypot, whose guard against overflow costs as much again and is not needed for these arguments.
+template <class T>
+std::complex<T> principal_sqrt(std::complex<T> z) {
+  if constexpr (!std::is_same_v<T, double>) return std::sqrt(z);
+  const T x = z.real(), y = z.imag();
+  if (x == T(0) && y == T(0)) return {T(0), y};
+  const T t = std::sqrt((std::sqrt(x * x + y * y) + std::fabs(x)) / T(2));
+  if (x >= T(0)) return {t, y / (T(2) * t)};
+  return {std::fabs(y) / (T(2) * t), std::copysign(t, y)};
+}
 
 // The transmitted cosine on the decaying branch Im(cos_t) <= 0 (see fresnel.h). The principal square
 // root already lies there for eta = n - i k with k > 0; for a real eta under total internal reflection
@@ -13,8 +36,8 @@ namespace {
 // imaginary part is set explicitly.
 template <class T>
 std::complex<T> transmitted_cosine(T cos_i, std::complex<T> eta) {
-  const std::complex<T> cos_t_sq = T(1) - (T(1) - cos_i * cos_i) / (eta * eta);
-  const std::complex<T> root = std::sqrt(cos_t_sq);
+  const std::complex<T> cos_t_sq = T(1) - (T(1) - cos_i * cos_i) * reciprocal(eta * eta);
+  const std::complex<T> root = principal_sqrt(cos_t_sq);
   return {root.real(), -std::abs(root.imag())};
 }
 
@@ -22,7 +45,7 @@ std::complex<T> transmitted_cosine(T cos_i, std::complex<T> eta) {
 template <class T>
 FresnelAmplitudes<T> amplitudes(T cos_i, std::complex<T> eta, bool real_index) {
   FresnelAmplitudes<T> a;
-  a.eta = std::abs(eta);
+  a.eta = std::is_same_v<T, double> ? std::sqrt(std::norm(eta)) : std::abs(eta);  // as principal_sqrt
   cos_i = std::clamp(cos_i, T(0), T(1));
   if (eta == std::complex<T>(1)) {  // no interface: the formulas are 0/0 at grazing incidence
     a.r_s = a.r_p = 0;
@@ -43,14 +66,16 @@ FresnelAmplitudes<T> amplitudes(T cos_i, std::complex<T> eta, bool real_index) {
     return a;
   }
   a.cos_t = transmitted_cosine(cos_i, eta);
-  a.r_s = (cos_i - eta * a.cos_t) / (cos_i + eta * a.cos_t);
-  a.r_p = (eta * cos_i - a.cos_t) / (eta * cos_i + a.cos_t);
+  const std::complex<T> inv_den_s = reciprocal(cos_i + eta * a.cos_t),
+                        inv_den_p = reciprocal(eta * cos_i + a.cos_t);
+  a.r_s = (cos_i - eta * a.cos_t) * inv_den_s;
+  a.r_p = (eta * cos_i - a.cos_t) * inv_den_p;
   a.total_internal_reflection = real_index && (T(1) - cos_i * cos_i) > eta.real() * eta.real();
   if (a.total_internal_reflection) {
     a.t_s = a.t_p = 0;  // an evanescent wave only: it carries no power across
   } else {
-    a.t_s = T(2) * cos_i / (cos_i + eta * a.cos_t);
-    a.t_p = T(2) * cos_i / (eta * cos_i + a.cos_t);
+    a.t_s = T(2) * cos_i * inv_den_s;
+    a.t_p = T(2) * cos_i * inv_den_p;
   }
   return a;
 }
