@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "renderer/coordinate_limit.h"
 #include "renderer/input_error.h"
 
 namespace ochre {
@@ -84,6 +85,11 @@ void Mesh::validate(const std::string& where) const {
     }
   }
   check_attribute(positions, positions.size(), "position", where);
+  for (size_t i = 0; i < positions.size(); ++i) {
+    if (!within_scene_limit(positions[i]))
+      throw InputError(fmt::format(
+          "{}: position of vertex {} lies beyond +-1e15, the largest coordinate ochre traces", where, i));
+  }
   check_attribute(normals, positions.size(), "normal", where);
   check_attribute(uvs, positions.size(), "uv", where);
   check_attribute(colours, positions.size(), "colour", where);

@@ -13,6 +13,7 @@
 #include "materials/graph/resource_resolver.h"
 #include "renderer/camera_sensor.h"
 #include "renderer/control_mesh.h"
+#include "renderer/coordinate_limit.h"
 #include "renderer/displacement.h"
 #include "renderer/groove_shapes.h"
 #include "renderer/input_error.h"
@@ -211,7 +212,7 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   const std::string type = f.string("type", "perspective");
   const auto fov = static_cast<float>(
       fov_across_shorter_axis(f.number("fov", 40.0, 0.0, 179.0, true), parse_fov_axis(f), s.width, s.height));
-  const auto size = static_cast<float>(f.number("size", 2.0, 0.0, 1e30, true));
+  const auto size = static_cast<float>(f.number("size", 2.0, 0.0, kMaxSceneCoordinate, true));
   CameraBasis basis;
   if (f.has("transform") && (f.has("eye") || f.has("target") || f.has("up")))
     f.fail("transform", "give either \"transform\" or \"eye\", \"target\", \"up\", not both");
@@ -219,6 +220,8 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
     const Transform t = parse_transform(f.require("transform"), f.child("transform"));
     basis.eye = t.point({0, 0, 0});
+    if (!within_scene_limit(basis.eye))
+      f.fail("transform", "places the camera beyond +-1e15, the largest coordinate ochre traces");
     basis.forward = normalize(t.vector({0, 0, -1}));
     basis.up = normalize(t.vector({0, 1, 0}));
     basis.right = normalize(cross(basis.forward, basis.up));
@@ -226,6 +229,7 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   } else {
     const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
                up = f.vec3("up", {0, 1, 0});
+    if (!within_scene_limit(eye)) f.fail("eye", "lies beyond +-1e15, the largest coordinate ochre traces");
     if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
     if (!std::isfinite(length(target - eye)))
       f.fail("target", "is too far from eye (the distance overflows single precision)");

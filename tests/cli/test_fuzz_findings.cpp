@@ -137,5 +137,34 @@ TEST(FuzzFindings, MeshOptionsMustBeBooleans) {
   }
 }
 
+// A camera 9.2e18 units from the origin (fuzz_scene) made Embree abort on an invalid ray: its ray origins
+// must stay within 1.8e18. Camera positions, orthographic sizes and vertices are held within +-1e15.
+TEST(FuzzFindings, CoordinatesBeyondTheTracedRangeAreRejected) {
+  const auto scene = [](const std::string& camera, const std::string& vertex) {
+    return fmt::format(R"({{"camera": {}, "film": {{"resolution": [4, 4]}}, "integrator": {{"spp": 1}},
+      "materials": {{"m": {{"type": "lambert"}}}},
+      "shapes": [{{"type": "mesh", "file": "tri.obj", "material": "m"}}]}})",
+                       camera, vertex);
+  };
+  const auto tri = [](const std::string& x) { return "v 0 0 0\nv " + x + " 0 0\nv 0 1 0\nf 1 2 3\n"; };
+  const std::string ok_camera = R"({"eye": [0, 0, 5]})";
+  expect_rejected(
+      render_scene(scene(R"({"eye": [9223372036854775807, 1.45, 3.6], "target": [0, 1.4, 0]})", ""),
+                   {{"tri.obj", tri("1")}}),
+      {"scene.json", "camera.eye", "beyond +-1e15"});
+  expect_rejected(
+      render_scene(scene(R"({"transform": [{"translate": [0, -2e15, 0]}]})", ""), {{"tri.obj", tri("1")}}),
+      {"scene.json", "camera.transform", "beyond +-1e15"});
+  expect_rejected(render_scene(scene(R"({"type": "orthographic", "size": 1e20, "eye": [0, 0, 5]})", ""),
+                               {{"tri.obj", tri("1")}}),
+                  {"scene.json", "camera.size"});
+  expect_rejected(render_scene(scene(ok_camera, ""), {{"tri.obj", tri("3e15")}}),
+                  {"tri.obj", "position of vertex 1 lies beyond +-1e15"});
+  // At the limit: rendered.
+  const Rejection at_limit =
+      render_scene(scene(R"({"eye": [1e15, 0, 5], "target": [0, 0, 0]})", ""), {{"tri.obj", tri("1e15")}});
+  EXPECT_EQ(at_limit.result.exit_code, 0) << at_limit.result.output;
+}
+
 }  // namespace
 }  // namespace ochre::test
