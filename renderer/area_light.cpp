@@ -73,7 +73,7 @@ SampledSpectrum AreaLight::emitted(const SurfacePoint& sp, const Vec3& to_viewer
 }
 
 SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const {
-  thread_local LobeArena arena(4096);
+  thread_local LobeArena arena;  // the default size holds kMaxLobes of the largest lobe
   arena.reset();
   Closure closure;
   material_.evaluate(shading_context(sp, lambda, textures_), arena, closure);

@@ -1,8 +1,8 @@
 // AreaLight: one-sided emission, and the per-thread reuse of a uniform material's emission for the
 // wavelengths it was evaluated at (it must always equal a fresh evaluation of the material).
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
-
 
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
@@ -20,7 +20,7 @@ std::shared_ptr<const CompiledMaterial> material(const char* json) {
 
 SampledSpectrum fresh_emission(const CompiledMaterial& m, const SurfacePoint& sp,
                                const SampledWavelengths& l) {
-  LobeArena arena(4096);
+  LobeArena arena;
   Closure closure;
   m.evaluate(shading_context(sp, l, nullptr), arena, closure);
   return closure.emission();
@@ -58,6 +58,32 @@ TEST(AreaLight, EmissionIsOneSided) {
   const SampledWavelengths l = SampledWavelengths::sample_visible(0.4f);
   EXPECT_GT(light.emitted(sp, sp.ng, l)[0], 0.0f);
   EXPECT_EQ(light.emitted(sp, -sp.ng, l), SampledSpectrum(0.0f));
+}
+
+// An emitter whose material also has the most lobes a closure holds, each of the largest kind (Lambert
+// sphere: per-wavelength constants): its emission is evaluated with room for all of them. With eight
+// wavelengths per path these lobes outgrew the 4 KB the light once reserved (an internal error).
+TEST(AreaLight, EmitterWithTheMostAndLargestLobesIsEvaluated) {
+  std::string nodes, sum = "l0";
+  for (int i = 0; i < Closure::kMaxLobes; ++i)
+    nodes += fmt::format(R"("l{}": {{"type": "lambert_sphere"}}, )", i);
+  for (int i = 1; i < Closure::kMaxLobes; ++i) {
+    nodes += fmt::format(R"("a{}": {{"type": "add", "a": {{"link": "{}"}}, "b": {{"link": "l{}"}}}}, )", i,
+                         sum, i);
+    sum = fmt::format("a{}", i);
+  }
+  const std::string json = fmt::format(
+      R"({{"nodes": {{{}"e": {{"type": "emission", "strength": 2}}, "out": {{"type": "add", "a": {{"link": "{}"}},
+      "b": {{"link": "e"}}}}}}, "output": "out"}})",
+      nodes, sum);
+  const auto m = material(json.c_str());
+  const Mesh plane = make_plane({1, 1});
+  const AreaLight light(plane, *m, nullptr);
+  const SurfacePoint sp = surface_point(plane, 0, 0.2f, 0.3f);
+  const SampledWavelengths l = SampledWavelengths::sample_visible(0.3f);
+  const SampledSpectrum e = light.emitted(sp, sp.ng, l);
+  EXPECT_EQ(e, fresh_emission(*m, sp, l));
+  EXPECT_GT(e[0], 0.0f);
 }
 
 }  // namespace
