@@ -9,10 +9,10 @@
 namespace ochre {
 
 // Wavelengths per path. Eight rather than four: the geometry of a path (its rays, shading frames, light
-// choices) is shared by all lanes, so four more wavelengths cost 3-20 % more time per sample on the
-// benchmark scenes but cut colour noise (relMSE x time 12 % lower on the Cornell box, 17 % on the textured
-// rock, 1.7-4x on spectrally sharp polarized scenes; docs/performance.md, "g. Eight wavelengths per path").
-// Eight floats are one AVX register, two SSE ones; 16 lanes measured slower per unit of error.
+// choices) is shared by all lanes, so four more wavelengths cost 6-30 % more time per sample but cut colour
+// noise (relMSE x time 11 % lower on the Cornell box benchmark, 25 % on the textured rock, 1.2-4x on
+// spectrally sharp polarized scenes; docs/performance.md, lever g). Eight floats are one AVX register, two
+// SSE ones; 16 lanes measured slower per unit of error.
 inline constexpr int kSpectrumSamples = 8;
 
 class SampledSpectrum {
