@@ -5,6 +5,7 @@
 // are refused at load with the item and parameter named.
 
 #include <cmath>
+#include <string>
 
 #include "materials/core/vec3.h"
 
@@ -15,6 +16,11 @@ inline constexpr float kMaxSceneCoordinate = 1e15f;
 inline bool within_scene_limit(const Vec3& p) {
   return std::fabs(p.x) <= kMaxSceneCoordinate && std::fabs(p.y) <= kMaxSceneCoordinate &&
          std::fabs(p.z) <= kMaxSceneCoordinate;
+}
+
+// The end of every message refusing a coordinate beyond the limit, e.g. "lies " + beyond_scene_limit().
+inline std::string beyond_scene_limit() {
+  return "beyond +-1e15, the largest coordinate ochre traces";
 }
 
 }  // namespace ochre

@@ -87,8 +87,7 @@ void Mesh::validate(const std::string& where) const {
   check_attribute(positions, positions.size(), "position", where);
   for (size_t i = 0; i < positions.size(); ++i) {
     if (!within_scene_limit(positions[i]))
-      throw InputError(fmt::format(
-          "{}: position of vertex {} lies beyond +-1e15, the largest coordinate ochre traces", where, i));
+      throw InputError(fmt::format("{}: position of vertex {} lies {}", where, i, beyond_scene_limit()));
   }
   check_attribute(normals, positions.size(), "normal", where);
   check_attribute(uvs, positions.size(), "uv", where);

@@ -220,8 +220,7 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
     const Transform t = parse_transform(f.require("transform"), f.child("transform"));
     basis.eye = t.point({0, 0, 0});
-    if (!within_scene_limit(basis.eye))
-      f.fail("transform", "places the camera beyond +-1e15, the largest coordinate ochre traces");
+    if (!within_scene_limit(basis.eye)) f.fail("transform", "places the camera " + beyond_scene_limit());
     basis.forward = normalize(t.vector({0, 0, -1}));
     basis.up = normalize(t.vector({0, 1, 0}));
     basis.right = normalize(cross(basis.forward, basis.up));
@@ -229,7 +228,7 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   } else {
     const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
                up = f.vec3("up", {0, 1, 0});
-    if (!within_scene_limit(eye)) f.fail("eye", "lies beyond +-1e15, the largest coordinate ochre traces");
+    if (!within_scene_limit(eye)) f.fail("eye", "lies " + beyond_scene_limit());
     if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
     if (!std::isfinite(length(target - eye)))
       f.fail("target", "is too far from eye (the distance overflows single precision)");
