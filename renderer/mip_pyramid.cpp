@@ -21,6 +21,17 @@ int wrap(int i, int n) {
   return r < 0 ? r + n : r;
 }
 
+// The texel of a row or column of `size` at floor coordinate f, wrapped: lookups give f in [-1, size - 1]
+// (their coordinates are first made periodic), which skips the remainders; a very large |f| would
+// overflow int, so anything else is wrapped in float first (the lookup is periodic anyway).
+int texel_index(float f, int size) {
+  if (f >= -1.0f && f < static_cast<float>(size)) {
+    const int i = static_cast<int>(f);
+    return i < 0 ? i + size : i;
+  }
+  return wrap(static_cast<int>(std::fmod(f, static_cast<float>(size))), size);
+}
+
 }  // namespace
 
 MipPyramid::MipPyramid(std::vector<Level> levels, int channels)
@@ -88,9 +99,7 @@ void MipPyramid::bilinear(const Level& level, float s, float t, int first_channe
   const float y = t * static_cast<float>(level.height) - 0.5f;
   const float x0f = std::floor(x), y0f = std::floor(y);
   const float fx = x - x0f, fy = y - y0f;
-  // Very large |s| would overflow int: wrap in float first (the lookup is periodic anyway).
-  const int x0 = wrap(static_cast<int>(std::fmod(x0f, static_cast<float>(level.width))), level.width);
-  const int y0 = wrap(static_cast<int>(std::fmod(y0f, static_cast<float>(level.height))), level.height);
+  const int x0 = texel_index(x0f, level.width), y0 = texel_index(y0f, level.height);
   const int x1 = x0 + 1 == level.width ? 0 : x0 + 1;
   const int y1 = y0 + 1 == level.height ? 0 : y0 + 1;
   const std::size_t stride = static_cast<std::size_t>(channels_);

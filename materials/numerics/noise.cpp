@@ -29,34 +29,16 @@ float unit_float(uint32_t h) {
   return static_cast<float>(h >> 8) * 0x1p-24f;
 }
 
-// One of Perlin's 12 edge gradients (of a cube), dotted with the offset (x, y, z).
+// One of Perlin's 12 edge gradients (of a cube), dotted with the offset (x, y, z). A table of the
+// gradients' components (0 or +-1) instead of a switch: the hash makes the choice unpredictable, and eight
+// mispredicted branches per lookup cost more than the multiplications (the products are exact, so the sums
+// are those of the switch).
 float gradient_dot(uint32_t h, float x, float y, float z) {
-  switch (h % 12u) {
-    case 0:
-      return x + y;
-    case 1:
-      return -x + y;
-    case 2:
-      return x - y;
-    case 3:
-      return -x - y;
-    case 4:
-      return x + z;
-    case 5:
-      return -x + z;
-    case 6:
-      return x - z;
-    case 7:
-      return -x - z;
-    case 8:
-      return y + z;
-    case 9:
-      return -y + z;
-    case 10:
-      return y - z;
-    default:
-      return -y - z;
-  }
+  static constexpr float kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                              {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                              {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+  const float* g = kGradients[h % 12u];
+  return g[0] * x + g[1] * y + g[2] * z;
 }
 
 // Perlin's quintic fade 6t^5 - 15t^4 + 10t^3: continuous second derivative across cells.

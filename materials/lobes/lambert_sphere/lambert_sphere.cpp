@@ -75,12 +75,13 @@ float BondAlbedoInverse::c(float kd_in) const {
   const double kd = nan_safe_clamp(double(kd_in), 0.0, 1.0);
   if (kd >= kd_[0]) return 1.0f;
   if (kd <= kd_[kNodes - 1]) return 0.0f;
-  // Binary search for kd_[lo] > kd >= kd_[hi], then linear interpolation in s.
-  int lo = 0, hi = kNodes - 1;
-  while (hi - lo > 1) {
-    const int mid = (lo + hi) / 2;
-    (kd_[mid] > kd ? lo : hi) = mid;
-  }
+  // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), by steps of halving size that
+  // compile to conditional moves: called per wavelength at every Lambert-sphere shading point with a
+  // textured kd, where a branching search mispredicts. Then linear interpolation in s.
+  static_assert(kNodes == 65, "the steps below cover indices 0..63");
+  int lo = 0;
+  for (int step = 32; step > 0; step /= 2) lo += kd_[lo + step] > kd ? step : 0;
+  const int hi = lo + 1;
   const double t = (kd_[lo] - kd) / (kd_[lo] - kd_[hi]);
   const double s = (lo + t) / (kNodes - 1);
   return float(std::clamp(1.0 - s * s, 0.0, 1.0));
