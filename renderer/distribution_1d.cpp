@@ -40,8 +40,16 @@ size_t Distribution1D::sample(float u, float* u_remapped) const {
   const size_t k = std::min(static_cast<size_t>(scaled), buckets - 1);
   const size_t lo = guide_[k > 0 ? k - 1 : 0];
   const size_t hi = std::min<size_t>(guide_[std::min(k + 2, buckets)] + 1, cdf_.size());
-  const auto it = std::upper_bound(cdf_.begin() + lo, cdf_.begin() + hi, static_cast<double>(u));
-  return finish_sample(static_cast<size_t>(it - cdf_.begin()), u, u_remapped);
+  const double x = u;
+  if (hi - lo > 8) {
+    const auto it = std::upper_bound(cdf_.begin() + lo, cdf_.begin() + hi, x);
+    return finish_sample(static_cast<size_t>(it - cdf_.begin()), u, u_remapped);
+  }
+  // The usual few entries: the first one above u is lo plus the count of those not above it (the CDF is
+  // sorted), counted without the branches of a binary search, which u makes unpredictable.
+  size_t upper = lo;
+  for (size_t j = lo; j < hi; ++j) upper += cdf_[j] <= x ? 1 : 0;
+  return finish_sample(upper, u, u_remapped);
 }
 
 size_t Distribution1D::sample_without_guide(float u, float* u_remapped) const {

@@ -1,6 +1,9 @@
 #include "materials/core/sampling.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace ochre {
 
@@ -17,18 +20,24 @@ Vec2 cos_sin_quarter_pi(float x) {
   return {c, s};
 }
 
+// c ? a : b by bit masks: compilers turn a float ?: into a branch, which a coin-toss condition mispredicts
+// half the time.
+float select(bool c, float a, float b) {
+  const uint32_t mask = 0u - static_cast<uint32_t>(c);
+  return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
+}
+
 }  // namespace
 
 Vec2 sample_uniform_disk_concentric(const Vec2& u) {
   const float ox = 2.0f * u.x - 1.0f, oy = 2.0f * u.y - 1.0f;
   if (ox == 0.0f && oy == 0.0f) return {0.0f, 0.0f};
-  if (std::fabs(ox) > std::fabs(oy)) {  // theta = pi/4 (oy / ox) in [-pi/4, pi/4]
-    const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (oy / ox));
-    return {ox * cs.x, ox * cs.y};
-  }
-  // theta = pi/2 - phi with phi = pi/4 (ox / oy): cos theta = sin phi, sin theta = cos phi.
-  const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (ox / oy));
-  return {oy * cs.y, oy * cs.x};
+  // |ox| > |oy|: r = ox, theta = pi/4 (oy / ox) in [-pi/4, pi/4]. Otherwise r = oy, theta = pi/2 - phi with
+  // phi = pi/4 (ox / oy): cos theta = sin phi, sin theta = cos phi. Selects, not branches.
+  const bool wide = std::fabs(ox) > std::fabs(oy);
+  const float r = select(wide, ox, oy);
+  const Vec2 cs = cos_sin_quarter_pi((kPi / 4.0f) * (select(wide, oy, ox) / r));
+  return {r * select(wide, cs.x, cs.y), r * select(wide, cs.y, cs.x)};
 }
 
 Vec3 sample_cosine_hemisphere(const Vec2& u) {
@@ -45,15 +54,10 @@ Vec3 sample_uniform_sphere(const Vec2& u) {
 }
 
 Vec2 sample_uniform_triangle(const Vec2& u) {
-  float b0, b1;
-  if (u.x < u.y) {
-    b0 = u.x / 2.0f;
-    b1 = u.y - b0;
-  } else {
-    b1 = u.y / 2.0f;
-    b0 = u.x - b1;
-  }
-  return {b0, b1};
+  // Heitz's map: half the smaller coordinate is taken from both (x - x/2 = x/2 exactly, so this is the
+  // paper's two cases without a branch, which u would make a coin toss).
+  const float half = std::min(u.x, u.y) / 2.0f;
+  return {u.x - half, u.y - half};
 }
 
 }  // namespace ochre
