@@ -128,6 +128,9 @@ struct LambertSphereGeometry {
   T phase_over_sum = 0;  // p(-wi.wo) / (mu_i + mu_o): Eq 17 without c
   T log_mu_i = 0, log_mu_o = 0;
   T q_i = 0, q_o = 0;  // Eq 29's exponents
+  // mu_i^q_i + mu_o^q_o, the exponent sum of H1(mu_i) H1(mu_o) (Eq 29) that does not depend on c: computed
+  // once per direction pair, not once per wavelength.
+  T h1_exponent_sum = 0;
 };
 
 template <class T>
@@ -145,6 +148,7 @@ LambertSphereGeometry<T> lambert_sphere_geometry(T mu_i, T mu_o, T wi_dot_wo) {
   g.log_mu_o = std::log(mu_o);
   g.q_i = lambert_sphere_h1_exponent(mu_i);
   g.q_o = lambert_sphere_h1_exponent(mu_o);
+  g.h1_exponent_sum = std::exp(g.q_i * g.log_mu_i) + std::exp(g.q_o * g.log_mu_o);
   return g;
 }
 
@@ -171,7 +175,7 @@ T lambert_sphere_multiple_scattering(const LambertSphereConstants<T>& k, const L
   const T f0_single =
       k.c * (T(207) + T(135) * g.prod * g.prod - T(45) * g.sq + T(256) * g.prod) / (T(768) * kPiT);
   // Corrected Eq 27 minus corrected Eq 34, both divided by S; times S cos(phi). H1 H1 in one exp.
-  const T h1h1 = std::exp(k.ln_h1_at_one * (std::exp(g.q_i * g.log_mu_i) + std::exp(g.q_o * g.log_mu_o)));
+  const T h1h1 = std::exp(k.ln_h1_at_one * g.h1_exponent_sum);
   const T poly1 = T(1) + k.l2_plus_45m_over_64 * g.prod + k.l * g.sum;
   const T f1_over_s = k.c * h1h1 * poly1 / (T(3) * kPiT);
   const T f1_single_over_s = k.c * (T(45) * g.prod + T(64)) / (T(192) * kPiT);
