@@ -133,8 +133,9 @@ struct LambertSphereGeometry {
   T h1_exponent_sum = 0;
 };
 
+// The polynomial and phase terms only (no logarithms or exponentials): all the fast variant reads.
 template <class T>
-LambertSphereGeometry<T> lambert_sphere_geometry(T mu_i, T mu_o, T wi_dot_wo) {
+LambertSphereGeometry<T> lambert_sphere_phase_geometry(T mu_i, T mu_o, T wi_dot_wo) {
   LambertSphereGeometry<T> g;
   if (!(mu_i > T(0)) || !(mu_o > T(0))) return g;
   g.valid = true;
@@ -144,6 +145,13 @@ LambertSphereGeometry<T> lambert_sphere_geometry(T mu_i, T mu_o, T wi_dot_wo) {
   g.inv_sum = T(1) / g.sum;
   g.s_cos_phi = wi_dot_wo - g.prod;
   g.phase_over_sum = lambert_sphere_phase(-wi_dot_wo) * g.inv_sum;
+  return g;
+}
+
+template <class T>
+LambertSphereGeometry<T> lambert_sphere_geometry(T mu_i, T mu_o, T wi_dot_wo) {
+  LambertSphereGeometry<T> g = lambert_sphere_phase_geometry(mu_i, mu_o, wi_dot_wo);
+  if (!g.valid) return g;
   g.log_mu_i = std::log(mu_i);
   g.log_mu_o = std::log(mu_o);
   g.q_i = lambert_sphere_h1_exponent(mu_i);
@@ -222,7 +230,7 @@ T lambert_sphere_fast(const LambertSphereConstants<T>& k, const LambertSphereGeo
 template <class T>
 T lambert_sphere_fast(const LambertSphereConstants<T>& k, T mu_i, T mu_o, T wi_dot_wo) {
   if (!(mu_i > T(0)) || !(mu_o > T(0))) return T(0);
-  return lambert_sphere_fast(k, lambert_sphere_geometry(mu_i, mu_o, wi_dot_wo),
+  return lambert_sphere_fast(k, lambert_sphere_phase_geometry(mu_i, mu_o, wi_dot_wo),
                              lambert_sphere_fast_factor(mu_i, mu_o, wi_dot_wo));
 }
 

@@ -28,14 +28,15 @@ SampledSpectrum LambertSphereLobe::eval(const Vec3& wo, const Vec3& wi, const Sa
     for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_exact(exact_[k], g);
     return f;
   }
-  // The direction-dependent parts once for all the wavelengths.
-  const LambertSphereGeometry<float> g = lambert_sphere_geometry(mu_i, mu_o, wi_dot_wo);
+  // The direction-dependent parts once for all the wavelengths (the fast variant reads no exponentials).
   if (variant_ == LambertSphereVariant::kFast) {
+    const LambertSphereGeometry<float> g = lambert_sphere_phase_geometry(mu_i, mu_o, wi_dot_wo);
     const float factor = lambert_sphere_fast_factor(mu_i, mu_o, wi_dot_wo);
     for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_fast(fitted_[k], g, factor);
-  } else {
-    for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_full(fitted_[k], g);
+    return f;
   }
+  const LambertSphereGeometry<float> g = lambert_sphere_geometry(mu_i, mu_o, wi_dot_wo);
+  for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_full(fitted_[k], g);
   return f;
 }
 
