@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -81,18 +82,18 @@ class Welder {
       out_.positions.push_back(p);
       colours_.push_back(colour(in, i));
     }
+    any_uvs_ = any_uvs_ || in.HasTextureCoords(0);
+    any_colours_ = any_colours_ || in.HasVertexColors(0);
     for (unsigned f = 0; f < in.mNumFaces; ++f) {
       const aiFace& face = in.mFaces[f];
-      if (face.mNumIndices < 3) continue;  // points and lines
-      out_.face_sizes.push_back(static_cast<int>(face.mNumIndices));
-      for (unsigned k = 0; k < face.mNumIndices; ++k) {
-        const unsigned corner = face.mIndices[k];
+      const std::vector<unsigned> corners = distinct_neighbour_corners(face, welded);
+      if (corners.size() < 3) continue;  // points, lines, faces of no area
+      out_.face_sizes.push_back(static_cast<int>(corners.size()));
+      for (const unsigned corner : corners) {
         out_.face_vertices.push_back(welded[corner]);
         const Vec2 uv = in.HasTextureCoords(0)
                             ? Vec2{in.mTextureCoords[0][corner].x, in.mTextureCoords[0][corner].y}
                             : Vec2{0, 0};
-        any_uvs_ = any_uvs_ || in.HasTextureCoords(0);
-        any_colours_ = any_colours_ || in.HasVertexColors(0);
         out_.face_uv_indices.push_back(uv_index(welded[corner], uv));
       }
     }
@@ -122,6 +123,22 @@ class Welder {
     auto [it, inserted] = uv_of_.try_emplace(key, static_cast<int>(out_.uvs.size()));
     if (inserted) out_.uvs.push_back(uv);
     return it->second;
+  }
+
+  // The face's corners without those welded onto the vertex of the corner before them (cyclically): an
+  // edge of zero length, from a file that repeats a vertex or gives two corners the same position. The
+  // face keeps its shape, and OpenSubdiv, which cannot refine such edges (it corrupts memory), never sees
+  // them.
+  static std::vector<unsigned> distinct_neighbour_corners(const aiFace& face,
+                                                          const std::vector<int>& welded) {
+    std::vector<unsigned> corners;
+    corners.reserve(face.mNumIndices);
+    for (unsigned k = 0; k < face.mNumIndices; ++k) {
+      const unsigned corner = face.mIndices[k];
+      if (corners.empty() || welded[corner] != welded[corners.back()]) corners.push_back(corner);
+    }
+    while (corners.size() > 1 && welded[corners.back()] == welded[corners.front()]) corners.pop_back();
+    return corners;
   }
 
   ControlMesh& out_;
@@ -261,6 +278,26 @@ bool ControlMesh::all_triangles() const {
   return std::all_of(face_sizes.begin(), face_sizes.end(), [](int n) { return n == 3; });
 }
 
+namespace {
+
+// A vertex that occurs twice among a face's corners, if any.
+std::optional<int> repeated_vertex(const int* corners, size_t count) {
+  constexpr size_t kSmallFace = 8;  // compared pairwise, without an allocation
+  if (count <= kSmallFace) {
+    for (size_t i = 1; i < count; ++i)
+      for (size_t j = 0; j < i; ++j)
+        if (corners[i] == corners[j]) return corners[i];
+    return std::nullopt;
+  }
+  std::vector<int> sorted(corners, corners + count);
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice == sorted.end()) return std::nullopt;
+  return *twice;
+}
+
+}  // namespace
+
 void ControlMesh::validate(const std::string& where) const {
   auto fail = [&](const std::string& message) {
     throw InputError(fmt::format("{}: control mesh: {}", where, message));
@@ -277,6 +314,14 @@ void ControlMesh::validate(const std::string& where) const {
     if (!finite(positions[i])) fail(fmt::format("position {} is not finite", i));
   for (int v : face_vertices)
     if (v < 0 || size_t(v) >= positions.size()) fail(fmt::format("face vertex index {} out of range", v));
+  size_t first = 0;
+  for (size_t f = 0; f < face_sizes.size(); first += size_t(face_sizes[f]), ++f) {
+    if (const std::optional<int> v = repeated_vertex(&face_vertices[first], size_t(face_sizes[f])))
+      fail(
+          fmt::format("face {} (of the welded polygons) passes through vertex {} at ({}, {}, {}) twice "
+                      "(OpenSubdiv cannot refine a face that touches itself or has an edge of zero length)",
+                      f, *v, positions[size_t(*v)].x, positions[size_t(*v)].y, positions[size_t(*v)].z));
+  }
   if (!uvs.empty() || !face_uv_indices.empty()) {
     if (face_uv_indices.size() != corners)
       fail(fmt::format("{} uv indices for {} corners", face_uv_indices.size(), corners));

@@ -30,7 +30,8 @@ struct ControlMesh {
   bool all_triangles() const;
 
   // Throws InputError starting with `where` when there are no faces, a face has fewer than 3
-  // vertices, face_vertices/face_uv_indices do not have one entry per face corner, an index
+  // vertices or passes through a vertex twice, face_vertices/face_uv_indices do not have one entry per
+  // face corner, an index
   // (vertex, uv, crease, corner) is out of range, colours are sized differently from positions, a
   // sharpness is negative or NaN, or a position/uv/colour is not finite.
   void validate(const std::string& where) const;
@@ -39,7 +40,9 @@ struct ControlMesh {
 // Imports the polygons of a mesh file through Assimp WITHOUT triangulation (OBJ, PLY, glTF, ...).
 // - All meshes of the file are instanced through the node hierarchy and merged; vertices at exactly
 //   the same position are welded, so a UV seam (which the file stores as separate vertices) does
-//   not tear the surface apart: uvs become face-varying values instead.
+//   not tear the surface apart: uvs become face-varying values instead. A face corner welded onto
+//   the corner before it (an edge of zero length) is dropped, and so is a face left with fewer than 3
+//   corners; a face that still passes through a vertex twice is an error.
 // - UV set 0 and colour set 0 are kept (colours decoded to linear as import_mesh does); file
 //   normals are ignored (the subdivision limit surface defines the normals).
 // - .obj files are also read for OpenSubdiv's tag extension: "t crease 2/1/0 v0 v1 s" (vertices

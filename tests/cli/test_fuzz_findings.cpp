@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_runner.h"
+#include "cli/exr_bits.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {
@@ -111,6 +112,54 @@ TEST(FuzzFindings, PlyVertexIndexOutOfRangeIsRejected) {
     expect_rejected(render_scene(mesh_scene("mesh.ply", options), {{"mesh.ply", ply_triangle(3, "3 0 1 7")}}),
                     {"mesh.ply", "face 0 uses vertex 7, but there are 3 vertices"});
   }
+}
+
+// A cube of quads; face_5 is the last face's vertex list.
+std::string cube_obj(const std::string& face_5) {
+  return "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+         "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf " +
+         face_5 + "\n";
+}
+
+// Control-mesh faces with an edge of zero length (a vertex repeated, or two corners at the same position,
+// welded into one) can make OpenSubdiv write outside its buffers: fuzz_mesh found a heap corruption (then a
+// SEGV) and an assertion of Catmull-Clark's vertex masks under the sanitizers, on meshes combining several
+// such faces (tests/fuzz/corpus/mesh/finding_*.obj), and in release builds such a face changed the refined
+// surface. The repeated corner is now dropped before OpenSubdiv sees it, and a face left with fewer than 3
+// corners goes with it: the surface must be the one without them, to the bit.
+TEST(FuzzFindings, ZeroLengthEdgesOfAControlMeshAreDropped) {
+  const auto dir = scratch_dir();
+  // The subdivided cube, its face x = -1 towards the camera, lit from the side so that its shading shows
+  // the limit surface's normals.
+  write_text(dir / "scene.json", R"({"camera": {"eye": [-4, 2.5, 3]}, "film": {"resolution": [24, 24]},
+    "integrator": {"spp": 2}, "materials": {"m": {"type": "lambert"}},
+    "lights": [{"type": "point", "position": [-3, 4, -1], "intensity": 20}],
+    "shapes": [{"type": "mesh", "file": "cube.obj", "material": "m", "subdivision": {"level": 2}}]})");
+  write_text(dir / "cube.obj", cube_obj("4 1 5 8"));
+  ASSERT_EQ(run_ochre("render scene.json -o clean.exr", dir).exit_code, 0);
+  // The picture sees that face: the cube with a triangle there instead renders differently.
+  write_text(dir / "cube.obj", cube_obj("4 1 5"));
+  ASSERT_EQ(run_ochre("render scene.json -o triangle.exr", dir).exit_code, 0);
+  ASSERT_FALSE(same_exr_pixels(dir / "clean.exr", dir / "triangle.exr"));
+  // The same face with corner 1 given twice, with a vertex 9 at corner 8's position (welded to it), and
+  // with two faces of no area after welding.
+  write_text(dir / "cube.obj", cube_obj("4 1 1 5 8") + "f 1 1 2\n");
+  const CommandResult repeated = run_ochre("render scene.json -o repeated.exr", dir);
+  ASSERT_EQ(repeated.exit_code, 0) << repeated.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "clean.exr", dir / "repeated.exr"));
+  write_text(dir / "cube.obj", cube_obj("4 1 5 9 8") + "v -1 1 1\nf 8 8 9\n");
+  const CommandResult welded = run_ochre("render scene.json -o welded.exr", dir);
+  ASSERT_EQ(welded.exit_code, 0) << welded.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "clean.exr", dir / "welded.exr"));
+}
+
+// A face that passes through one vertex at two corners that are not neighbours (it touches itself) cannot be
+// repaired without guessing the surface: it is refused.
+TEST(FuzzFindings, AControlMeshFaceThatTouchesItselfIsRejected) {
+  const std::string bowtie = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3 1 4 5\n";
+  expect_rejected(
+      render_scene(mesh_scene("bowtie.obj", kSubdivided), {{"bowtie.obj", bowtie}}),
+      {"scene.json", "shapes[0].file", "bowtie.obj", "face 0", "passes through vertex 0 at (0, 0, 0) twice"});
 }
 
 // A spectrum file whose neighbouring values differ by more than the float range gave NaN at a knot
