@@ -359,7 +359,9 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
   Welder welder(mesh, vertex_colour_encoding(file));
   if (scene->mRootNode != nullptr) collect(*scene, *scene->mRootNode, Transform::identity(), welder);
   welder.finish();
-  if (mesh.face_sizes.empty()) throw InputError(fmt::format("{}: the file contains no polygons", where));
+  if (mesh.face_sizes.empty())
+    throw InputError(
+        fmt::format("{}: the file contains no polygons (faces of at least 3 distinct vertices)", where));
   if (lower_extension(file) == ".obj") apply_obj_tags(mesh, read_obj_extras(file), where);
   for (Vec3& p : mesh.positions) p = to_world.point(p);
   if (to_world.flips_handedness()) reverse_winding(mesh);

@@ -153,6 +153,14 @@ TEST(FuzzFindings, ZeroLengthEdgesOfAControlMeshAreDropped) {
   EXPECT_TRUE(same_exr_pixels(dir / "clean.exr", dir / "welded.exr"));
 }
 
+// A control mesh whose every face has fewer than 3 distinct vertices has nothing to refine.
+TEST(FuzzFindings, AControlMeshOfDegenerateFacesOnlyIsRejected) {
+  expect_rejected(
+      render_scene(mesh_scene("flat.obj", kSubdivided),
+                   {{"flat.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 1 2\nf 3 3 3\n"}}),
+      {"scene.json", "shapes[0].file", "flat.obj", "no polygons (faces of at least 3 distinct vertices)"});
+}
+
 // A face that passes through one vertex at two corners that are not neighbours (it touches itself) cannot be
 // repaired without guessing the surface: it is refused.
 TEST(FuzzFindings, AControlMeshFaceThatTouchesItselfIsRejected) {
