@@ -31,9 +31,8 @@ struct ControlMesh {
 
   // Throws InputError starting with `where` when there are no faces, a face has fewer than 3
   // vertices or passes through a vertex twice, face_vertices/face_uv_indices do not have one entry per
-  // face corner, an index
-  // (vertex, uv, crease, corner) is out of range, colours are sized differently from positions, a
-  // sharpness is negative or NaN, or a position/uv/colour is not finite.
+  // face corner, an index (vertex, uv, crease, corner) is out of range, colours are sized differently
+  // from positions, a sharpness is negative or NaN, or a position/uv/colour is not finite.
   void validate(const std::string& where) const;
 };
 
