@@ -17,6 +17,7 @@ struct PathVertex {
   Frame frame;
   Vec3 wo_local;
   Closure closure;
+  uint32_t mesh = 0;
 };
 
 namespace {
@@ -220,119 +221,163 @@ float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3
   return power_heuristic(bsdf_pdf, pmf * area.pdf(x_image, p, ng));
 }
 
-template <class Sampler, class T>
-SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
-                                   const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
-                                   PathStats& stats, FirstHit* first_hit) const {
-  const RenderSettings& settings = scene_.settings;
+// What a path carries from one vertex to the next, besides the vertex itself.
+template <class T>
+struct PathState {
   SensorStokes L{};
-  T beta(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
-         T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{});
+  T beta;
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
-  Vec3 prev_p;
+  Vec3 prev_p{};
   // The last vertex was a planar mirror reached from a non-delta vertex x (position, BSDF pdf): emission
   // found next could also have been sampled through the mirror (mirrored_light).
   int chain_mirror = -1;
   float chain_pdf = 0.0f;
-  Vec3 chain_origin;
+  Vec3 chain_origin{};
   // The lights' probabilities at the last vertex that sampled a light, when they depend on the point.
-  const bool local_lights = local_lights_;
   Scene::LightPmfs light_pmfs{};
-  const auto light_pmf = [&](int light) {
-    return local_lights ? light_pmfs[light] : scene_.light_pmf(light);
-  };
-  Ray ray = camera_ray;
+  Ray ray;
   float path_length = 0.0f;  // along the path so far, for the texture footprint
-  PathVertex v;
+};
 
-  for (uint32_t depth = 0;; ++depth) {
-    ++stats.rays;
-    const auto hit = scene_.accel->intersect(ray);
-    if (!hit) {
-      if (scene_.environment) {
-        // After the camera or a delta lobe the environment could not have been sampled: no MIS, and no
-        // pdf lookup (one cache miss fewer for rays that see the sky directly).
-        float env_pdf = 0.0f;
-        const SampledSpectrum Le = specular ? scene_.environment->radiance(ray.dir, lambda)
-                                            : scene_.environment->radiance(ray.dir, lambda, &env_pdf);
-        const float w =
-            specular ? 1.0f : power_heuristic(prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
-        beta.receive(IncomingLight{Le * w, false, {}}, -ray.dir, L);
-      }
-      break;
+template <class Sampler, class T>
+bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, const RayCone& cone,
+                            const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                            size_t arena_floor, bool own_lobes, PathStats& stats, FirstHit* first_hit) const {
+  const RenderSettings& settings = scene_.settings;
+  const auto light_pmf = [&](int light) {
+    return local_lights_ ? s.light_pmfs[light] : scene_.light_pmf(light);
+  };
+  ++stats.rays;
+  const auto hit = scene_.accel->intersect(s.ray);
+  if (!hit) {
+    if (scene_.environment) {
+      // After the camera or a delta lobe the environment could not have been sampled: no MIS, and no
+      // pdf lookup (one cache miss fewer for rays that see the sky directly).
+      float env_pdf = 0.0f;
+      const SampledSpectrum Le = s.specular ? scene_.environment->radiance(s.ray.dir, lambda)
+                                            : scene_.environment->radiance(s.ray.dir, lambda, &env_pdf);
+      const float w =
+          s.specular ? 1.0f : power_heuristic(s.prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
+      s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, s.L);
     }
+    return false;
+  }
 
-    v.sp = surface_point(scene_.meshes, *hit, ray);
-    const Vec3 wo = -ray.dir;
-    const Mesh& mesh = scene_.meshes[hit->mesh];
-    arena.reset();
-    v.closure = Closure();
-    path_length += hit->t * length(ray.dir);
-    ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
-    // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
-    // units through the triangle's world-per-uv scale.
-    ctx.footprint = cone.width_at(path_length);
-    if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
+  v.sp = surface_point(scene_.meshes, *hit, s.ray);
+  v.mesh = hit->mesh;
+  const Vec3 wo = -s.ray.dir;
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  arena.reset(arena_floor);
+  v.closure = Closure();
+  s.path_length += hit->t * length(s.ray.dir);
+  ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
+  // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
+  // units through the triangle's world-per-uv scale.
+  ctx.footprint = cone.width_at(s.path_length);
+  if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
+  if (own_lobes)
+    scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
+  else
     evaluate_memoized(*scene_.materials[mesh.material], ctx, arena, v.closure);
 
-    // Emission seen by this path segment (one-sided: front face only).
-    if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {
-      float w = 1.0f;
-      const int light = scene_.mesh_light[hit->mesh];
-      if (!specular && light >= 0) {
-        const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
-        w = power_heuristic(prev_pdf, light_pmf(light) * area.pdf(prev_p, v.sp.p, v.sp.ng));
-      } else if (chain_mirror >= 0 && light >= 0) {
-        w = mirrored_emission_weight(chain_mirror, light, chain_origin, chain_pdf, v.sp.p, v.sp.ng);
-      }
-      const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
-      beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, L);
+  // Emission seen by this path segment (one-sided: front face only).
+  if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {
+    float w = 1.0f;
+    const int light = scene_.mesh_light[hit->mesh];
+    if (!s.specular && light >= 0) {
+      const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
+      w = power_heuristic(s.prev_pdf, light_pmf(light) * area.pdf(s.prev_p, v.sp.p, v.sp.ng));
+    } else if (s.chain_mirror >= 0 && light >= 0) {
+      w = mirrored_emission_weight(s.chain_mirror, light, s.chain_origin, s.chain_pdf, v.sp.p, v.sp.ng);
     }
-    if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) break;
-
-    const bool refracts = v.closure.has_transmission();
-    v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
-    v.frame = shading_frame(v.sp, v.ng, wo, refracts, v.closure);
-    v.wo_local = v.frame.to_local(wo);
-    if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(ray.dir), lambda, *first_hit);
-
-    if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
-      if (local_lights) scene_.light_pmfs(v.sp.p, light_pmfs);
-      direct_light(v, wo, beta, lambda, sampler, depth, local_lights ? &light_pmfs : nullptr, stats, L);
-      if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
-        mirrored_light(v, wo, beta, lambda, sampler, depth, arena, stats, L);
-    }
-
-    auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
-                               sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
-    if (!bs || bs->weight.is_black()) break;
-    const Vec3 wi = v.frame.to_world(bs->wi);
-    if (dot(wi, v.ng) * bs->wi.z <= 0.0f) break;  // shading and geometric sides disagree: no light leaks
-
-    beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
-    chain_mirror = bs->delta && !specular ? scene_.mirror_lights.mirror_of_mesh(hit->mesh) : -1;
-    chain_pdf = prev_pdf;
-    chain_origin = prev_p;
-    specular = bs->delta;
-    prev_pdf = bs->pdf;
-    prev_p = v.sp.p;
-
-    // Russian roulette on the path throughput's unpolarized part M00, with survival probability
-    // sqrt(max M00) (Cycles' rule; pbrt's max M00 terminates more often): per-path quantities only, so
-    // renders stay deterministic. From rr_depth (default 5, as Mitsuba) on: terminating earlier costs
-    // more variance than it saves time, most of all on caustic paths (docs/performance.md, "Time to
-    // error against Cycles").
-    if (depth + 1 >= static_cast<uint32_t>(settings.rr_depth)) {
-      const float survival = std::sqrt(beta.m00().max_value());
-      if (survival < 1.0f) {
-        if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) >= survival) break;
-        beta.scale(1.0f / survival);
-      }
-    }
-    ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+    const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
+    s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, s.L);
   }
-  return L;
+  if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) return false;
+
+  const bool refracts = v.closure.has_transmission();
+  v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
+  v.frame = shading_frame(v.sp, v.ng, wo, refracts, v.closure);
+  v.wo_local = v.frame.to_local(wo);
+  if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(s.ray.dir), lambda, *first_hit);
+
+  if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
+    if (local_lights_) scene_.light_pmfs(v.sp.p, s.light_pmfs);
+    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, s.L);
+    if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
+      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, s.L);
+  }
+  return true;
+}
+
+template <class Sampler, class T>
+bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t depth,
+                             const SampledWavelengths& lambda, const Sampler& sampler) const {
+  const Vec3 wo = -s.ray.dir;
+  auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
+                             sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
+  if (!bs || bs->weight.is_black()) return false;
+  const Vec3 wi = v.frame.to_world(bs->wi);
+  if (dot(wi, v.ng) * bs->wi.z <= 0.0f) return false;  // shading and geometric sides disagree: no light leaks
+
+  s.beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
+  s.chain_mirror = bs->delta && !s.specular ? scene_.mirror_lights.mirror_of_mesh(v.mesh) : -1;
+  s.chain_pdf = s.prev_pdf;
+  s.chain_origin = s.prev_p;
+  s.specular = bs->delta;
+  s.prev_pdf = bs->pdf;
+  s.prev_p = v.sp.p;
+
+  // Russian roulette on the path throughput's unpolarized part M00, with survival probability
+  // sqrt(max M00) (Cycles' rule; pbrt's max M00 terminates more often): per-path quantities only, so
+  // renders stay deterministic. From rr_depth (default 5, as Mitsuba) on: terminating earlier costs
+  // more variance than it saves time, most of all on caustic paths (docs/performance.md, "Time to
+  // error against Cycles").
+  if (depth + 1 >= static_cast<uint32_t>(scene_.settings.rr_depth)) {
+    const float survival = std::sqrt(s.beta.m00().max_value());
+    if (survival < 1.0f) {
+      if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) >= survival) return false;
+      s.beta.scale(1.0f / survival);
+    }
+  }
+  s.ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  return true;
+}
+
+template <class Sampler, class T>
+SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
+                                   const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                                   PathStats& stats, FirstHit* first_hit) const {
+  PathState<T> s{.beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+                           T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
+                 .ray = camera_ray};
+  PathVertex v;
+  const bool branched = branches_ > 1;
+  if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, branched, stats, first_hit)) return s.L;
+  if (!branched) {
+    for (uint32_t depth = 0; scatter(s, v, depth, lambda, sampler); ++depth)
+      if (!arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, false, stats, nullptr)) break;
+    return s.L;
+  }
+  // Branched path tracing (docs/architecture.md#branched-paths): the first vertex (camera ray, shading,
+  // next-event estimation) is shared by `branches_` continuations, each with its own numbers
+  // (Sampler::branch) and averaged. Its lobes stay in the arena below `floor` (evaluated outside the
+  // per-thread memo, which a later vertex could overwrite) while the branches reuse the space above.
+  const size_t floor = arena.used();
+  SensorStokes sum{};
+  PathVertex w;
+  for (uint32_t j = 0; j < branches_; ++j) {
+    const Sampler numbers = sampler.branch(j, branches_);
+    PathState<T> c = s;
+    c.L = SensorStokes{};
+    for (uint32_t depth = 0; scatter(c, depth == 0 ? v : w, depth, lambda, numbers); ++depth)
+      if (!arrive(c, w, depth + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
+  }
+  const float inv = 1.0f / static_cast<float>(branches_);
+  for (size_t i = 0; i < sum.size(); ++i) s.L[i] += sum[i] * inv;
+  return s.L;
 }
 
 template <class Sampler>

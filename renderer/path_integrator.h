@@ -2,8 +2,11 @@
 // Unidirectional spectral path tracer: next-event estimation, multiple importance sampling
 // (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
 // lights handled. Radiance is traced for the 8 hero wavelengths of the path, carrying the Mueller
-// product of the polarization mode (path_throughput.h): off, intensity or stokes.
+// product of the polarization mode (path_throughput.h): off, intensity or stokes. With
+// integrator.branches = k, each camera sample continues from its first vertex along k paths, averaged
+// (docs/architecture.md#branched-paths).
 
+#include <algorithm>
 #include <cstdint>
 
 #include "materials/lobes/lobe_arena.h"
@@ -28,10 +31,16 @@ struct PathStats {
   uint64_t shadow_rays = 0;  // rtcOccluded1
 };
 
+template <class Throughput>
+struct PathState;
+
 class PathIntegrator {
  public:
   PathIntegrator(const Scene& scene, PolarizationMode mode)
-      : scene_(scene), mode_(mode), local_lights_(scene.local_light_selection()) {}
+      : scene_(scene),
+        mode_(mode),
+        local_lights_(scene.local_light_selection()),
+        branches_(static_cast<uint32_t>(std::max(1, scene.settings.branches))) {}
 
   // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
   // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
@@ -43,6 +52,17 @@ class PathIntegrator {
                         FirstHit* first_hit = nullptr) const;
 
  private:
+  // Arrival of s.ray: emission, shading and next-event estimation at the vertex it hits (stored in v).
+  // False when the path ends there. Lobes go to `arena` above `arena_floor`; `own_lobes`: never in the
+  // per-thread memo (the vertex must outlive later ones).
+  template <class Sampler, class Throughput>
+  bool arrive(PathState<Throughput>& s, struct PathVertex& v, uint32_t depth, const RayCone& cone,
+              const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena, size_t arena_floor,
+              bool own_lobes, PathStats& stats, FirstHit* first_hit) const;
+  // BSDF sampling at v, Russian roulette and the next ray. False when the path ends.
+  template <class Sampler, class Throughput>
+  bool scatter(PathState<Throughput>& s, const struct PathVertex& v, uint32_t depth,
+               const SampledWavelengths& lambda, const Sampler& sampler) const;
   template <class Sampler, class Throughput>
   SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                      const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit) const;
@@ -65,6 +85,7 @@ class PathIntegrator {
   const Scene& scene_;
   PolarizationMode mode_;
   bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
+  uint32_t branches_;  // continuations of each camera sample from its first vertex (integrator.branches)
 };
 
 }  // namespace ochre

@@ -18,6 +18,9 @@ struct RenderSettings {
   uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
   int max_depth = 8;          // maximum number of scattering events on a path
   int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
+  // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
+  // (docs/architecture.md#branched-paths).
+  int branches = 1;
   bool mirror_lights = true;  // sample lights through planar mirrors (renderer/planar_mirrors.h)
   // Light choice for next-event estimation: "local" (by importance at each point, for 2-8 lights; scene.h)
   // or "power" (by power alone).

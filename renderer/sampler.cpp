@@ -2,10 +2,18 @@
 
 namespace ochre {
 
-IndependentSampler::IndependentSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index) {
-  // Chain the mixes so that (seed, pixel, sample) triples never collide in practice.
-  key_ = mix64(mix64(mix64(seed + 0x9e3779b97f4a7c15ull) ^ pixel_index) ^
-               (sample_index * 0xd1b54a32d192ed03ull));
+// Chain the mixes so that (seed, pixel, sample) triples never collide in practice.
+IndependentSampler::IndependentSampler(uint64_t pixel_base, uint64_t sample_index, struct FromPixelBase)
+    : pixel_base_(pixel_base),
+      sample_index_(sample_index),
+      key_(mix64(pixel_base ^ (sample_index * 0xd1b54a32d192ed03ull))) {}
+
+IndependentSampler::IndependentSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index)
+    : IndependentSampler(mix64(mix64(seed + 0x9e3779b97f4a7c15ull) ^ pixel_index), sample_index,
+                         FromPixelBase{}) {}
+
+IndependentSampler IndependentSampler::branch(uint32_t j, uint32_t k) const {
+  return IndependentSampler(pixel_base_, sample_index_ * k + j, FromPixelBase{});
 }
 
 float IndependentSampler::get_1d(uint32_t dimension) const {

@@ -30,6 +30,8 @@ struct SampleDims {
   }
 };
 
+struct FromPixelBase {};  // tag: constructor from the hash of (seed, pixel)
+
 class IndependentSampler {
  public:
   IndependentSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index);
@@ -37,8 +39,15 @@ class IndependentSampler {
   // Uniform number in [0, 1) for a given dimension.
   float get_1d(uint32_t dimension) const;
   Vec2 get_2d(uint32_t dimension) const { return {get_1d(dimension), get_1d(dimension + 1)}; }
+  // The sampler of sample index (this index) x k + j: the numbers of branch j of the k continuations of
+  // this sample (PathIntegrator, integrator.branches). Every sample index stays a pure function of
+  // (seed, pixel, sample index), so branched renders are deterministic too.
+  IndependentSampler branch(uint32_t j, uint32_t k) const;
 
  private:
+  IndependentSampler(uint64_t pixel_base, uint64_t sample_index, struct FromPixelBase);
+  uint64_t pixel_base_;
+  uint64_t sample_index_;
   uint64_t key_;
 };
 

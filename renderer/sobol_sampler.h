@@ -84,14 +84,21 @@ class SobolSampler {
   // Point of the scrambled 2D Sobol (0,2)-sequence owned by `dimension` (the layout of
   // SampleDims reserves dimension and dimension + 1 for it).
   Vec2 get_2d(uint32_t dimension) const;
+  // The sampler of sample index (this index) x k + j: the numbers of branch j of the k continuations of
+  // this sample (PathIntegrator, integrator.branches). Every sample index stays a pure function of
+  // (seed, pixel, sample index), so branched renders are deterministic too.
+  SobolSampler branch(uint32_t j, uint32_t k) const;
 
  private:
+  SobolSampler(uint64_t pixel_base, uint64_t sample_index, struct FromPixelBase);
   struct DimensionScramble {
     uint32_t shuffled_index;  // sample index after the per-dimension shuffle
     uint64_t hash;            // source of the two coordinate scramble seeds
   };
   DimensionScramble scramble_for(uint32_t dimension) const;
 
+  uint64_t pixel_base_;  // hash of (seed, pixel)
+  uint64_t sample_index_;
   uint64_t pixel_key_;       // hash of (seed, pixel, high bits of the sample index)
   uint32_t reversed_index_;  // low 32 bits of the sample index, bit-reversed
 };
@@ -106,9 +113,18 @@ uint32_t sobol_dimension1(uint32_t index);
 // significant) is flipped by a function of the seed and the bits above it only.
 uint32_t owen_scramble(uint32_t value, uint32_t seed);
 
-inline SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index)
-    : pixel_key_(mix64(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixel_index) ^ (sample_index >> 32))),
+inline SobolSampler::SobolSampler(uint64_t pixel_base, uint64_t sample_index, struct FromPixelBase)
+    : pixel_base_(pixel_base),
+      sample_index_(sample_index),
+      pixel_key_(mix64(pixel_base ^ (sample_index >> 32))),
       reversed_index_(sobol_detail::reverse_bits(static_cast<uint32_t>(sample_index))) {}
+
+inline SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel_index, uint64_t sample_index)
+    : SobolSampler(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixel_index), sample_index, FromPixelBase{}) {}
+
+inline SobolSampler SobolSampler::branch(uint32_t j, uint32_t k) const {
+  return SobolSampler(pixel_base_, sample_index_ * k + j, FromPixelBase{});
+}
 
 inline SobolSampler::DimensionScramble SobolSampler::scramble_for(uint32_t dimension) const {
   const uint64_t hash = mix64(pixel_key_ ^ (static_cast<uint64_t>(dimension) + 1) * 0x9e3779b97f4a7c15ull);

@@ -41,10 +41,13 @@ void print_summary(const Scene& scene) {
   size_t triangles = 0;
   for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
   const RenderSettings& s = scene.settings;
+  const std::string branches =
+      s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel)", s.branches, s.spp * s.branches)
+                     : "";
   std::cerr << fmt::format(
-      "ochre: {}: {}x{}, {} spp, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
-      scene.file.filename().string(), s.width, s.height, s.spp, s.max_depth, scene.meshes.size(), triangles,
-      scene.lights.size(), s.seed, s.sampler);
+      "ochre: {}: {}x{}, {} spp{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
+      scene.file.filename().string(), s.width, s.height, s.spp, branches, s.max_depth, scene.meshes.size(),
+      triangles, scene.lights.size(), s.seed, s.sampler);
   std::cerr << fmt::format(
       "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
       scene.accel->build_seconds(), scene.accel->memory_bytes() / 1e6,
@@ -151,14 +154,15 @@ int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog
   const OutputSettings& out = scene.outputs;
   std::vector<std::filesystem::path> paths;
   for (uint64_t k = 0; k < *command.frames; ++k)
-    for (const std::string& p : output_paths(frame_outputs(out, command.first_frame + k))) paths.emplace_back(p);
+    for (const std::string& p : output_paths(frame_outputs(out, command.first_frame + k)))
+      paths.emplace_back(p);
   check_output_files(paths, inputs);
   const uint64_t last = command.first_frame + *command.frames - 1;
   if (!command.quiet) {
     print_summary(scene);
     std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
-    std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n", command.first_frame,
-                             last, command.fps, scene.flames.size());
+    std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n",
+                             command.first_frame, last, command.fps, scene.flames.size());
   }
   phase = {"allocating the film", true};
   check_render_memory(scene.settings.width, scene.settings.height, out);

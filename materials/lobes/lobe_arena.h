@@ -24,7 +24,8 @@ class LobeArena {
     used_ = offset + sizeof(T);
     return new (buffer_.get() + offset) T(std::forward<Args>(args)...);
   }
-  void reset() { used_ = 0; }
+  void reset(std::size_t floor = 0) { used_ = floor; }
+  std::size_t used() const { return used_; }
 
  private:
   std::unique_ptr<std::byte[]> buffer_;

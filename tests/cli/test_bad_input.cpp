@@ -109,6 +109,16 @@ TEST(BadInput, ZeroResolution) {
                    {"resolution"}});
 }
 
+TEST(BadInput, BranchesOutOfRange) {
+  for (const char* value : {"0", "-2", "65"})
+    expect_rejected({std::string("branches ") + value,
+                     scene_with("/integrator/branches", value),
+                     {"integrator.branches", "must be an integer in [1, 64]"}});
+  expect_rejected({"branches 1.5",
+                   scene_with("/integrator/branches", "1.5"),
+                   {"integrator.branches", "expected an integer, got 1.5"}});
+}
+
 TEST(BadInput, UnknownParameter) {
   expect_rejected(
       {"param",

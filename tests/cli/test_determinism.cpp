@@ -2,6 +2,7 @@
 // thread count; different seeds give different images.
 #include <gtest/gtest.h>
 
+#include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
@@ -31,6 +32,16 @@ TEST(Determinism, BitIdenticalForAnyThreadCount) {
   const ExrImage four = render_cornell("--threads 4");
   EXPECT_TRUE(same_pixels(one, two));
   EXPECT_TRUE(same_pixels(one, four));
+}
+
+// A branched render (integrator.branches) says how many paths it traces per pixel.
+TEST(Determinism, BranchedRenderReportsItsPathsPerPixel) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", scene_with("/integrator/branches", "3"));
+  const CommandResult r = run_ochre("render scene.json -o out.exr --spp 4 --resolution 8x8", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("8x8, 4 spp x 3 branches (12 paths per pixel), max depth"), std::string::npos)
+      << r.output;
 }
 
 TEST(Determinism, SeedChangesTheNoise) {

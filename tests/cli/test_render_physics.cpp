@@ -16,16 +16,16 @@ namespace {
 
 // One Lambert sphere (radius 1) filling the centre of an orthographic view, in a constant
 // environment of radiance 1 (equal-energy spectrum: luminance 1).
-std::string furnace_scene(double albedo) {
+std::string furnace_scene(double albedo, int spp = 256, int branches = 1) {
   return fmt::format(R"({{
     "camera": {{"type": "orthographic", "size": 3, "eye": [0, 0, 10], "target": [0, 0, 0]}},
     "film": {{"resolution": [48, 48]}},
-    "integrator": {{"spp": 256, "max_depth": 100, "rr_depth": 100}},
+    "integrator": {{"spp": {}, "branches": {}, "max_depth": 100, "rr_depth": 100}},
     "materials": {{"m": {{"type": "lambert", "color": {}}}}},
     "lights": [{{"type": "environment", "radiance": 1.0}}],
     "shapes": [{{"type": "sphere", "radius": 1, "subdivisions": 256, "material": "m"}}]
   }})",
-                     albedo);
+                     spp, branches, albedo);
 }
 
 TEST(WhiteFurnace, LambertSpheresRenderAlbedoTimesL) {
@@ -39,6 +39,14 @@ TEST(WhiteFurnace, LambertSpheresRenderAlbedoTimesL) {
     EXPECT_NEAR(background, 1.0, 0.005);
     EXPECT_NEAR(sphere, albedo, 0.005 * albedo);
   }
+}
+
+// Branched paths (integrator.branches) average their continuations: the same albedo x L.
+TEST(WhiteFurnace, BranchedPathsRenderAlbedoTimesL) {
+  const LuminanceImage img = render_luminance(furnace_scene(0.5, 64, 4));
+  const double sphere = img.mean(16, 16, 32, 32);
+  std::printf("furnace albedo 0.50, 4 branches: sphere Y = %.5f\n", sphere);
+  EXPECT_NEAR(sphere, 0.5, 0.005 * 0.5);
 }
 
 // A point light of intensity I at height h over a Lambert plane of albedo rho, seen from

@@ -90,6 +90,18 @@ class Variants(unittest.TestCase):
             name, path, _ = rb.variant_scene(args, 'plain')
             self.assertEqual(json.load(open(path))['integrator'], json.load(open(scene))['integrator'])
 
+    def test_branched_variants_count_paths_per_pixel(self):
+        with tempfile.TemporaryDirectory() as out:
+            os.makedirs(os.path.join(out, 'scenes'))
+            scene = os.path.join(ROOT, 'scenes/benchmark/cbox-matched.json')
+            args = argparse.Namespace(scene=scene, out=out, ochre_bin='bin')
+            _, path, _ = rb.variant_scene(args, 'b4:branches=4')
+            o = rb.Ochre(args, path, 'b4', 'bin')
+            self.assertEqual(o.branches, 4)
+            self.assertEqual(o.camera_spp(32), 8)  # 32 paths per pixel: 8 camera samples of 4 paths
+            with self.assertRaises(SystemExit):
+                o.camera_spp(6)
+
 
 def blender_render():
     if not shutil.which('blender') or not shutil.which('oiiotool'):

@@ -182,6 +182,25 @@ TEST(SobolSampler, DeterministicPureFunction) {
   EXPECT_EQ(s.get_1d(3), SobolSampler(7, 99, 1ull << 40).get_1d(3));
 }
 
+// Branch j of the k continuations of sample i (integrator.branches) draws the numbers of sample i k + j, in
+// both samplers, also where i k + j passes 2^32 (the Sobol index's high bits select another scramble).
+TEST(SobolSampler, BranchJOfKIsTheSamplerOfIndexTimesKPlusJ) {
+  for (uint64_t i : {uint64_t{0}, uint64_t{5}, uint64_t{1} << 31, (uint64_t{1} << 32) + 3})
+    for (uint32_t k : {2u, 4u, 7u})
+      for (uint32_t j = 0; j < k; ++j) {
+        const SobolSampler branch = SobolSampler(3, 41, i).branch(j, k), direct(3, 41, i * k + j);
+        const IndependentSampler ibranch = IndependentSampler(3, 41, i).branch(j, k),
+                                 idirect(3, 41, i * k + j);
+        for (uint32_t dim : {0u, 3u, 11u, 60u}) {
+          EXPECT_EQ(branch.get_2d(dim).x, direct.get_2d(dim).x) << i << " " << j << "/" << k;
+          EXPECT_EQ(branch.get_2d(dim).y, direct.get_2d(dim).y) << i << " " << j << "/" << k;
+          EXPECT_EQ(ibranch.get_1d(dim), idirect.get_1d(dim)) << i << " " << j << "/" << k;
+        }
+      }
+  // Different branches of one sample draw different numbers.
+  EXPECT_NE(SobolSampler(3, 41, 5).branch(0, 4).get_1d(11), SobolSampler(3, 41, 5).branch(1, 4).get_1d(11));
+}
+
 TEST(SobolSampler, PixelsSeedsDimensionsAndHighIndicesGiveDifferentSequences) {
   auto sequence = [](uint64_t seed, uint64_t pixel, uint32_t dim, uint64_t first) {
     std::vector<float> v;

@@ -19,7 +19,8 @@ sweep, marked * where that time lies outside the swept render times ('-' beyond 
 The luminance relMSE (Rec.709 Y, same epsilon) at --colour-spp shows how much of the error is colour noise.
 
 An ochre variant NAME:key=value,... sets keys of the scene's "integrator" block (rr_depth, max_depth,
-polarization, ...) in a copy; `bin=DIR` runs that variant with another build's ochre and ochre-converge
+polarization, branches, ...) in a copy; every spp counts paths per pixel (Cycles' samples), so a variant
+with integrator.branches = k renders spp / k camera samples of k paths each; `bin=DIR` runs that variant with another build's ochre and ochre-converge
 (e.g. an export of an earlier commit, to compare before and after), else --ochre-bin. The scenes are written to OUT/scenes/ (paths made absolute); every variant is judged
 against the reference of the scene's own settings (the levers compared this way must not change the
 converged image). Output in OUT: results.csv (one row per renderer, variant and spp), summary.md (the table
@@ -119,9 +120,17 @@ class Ochre:
     def __init__(self, args, scene, label, ochre_bin):
         self.args, self.scene, self.label, self.dir = args, scene, label, ochre_bin
         self.bin = os.path.join(ochre_bin, 'ochre')
+        # integrator.branches: each camera sample traces that many paths. Every spp here counts paths per
+        # pixel, as Cycles' samples do, so a branched variant renders spp / branches camera samples.
+        self.branches = int(json.load(open(scene)).get('integrator', {}).get('branches', 1))
+
+    def camera_spp(self, spp):
+        if spp % self.branches:
+            sys.exit(f'ochre {self.label}: {spp} samples per pixel are not a multiple of its {self.branches} branches')
+        return spp // self.branches
 
     def render(self, spp, seed, exr):
-        cmd = [self.bin, 'render', self.scene, '-o', exr, '--spp', str(spp), '--seed', str(seed),
+        cmd = [self.bin, 'render', self.scene, '-o', exr, '--spp', str(self.camera_spp(spp)), '--seed', str(seed),
                '--threads', str(self.args.threads), '-q']
         subprocess.run(locked(cmd, self.args.lock), check=True)
 
@@ -130,10 +139,11 @@ class Ochre:
         for _ in range(self.args.repeat):
             csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
             cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
-                   '--spp', ','.join(map(str, spps)), '--threads', str(self.args.threads), '--csv', csv_path]
+                   '--spp', ','.join(str(self.camera_spp(s)) for s in spps), '--threads', str(self.args.threads),
+                   '--csv', csv_path]
             subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
             for row in csv.DictReader(open(csv_path)):
-                spp, s = int(row['spp']), float(row['seconds'])
+                spp, s = int(row['spp']) * self.branches, float(row['seconds'])
                 best[spp] = min(best.get(spp, math.inf), s)
         return best
 

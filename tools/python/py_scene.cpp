@@ -51,7 +51,8 @@ class RenderResult {
   const ExrImage& exr() {
     if (!exr_) {
       const std::vector<float> rgb = film_to_rgb(*film_, outputs_);
-      exr_ = std::make_unique<ExrImage>(render_exr_image(*film_, rgb, outputs_, settings_, stats_, scene_file_));
+      exr_ =
+          std::make_unique<ExrImage>(render_exr_image(*film_, rgb, outputs_, settings_, stats_, scene_file_));
     }
     return *exr_;
   }
@@ -359,6 +360,7 @@ py::dict settings_of(const Scene& s) {
   d["spp"] = s.settings.spp;
   d["max_depth"] = s.settings.max_depth;
   d["rr_depth"] = s.settings.rr_depth;
+  d["branches"] = s.settings.branches;
   d["seed"] = s.settings.seed;
   d["threads"] = s.settings.threads;
   d["sampler"] = s.settings.sampler;
