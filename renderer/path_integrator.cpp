@@ -360,10 +360,16 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
       if (!arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, false, stats, nullptr)) break;
     return s.L;
   }
-  // Branched path tracing (docs/architecture.md#branched-paths): the first vertex (camera ray, shading,
-  // next-event estimation) is shared by `branches_` continuations, each with its own numbers
-  // (Sampler::branch) and averaged. Its lobes stay in the arena below `floor` (evaluated outside the
-  // per-thread memo, which a later vertex could overwrite) while the branches reuse the space above.
+  // Branched path tracing (docs/architecture.md#branched-paths): the path up to its first vertex with a
+  // non-delta lobe (usually the first; a mirror or glass seen by the camera would hand every branch the same
+  // direction) is shared by `branches_` continuations, each with its own numbers (Sampler::branch), averaged.
+  // The shared vertex's lobes stay in the arena below `floor` (evaluated outside the per-thread memo, which a
+  // later vertex could overwrite) while the branches reuse the space above.
+  uint32_t depth = 0;
+  for (; !v.closure.has_non_delta_lobes(); ++depth)
+    if (!scatter(s, v, depth, lambda, sampler) ||
+        !arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, true, stats, nullptr))
+      return s.L;
   const size_t floor = arena.used();
   SensorStokes sum{};
   PathVertex w;
@@ -371,8 +377,8 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     const Sampler numbers = sampler.branch(j, branches_);
     PathState<T> c = s;
     c.L = SensorStokes{};
-    for (uint32_t depth = 0; scatter(c, depth == 0 ? v : w, depth, lambda, numbers); ++depth)
-      if (!arrive(c, w, depth + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
+    for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
+      if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
   }
   const float inv = 1.0f / static_cast<float>(branches_);

@@ -3,8 +3,8 @@
 // (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
 // lights handled. Radiance is traced for the 8 hero wavelengths of the path, carrying the Mueller
 // product of the polarization mode (path_throughput.h): off, intensity or stokes. With
-// integrator.branches = k, each camera sample continues from its first vertex along k paths, averaged
-// (docs/architecture.md#branched-paths).
+// integrator.branches = k, each camera sample continues from its first non-delta vertex along k paths,
+// averaged (docs/architecture.md#branched-paths).
 
 #include <algorithm>
 #include <cstdint>

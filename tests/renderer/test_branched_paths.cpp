@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
@@ -116,6 +117,36 @@ TEST(BranchedPaths, PolarizedGoldMirrorBoxAgreesWithTheUnbranchedRender) {
               mean_y(branched), mean_y(ref));
   EXPECT_NEAR(mean_y(branched) / mean_y(ref), 1.0, 0.01);
   EXPECT_LT(relmse_y(branched, ref), 5e-3);
+}
+
+// A camera that sees only a smooth gold mirror, which shows it a Lambert wall: the branches leave the wall,
+// the first vertex with a non-delta lobe, so the camera ray and the mirror bounce are traced once per camera
+// sample. max_depth 2: each branch traces one ray from the wall and stops where it lands.
+TEST(BranchedPaths, BranchesLeaveTheFirstNonDeltaVertex) {
+  const nlohmann::json scene_json = nlohmann::json::parse(R"({
+    "camera": {"type": "orthographic", "size": 1, "eye": [0, 0, 5], "target": [0, 0, 0]},
+    "film": {"resolution": [8, 8]},
+    "integrator": {"spp": 4, "branches": 3, "max_depth": 2, "mirror_lights": false},
+    "materials": {"gold": {"type": "conductor", "metal": "Au"}, "wall": {"type": "lambert", "color": 0.5}},
+    "lights": [{"type": "environment", "radiance": 1}],
+    "shapes": [{"type": "plane", "size": [4, 4], "material": "gold",
+                "transform": {"rotate": {"axis": [1, 0, 0], "angle": 45}}},
+               {"type": "plane", "size": [10, 10], "material": "wall",
+                "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 3, 0]}]},
+               {"type": "plane", "size": [10, 10], "material": "wall",
+                "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, -3, 0]}]}]
+  })");
+  const auto scene = load_scene_json(scene_json, "mirror.json", test::source_dir() / "mirror.json");
+  Film film(8, 8);
+  const RenderStats stats = render(*scene, film);
+  const uint64_t camera_samples = 8 * 8 * 4;
+  // Camera ray, mirror bounce, then 3 branches of one ray each (branching at the mirror would trace
+  // 1 + 3 x 2 rays).
+  EXPECT_EQ(stats.rays, camera_samples * (2 + 3));
+  // One light sample at the wall per camera sample at most (none where it lands behind the wall).
+  EXPECT_LE(stats.shadow_rays, camera_samples);
+  EXPECT_GT(stats.shadow_rays, camera_samples / 4);
+  EXPECT_GT(film.mean(4, 4).y, 0.05f);
 }
 
 }  // namespace
