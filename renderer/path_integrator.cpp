@@ -1,6 +1,7 @@
 #include "renderer/path_integrator.h"
 
 #include <cmath>
+#include <optional>
 
 #include "materials/core/frame.h"
 #include "materials/core/sampling.h"
@@ -50,18 +51,18 @@ void record_first_hit(const PathVertex& v, float distance, const SampledWaveleng
 // closures with no polarizing non-delta lobe) only M00 is computed.
 template <class T>
 WorldResponse vertex_response(const PathVertex& v, const Vec3& wo, const Vec3& wi_local,
-                              const SampledWavelengths& lambda, MuellerResponse& storage) {
+                              const SampledWavelengths& lambda, std::optional<MuellerResponse>& storage) {
   WorldResponse r;
   r.wo = wo;
   if (!T::kPolarized || !v.closure.has_polarizing_non_delta_lobes()) {
     r.f = v.closure.eval(v.wo_local, wi_local, lambda);
     return r;
   }
-  storage = v.closure.eval_mueller(v.wo_local, wi_local, lambda);
-  r.m = &storage.m;
-  r.f = m00(storage.m);
-  r.out_x = v.frame.to_world(storage.out_x);
-  r.in_x = v.frame.to_world(storage.in_x);
+  const MuellerResponse& m = storage.emplace(v.closure.eval_mueller(v.wo_local, wi_local, lambda));
+  r.m = &m.m;
+  r.f = m00(m.m);
+  r.out_x = v.frame.to_world(m.out_x);
+  r.in_x = v.frame.to_world(m.in_x);
   return r;
 }
 
@@ -128,7 +129,7 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return;
   const Vec3 wi_local = v.frame.to_local(ls->wi);
   if (dot(ls->wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
-  MuellerResponse storage;
+  std::optional<MuellerResponse> storage;  // only in polarized modes (0.5 KB not zeroed otherwise)
   const WorldResponse response = vertex_response<T>(v, wo, wi_local, lambda, storage);
   if (response.f.is_black()) return;
   const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
@@ -171,7 +172,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   const Vec3 wi = mirror.reflect_direction(ls->wi);
   const Vec3 wi_local = v.frame.to_local(wi);
   if (dot(wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
-  MuellerResponse storage;
+  std::optional<MuellerResponse> storage;          // only in polarized modes (0.5 KB not zeroed otherwise)
   WorldResponse at_x = vertex_response<T>(v, wo, wi_local, lambda, storage);
   if (at_x.f.is_black()) return;
   const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
@@ -206,7 +207,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
                         ? 1.0f
                         : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
   const float k = abs_cos_theta(wi_local) * mis / light_pdf;
-  if (at_x.m) storage.m = storage.m * k;
+  if (at_x.m) storage->m = storage->m * k;
   T through_mirror = throughput;
   through_mirror.scatter(at_x, at_x.f * k);
   through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);

@@ -156,8 +156,10 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
 std::optional<LobeSample> Closure::sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
                                                     const SampledWavelengths& lambda) const {
   const WeightedLobe& only = lobes_[0];
+  // Every return returns `s` (no copy of the sample's 0.5 KB Mueller response).
   std::optional<LobeSample> s = only.lobe->sample(wo, u_choice, u, lambda);
-  if (!s || !(s->pdf > 0.0f)) return std::nullopt;
+  if (s && !(s->pdf > 0.0f)) s.reset();
+  if (!s) return s;
   s->weight = s->weight * only.weight;
   if (!s->delta)
     s->has_mueller = false;  // as in the mixture: eval_mueller() gives the response when it is needed

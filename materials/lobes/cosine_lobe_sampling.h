@@ -15,14 +15,16 @@ inline float cosine_lobe_pdf(const Vec3& wo, const Vec3& wi) {
   return cosine_hemisphere_pdf(wi.z);
 }
 
-// A direction and its pdf; `weight` is left for the lobe (f cos / pdf).
+// A direction and its pdf; `weight` is left for the lobe (f cos / pdf). Built in the returned optional (one
+// named return value, so no copy: a LobeSample carries a Mueller response of 0.5 KB).
 inline std::optional<LobeSample> sample_cosine_lobe(const Vec3& wo, const Vec2& u) {
-  if (wo.z <= 0.0f) return std::nullopt;
-  LobeSample s;
+  std::optional<LobeSample> out;
+  if (wo.z <= 0.0f) return out;
+  LobeSample& s = out.emplace();
   s.wi = sample_cosine_hemisphere(u);
   s.pdf = cosine_hemisphere_pdf(s.wi.z);
-  if (!(s.pdf > 0.0f)) return std::nullopt;
-  return s;
+  if (!(s.pdf > 0.0f)) out.reset();
+  return out;
 }
 
 }  // namespace ochre
