@@ -13,7 +13,7 @@ IndependentSampler::IndependentSampler(uint64_t seed, uint64_t pixel_index, uint
                          FromPixelBase{}) {}
 
 IndependentSampler IndependentSampler::branch(uint32_t j, uint32_t k) const {
-  return IndependentSampler(pixel_base_, sample_index_ * k + j, FromPixelBase{});
+  return IndependentSampler(mix64(pixel_base_ ^ kBranchStream), sample_index_ * k + j, FromPixelBase{});
 }
 
 float IndependentSampler::get_1d(uint32_t dimension) const {

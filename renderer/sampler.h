@@ -31,6 +31,8 @@ struct SampleDims {
 };
 
 struct FromPixelBase {};  // tag: constructor from the hash of (seed, pixel)
+// Salt of a pixel's branch stream (Sampler::branch).
+inline constexpr uint64_t kBranchStream = 0x5851f42d4c957f2dull;
 
 class IndependentSampler {
  public:
@@ -39,9 +41,10 @@ class IndependentSampler {
   // Uniform number in [0, 1) for a given dimension.
   float get_1d(uint32_t dimension) const;
   Vec2 get_2d(uint32_t dimension) const { return {get_1d(dimension), get_1d(dimension + 1)}; }
-  // The sampler of sample index (this index) x k + j: the numbers of branch j of the k continuations of
-  // this sample (PathIntegrator, integrator.branches). Every sample index stays a pure function of
-  // (seed, pixel, sample index), so branched renders are deterministic too.
+  // The numbers of branch j of the k continuations of this sample (PathIntegrator, integrator.branches):
+  // index (this index) x k + j of the pixel's branch stream, a second stream with scrambles of its own, so
+  // no branch shares a number with a camera sample's path (which may use the same dimensions, e.g. behind
+  // a mirror). Still a pure function of (seed, pixel, sample index, dimension).
   IndependentSampler branch(uint32_t j, uint32_t k) const;
 
  private:

@@ -84,9 +84,10 @@ class SobolSampler {
   // Point of the scrambled 2D Sobol (0,2)-sequence owned by `dimension` (the layout of
   // SampleDims reserves dimension and dimension + 1 for it).
   Vec2 get_2d(uint32_t dimension) const;
-  // The sampler of sample index (this index) x k + j: the numbers of branch j of the k continuations of
-  // this sample (PathIntegrator, integrator.branches). Every sample index stays a pure function of
-  // (seed, pixel, sample index), so branched renders are deterministic too.
+  // The numbers of branch j of the k continuations of this sample (PathIntegrator, integrator.branches):
+  // index (this index) x k + j of the pixel's branch stream, a second stream with scrambles of its own, so
+  // no branch shares a number with a camera sample's path (which may use the same dimensions, e.g. behind
+  // a mirror). Still a pure function of (seed, pixel, sample index, dimension).
   SobolSampler branch(uint32_t j, uint32_t k) const;
 
  private:
@@ -123,7 +124,7 @@ inline SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel_index, uint64_t 
     : SobolSampler(mix64(mix64(seed ^ 0x6a09e667f3bcc909ull) ^ pixel_index), sample_index, FromPixelBase{}) {}
 
 inline SobolSampler SobolSampler::branch(uint32_t j, uint32_t k) const {
-  return SobolSampler(pixel_base_, sample_index_ * k + j, FromPixelBase{});
+  return SobolSampler(mix64(pixel_base_ ^ kBranchStream), sample_index_ * k + j, FromPixelBase{});
 }
 
 inline SobolSampler::DimensionScramble SobolSampler::scramble_for(uint32_t dimension) const {

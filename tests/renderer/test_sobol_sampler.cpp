@@ -182,23 +182,34 @@ TEST(SobolSampler, DeterministicPureFunction) {
   EXPECT_EQ(s.get_1d(3), SobolSampler(7, 99, 1ull << 40).get_1d(3));
 }
 
-// Branch j of the k continuations of sample i (integrator.branches) draws the numbers of sample i k + j, in
-// both samplers, also where i k + j passes 2^32 (the Sobol index's high bits select another scramble).
-TEST(SobolSampler, BranchJOfKIsTheSamplerOfIndexTimesKPlusJ) {
-  for (uint64_t i : {uint64_t{0}, uint64_t{5}, uint64_t{1} << 31, (uint64_t{1} << 32) + 3})
-    for (uint32_t k : {2u, 4u, 7u})
-      for (uint32_t j = 0; j < k; ++j) {
-        const SobolSampler branch = SobolSampler(3, 41, i).branch(j, k), direct(3, 41, i * k + j);
-        const IndependentSampler ibranch = IndependentSampler(3, 41, i).branch(j, k),
-                                 idirect(3, 41, i * k + j);
-        for (uint32_t dim : {0u, 3u, 11u, 60u}) {
-          EXPECT_EQ(branch.get_2d(dim).x, direct.get_2d(dim).x) << i << " " << j << "/" << k;
-          EXPECT_EQ(branch.get_2d(dim).y, direct.get_2d(dim).y) << i << " " << j << "/" << k;
-          EXPECT_EQ(ibranch.get_1d(dim), idirect.get_1d(dim)) << i << " " << j << "/" << k;
-        }
+// Branch j of the k continuations of sample i (integrator.branches) draws index i k + j of the pixel's branch
+// stream: the same numbers for any (i, k, j) with the same i k + j, also past 2^32 (the Sobol index's high
+// bits select another scramble), and none of the camera samples' numbers.
+TEST(SobolSampler, BranchJOfKIsIndexIKPlusJOfTheBranchStream) {
+  for (uint32_t dim : {0u, 3u, 11u, 60u}) {
+    for (uint64_t i : {uint64_t{5}, (uint64_t{1} << 32) + 3}) {
+      const SobolSampler a = SobolSampler(3, 41, i).branch(1, 4), b = SobolSampler(3, 41, 2 * i).branch(1, 2);
+      EXPECT_EQ(a.get_2d(dim).x, b.get_2d(dim).x);
+      EXPECT_EQ(a.get_2d(dim).y, b.get_2d(dim).y);
+      EXPECT_EQ(IndependentSampler(3, 41, i).branch(1, 4).get_1d(dim),
+                IndependentSampler(3, 41, 2 * i).branch(1, 2).get_1d(dim));
+      EXPECT_NE(a.get_1d(dim), SobolSampler(3, 41, 4 * i + 1).get_1d(dim));  // not the camera stream
+      EXPECT_NE(IndependentSampler(3, 41, i).branch(1, 4).get_1d(dim),
+                IndependentSampler(3, 41, 4 * i + 1).get_1d(dim));
+    }
+  }
+  // The branches of a pixel's first 16 samples, 4 each, are 64 consecutive points of the stream: a
+  // (0,6,2)-net, one point in each of the 8 x 8 cells of every 2D dimension (stratified among themselves and
+  // across samples).
+  for (uint32_t dim : {7u, 12u}) {
+    std::vector<int> cells(64, 0);
+    for (uint64_t i = 0; i < 16; ++i)
+      for (uint32_t j = 0; j < 4; ++j) {
+        const Vec2 p = SobolSampler(9, 123, i).branch(j, 4).get_2d(dim);
+        ++cells[static_cast<int>(p.y * 8) * 8 + static_cast<int>(p.x * 8)];
       }
-  // Different branches of one sample draw different numbers.
-  EXPECT_NE(SobolSampler(3, 41, 5).branch(0, 4).get_1d(11), SobolSampler(3, 41, 5).branch(1, 4).get_1d(11));
+    for (int c : cells) EXPECT_EQ(c, 1) << "dimension " << dim;
+  }
 }
 
 TEST(SobolSampler, PixelsSeedsDimensionsAndHighIndicesGiveDifferentSequences) {
