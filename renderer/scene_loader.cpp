@@ -615,6 +615,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.height) s.height = *o.height;
   if (o.polarization) s.polarization = *o.polarization;
   if (o.sampler) s.sampler = *o.sampler;
+  if (o.branches) s.branches = *o.branches;
 }
 
 // An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power

@@ -23,6 +23,7 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<std::string> polarization;
   std::optional<std::string> sampler;
+  std::optional<int> branches;  // integrator.branches (ochre-converge variants)
   // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
   std::vector<std::pair<std::string, std::string>> parameters;
   std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)

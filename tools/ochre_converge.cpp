@@ -94,12 +94,16 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     number(o.height);
   else if (key == "polarization")
     o.polarization = value;
-  else if (key == "spp")
+  else if (key == "branches") {
+    number(o.branches);
+    if (*o.branches < 1 || *o.branches > 64)
+      throw InputError(fmt::format("--variant '{}': branches must be in [1, 64], not {}", spec, *o.branches));
+  } else if (key == "spp")
     throw InputError(fmt::format("--variant '{}': spp is swept by --spp, not set per variant", spec));
   else
     throw InputError(
         fmt::format("--variant '{}': unknown setting '{}' (sampler, seed, threads, width, height, "
-                    "polarization)",
+                    "polarization, branches)",
                     spec, key));
 }
 
@@ -318,7 +322,7 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--spp", cmd.spp, "Sample counts, e.g. 1,4,16,64")->delimiter(',')->required();
   app.add_option("--variant", cmd.variant_specs,
-                 "NAME:key=value,... with keys sampler, seed, threads, width, height, polarization "
+                 "NAME:key=value,... with keys sampler, seed, threads, width, height, polarization, branches "
                  "(repeatable; default one variant 'base')");
   app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds");
   app.add_option("--plot", cmd.plot,

@@ -104,6 +104,24 @@ TEST(Converge, TwoSamplerVariantsBothAppearWithEqualTimeRatio) {
   EXPECT_NE(r.output.find("relMSE(sobol) / relMSE(independent)"), std::string::npos) << r.output;
 }
 
+// integrator.branches as a variant: four paths per camera sample, less error at the largest count than one.
+TEST(Converge, BranchesVariantLowersTheErrorPerSample) {
+  const auto dir = scratch_dir();
+  const ConvergeResult r =
+      run_converge(cornell_args() + " --variant one:branches=1 --variant four:branches=4 --csv out.csv", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::map<std::string, std::vector<double>> relmse;
+  for (const CsvRow& row : read_csv(dir / "out.csv")) relmse[row.variant].push_back(row.relmse);
+  ASSERT_EQ(relmse["one"].size(), 3u);
+  ASSERT_EQ(relmse["four"].size(), 3u);
+  EXPECT_LT(relmse["four"][2], relmse["one"][2]);
+  EXPECT_NE(r.output.find("relMSE(four) / relMSE(one)"), std::string::npos) << r.output;
+
+  const ConvergeResult bad = run_converge(cornell_args() + " --variant many:branches=65", dir);
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("branches must be in [1, 64]"), std::string::npos) << bad.output;
+}
+
 TEST(Converge, MissingReferenceExitsTwoNamingIt) {
   const auto dir = scratch_dir();
   const ConvergeResult r = run_converge(
