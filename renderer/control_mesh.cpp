@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -88,6 +89,7 @@ class Welder {
       const aiFace& face = in.mFaces[f];
       const std::vector<unsigned> corners = distinct_neighbour_corners(face, welded);
       if (corners.size() < 3) continue;  // points, lines, faces of no area
+      if (!faces_.insert(canonical_cycle(corners, welded)).second) continue;  // a face given twice
       out_.face_sizes.push_back(static_cast<int>(corners.size()));
       for (const unsigned corner : corners) {
         out_.face_vertices.push_back(welded[corner]);
@@ -143,6 +145,21 @@ class Welder {
 
   ControlMesh& out_;
   VertexColourEncoding encoding_;
+  // The welded vertex cycle of a face from its least vertex, in the direction whose second vertex is the
+  // lesser: the same for a face written again from another corner or with the other winding.
+  static std::vector<int> canonical_cycle(const std::vector<unsigned>& corners,
+                                          const std::vector<int>& welded) {
+    std::vector<int> cycle;
+    for (const unsigned corner : corners) cycle.push_back(welded[corner]);
+    std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
+    if (cycle.back() < cycle[1]) std::reverse(cycle.begin() + 1, cycle.end());
+    return cycle;
+  }
+
+  // Faces met so far (canonical_cycle): a face given twice makes its edges meet four faces, a non-manifold
+  // surface OpenSubdiv's limit evaluation cannot take (it corrupted memory; a fuzzing finding) and that
+  // adds nothing to the surface.
+  std::set<std::vector<int>> faces_;
   std::unordered_map<PositionKey, int, PositionKeyHash> vertex_of_;
   std::unordered_map<UvKey, int, UvKeyHash> uv_of_;
   std::vector<Vec3> colours_;

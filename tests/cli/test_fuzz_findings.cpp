@@ -153,6 +153,23 @@ TEST(FuzzFindings, ZeroLengthEdgesOfAControlMeshAreDropped) {
   EXPECT_TRUE(same_exr_pixels(dir / "clean.exr", dir / "welded.exr"));
 }
 
+// A face given twice (from another corner, with either winding) made OpenSubdiv's limit evaluation corrupt
+// memory on a non-manifold mesh (fuzz_mesh, tests/fuzz/corpus/mesh/finding_duplicate_faces.obj): duplicates
+// are dropped, and the surface is the one without them.
+TEST(FuzzFindings, DuplicateFacesOfAControlMeshAreDropped) {
+  const auto dir = scratch_dir();
+  write_text(dir / "scene.json", R"({"camera": {"eye": [-4, 2.5, 3]}, "film": {"resolution": [24, 24]},
+    "integrator": {"spp": 2}, "materials": {"m": {"type": "lambert"}},
+    "lights": [{"type": "point", "position": [-3, 4, -1], "intensity": 20}],
+    "shapes": [{"type": "mesh", "file": "cube.obj", "material": "m", "subdivision": {"level": 2}}]})");
+  write_text(dir / "cube.obj", cube_obj("4 1 5 8"));
+  ASSERT_EQ(run_ochre("render scene.json -o clean.exr", dir).exit_code, 0);
+  write_text(dir / "cube.obj", cube_obj("4 1 5 8") + "f 1 5 8 4\nf 8 5 1 4\nf 4 1 5 8\n");
+  const CommandResult twice = run_ochre("render scene.json -o twice.exr", dir);
+  ASSERT_EQ(twice.exit_code, 0) << twice.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "clean.exr", dir / "twice.exr"));
+}
+
 // A control mesh whose every face has fewer than 3 distinct vertices has nothing to refine.
 TEST(FuzzFindings, AControlMeshOfDegenerateFacesOnlyIsRejected) {
   expect_rejected(
