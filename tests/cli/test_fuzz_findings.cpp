@@ -121,6 +121,15 @@ std::string cube_obj(const std::string& face_5) {
          face_5 + "\n";
 }
 
+// scene.json: cube.obj subdivided, its face x = -1 towards the camera, lit from the side so that its shading
+// shows the limit surface's normals.
+void write_subdivided_cube_scene(const std::filesystem::path& dir) {
+  write_text(dir / "scene.json", R"({"camera": {"eye": [-4, 2.5, 3]}, "film": {"resolution": [24, 24]},
+    "integrator": {"spp": 2}, "materials": {"m": {"type": "lambert"}},
+    "lights": [{"type": "point", "position": [-3, 4, -1], "intensity": 20}],
+    "shapes": [{"type": "mesh", "file": "cube.obj", "material": "m", "subdivision": {"level": 2}}]})");
+}
+
 // Control-mesh faces with an edge of zero length (a vertex repeated, or two corners at the same position,
 // welded into one) can make OpenSubdiv write outside its buffers: fuzz_mesh found a heap corruption (then a
 // SEGV) and an assertion of Catmull-Clark's vertex masks under the sanitizers, on meshes combining several
@@ -129,12 +138,7 @@ std::string cube_obj(const std::string& face_5) {
 // corners goes with it: the surface must be the one without them, to the bit.
 TEST(FuzzFindings, ZeroLengthEdgesOfAControlMeshAreDropped) {
   const auto dir = scratch_dir();
-  // The subdivided cube, its face x = -1 towards the camera, lit from the side so that its shading shows
-  // the limit surface's normals.
-  write_text(dir / "scene.json", R"({"camera": {"eye": [-4, 2.5, 3]}, "film": {"resolution": [24, 24]},
-    "integrator": {"spp": 2}, "materials": {"m": {"type": "lambert"}},
-    "lights": [{"type": "point", "position": [-3, 4, -1], "intensity": 20}],
-    "shapes": [{"type": "mesh", "file": "cube.obj", "material": "m", "subdivision": {"level": 2}}]})");
+  write_subdivided_cube_scene(dir);
   write_text(dir / "cube.obj", cube_obj("4 1 5 8"));
   ASSERT_EQ(run_ochre("render scene.json -o clean.exr", dir).exit_code, 0);
   // The picture sees that face: the cube with a triangle there instead renders differently.
@@ -158,10 +162,7 @@ TEST(FuzzFindings, ZeroLengthEdgesOfAControlMeshAreDropped) {
 // are dropped, and the surface is the one without them.
 TEST(FuzzFindings, DuplicateFacesOfAControlMeshAreDropped) {
   const auto dir = scratch_dir();
-  write_text(dir / "scene.json", R"({"camera": {"eye": [-4, 2.5, 3]}, "film": {"resolution": [24, 24]},
-    "integrator": {"spp": 2}, "materials": {"m": {"type": "lambert"}},
-    "lights": [{"type": "point", "position": [-3, 4, -1], "intensity": 20}],
-    "shapes": [{"type": "mesh", "file": "cube.obj", "material": "m", "subdivision": {"level": 2}}]})");
+  write_subdivided_cube_scene(dir);
   write_text(dir / "cube.obj", cube_obj("4 1 5 8"));
   ASSERT_EQ(run_ochre("render scene.json -o clean.exr", dir).exit_code, 0);
   write_text(dir / "cube.obj", cube_obj("4 1 5 8") + "f 1 5 8 4\nf 8 5 1 4\nf 4 1 5 8\n");
