@@ -21,7 +21,8 @@ struct RenderSettings {
   // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
   // (docs/architecture.md#branched-paths).
   int branches = 1;
-  bool mirror_lights = true;  // sample lights through planar mirrors (renderer/planar_mirrors.h)
+  static constexpr int kMaxBranches = 64;  // past a few, the first vertex's noise dominates
+  bool mirror_lights = true;               // sample lights through planar mirrors (renderer/planar_mirrors.h)
   // Light choice for next-event estimation: "local" (by importance at each point, for 2-8 lights; scene.h)
   // or "power" (by power alone).
   std::string light_selection = "local";

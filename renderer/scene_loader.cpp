@@ -39,7 +39,6 @@ namespace {
 
 constexpr long long kMaxResolution = 65536;  // pixels per film side
 constexpr int kMaxThreads = 4096;            // as --threads
-constexpr int kMaxBranches = 64;  // integrator.branches: past a few, the first vertex's noise dominates
 
 // Files named by materials resolve relative to the scene file; textures go to the OIIO provider.
 class SceneResources final : public ResourceResolver {
@@ -115,7 +114,7 @@ void load_settings(const JsonFields& top, Scene& scene) {
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
-    s.branches = static_cast<int>(f.integer("branches", s.branches, 1, kMaxBranches));
+    s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.light_selection = f.string("light_selection", s.light_selection);
     if (s.light_selection != "local" && s.light_selection != "power")

@@ -29,6 +29,7 @@
 #include "renderer/output_transaction.h"
 #include "renderer/render.h"
 #include "renderer/render_output.h"
+#include "renderer/render_settings.h"
 #include "renderer/scene_loader.h"
 #include "renderer/signal_cleanup.h"
 #include "tools/python_script.h"
@@ -96,8 +97,9 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     o.polarization = value;
   else if (key == "branches") {
     number(o.branches);
-    if (*o.branches < 1 || *o.branches > 64)
-      throw InputError(fmt::format("--variant '{}': branches must be in [1, 64], not {}", spec, *o.branches));
+    if (*o.branches < 1 || *o.branches > ochre::RenderSettings::kMaxBranches)
+      throw InputError(fmt::format("--variant '{}': branches must be in [1, {}], not {}", spec,
+                                   ochre::RenderSettings::kMaxBranches, *o.branches));
   } else if (key == "spp")
     throw InputError(fmt::format("--variant '{}': spp is swept by --spp, not set per variant", spec));
   else
