@@ -28,7 +28,7 @@ void CompiledMaterial::evaluate(const ShadingContext& ctx, LobeArena& arena, Clo
   if (!ctx.lambda) throw std::invalid_argument("material '" + name_ + "': ShadingContext::lambda is not set");
   float frame[kMaxFrameFloats];
   std::memcpy(frame, program_.initial_frame.data(), program_.initial_frame.size() * sizeof(float));
-  out = Closure();
+  out.clear();
 
   const uint16_t* operands = program_.operands.data();
   auto args = [&](const Instruction& ins) {

@@ -19,6 +19,26 @@ class Closure {
  public:
   static constexpr int kMaxLobes = 8;
 
+  Closure() = default;
+  // Copies carry only the lobes in use: a closure is copied at every path vertex (from the per-thread
+  // memo), and the unused slots of the fixed array (320 bytes with eight wavelengths) are never read.
+  Closure(const Closure& other) { *this = other; }
+  Closure& operator=(const Closure& other) {
+    for (int i = 0; i < other.count_; ++i) lobes_[i] = other.lobes_[i];
+    count_ = other.count_;
+    emission_ = other.emission_;
+    tangent_ = other.tangent_;
+    has_tangent_ = other.has_tangent_;
+    return *this;
+  }
+  // Back to no lobes, no emission and no tangent (the unused lobe slots are left as they are).
+  void clear() {
+    count_ = 0;
+    emission_ = SampledSpectrum(0.0f);
+    tangent_ = Vec3{};
+    has_tangent_ = false;
+  }
+
   // Adds a lobe with its weight; lobes with zero weight are dropped, equal lobes are not merged.
   void add_lobe(const Lobe* lobe, const SampledSpectrum& weight);
   void add_emission(const SampledSpectrum& radiance) { emission_ += radiance; }

@@ -85,5 +85,49 @@ TEST(Closure, OneLobePdfIsTheLobePdf) {
   EXPECT_EQ(closure.pdf(wo, Vec3(0, 0, -1), test_wavelengths()), 0.0f);
 }
 
+// Copies carry only the lobes in use and clear() keeps the old slots: what a copy or a cleared closure
+// reports must not depend on what the target held before.
+TEST(Closure, CopiesAndClearDoNotKeepTheTargetsOldLobes) {
+  const LambertLobe lambert;
+  const SmoothConductorLobe silver(SampledSpectrum(0.15f), SampledSpectrum(3.6f));
+  Closure big;
+  for (int i = 0; i < 3; ++i)
+    big.add_lobe(i == 1 ? static_cast<const Lobe*>(&silver) : &lambert, kWeight * (i + 1.0f));
+  big.add_emission(SampledSpectrum(2.0f));
+  big.set_tangent(Vec3(1, 0, 0));
+
+  Closure one;
+  one.add_lobe(&lambert, kWeight);
+  Closure target = big;  // copy construction: everything of big
+  ASSERT_EQ(target.lobe_count(), 3);
+  EXPECT_EQ(target.lobe(1).lobe, &silver);
+  EXPECT_EQ(target.lobe(2).weight[0], kWeight[0] * 3.0f);
+  EXPECT_EQ(target.emission()[0], 2.0f);
+  EXPECT_TRUE(target.has_tangent());
+  EXPECT_TRUE(target.has_transmission() == big.has_transmission() && target.polarizes());
+
+  target = one;  // fewer lobes over more: the silver lobe must be gone
+  ASSERT_EQ(target.lobe_count(), 1);
+  EXPECT_EQ(target.lobe(0).lobe, &lambert);
+  EXPECT_FALSE(target.polarizes());
+  EXPECT_FALSE(target.has_tangent());
+  EXPECT_TRUE(target.emission().is_black());
+  const Vec3 wo = normalize(Vec3(0.3f, 0.1f, 0.8f)), wi = normalize(Vec3(-0.2f, 0.4f, 0.7f));
+  const SampledSpectrum want = one.eval(wo, wi, test_wavelengths());
+  const SampledSpectrum got = target.eval(wo, wi, test_wavelengths());
+  for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(got[k], want[k]);
+
+  target = big;
+  target.clear();
+  EXPECT_EQ(target.lobe_count(), 0);
+  EXPECT_FALSE(target.has_lobes());
+  EXPECT_FALSE(target.has_non_delta_lobes());
+  EXPECT_FALSE(target.has_tangent());
+  EXPECT_TRUE(target.emission().is_black());
+  target.add_lobe(&silver, kWeight);  // refilled after clear(): only the new lobe counts
+  EXPECT_EQ(target.lobe_count(), 1);
+  EXPECT_FALSE(target.has_non_delta_lobes());
+}
+
 }  // namespace
 }  // namespace ochre::test
