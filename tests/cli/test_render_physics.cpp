@@ -49,9 +49,9 @@ TEST(WhiteFurnace, BranchedPathsRenderAlbedoTimesL) {
   EXPECT_NEAR(sphere, 0.5, 0.005 * 0.5);
 }
 
-// Russian roulette on branched paths (the box benchmark scenes start it at depth 3 with two branches): from
-// the first bounce on, each continuation survives with probability sqrt(0.5) and is reweighted by its
-// inverse, and the average of the branches still renders albedo x L.
+// Russian roulette on branched paths (the matched-box benchmark scene starts it at depth 3 with two
+// branches): from the first bounce on, each continuation survives with probability sqrt(0.5) and is
+// reweighted by its inverse, and the average of the branches still renders albedo x L.
 TEST(WhiteFurnace, RouletteOnBranchedPathsRendersAlbedoTimesL) {
   const LuminanceImage img = render_luminance(furnace_scene(0.5, 64, 4, 1));
   const double sphere = img.mean(16, 16, 32, 32);
