@@ -269,8 +269,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   v.mesh = hit->mesh;
   const Vec3 wo = -s.ray.dir;
   const Mesh& mesh = scene_.meshes[hit->mesh];
-  arena.reset(arena_floor);
-  v.closure.clear();
+  arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
   s.path_length += hit->t * length(s.ray.dir);
   ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
   // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
