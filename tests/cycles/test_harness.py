@@ -90,6 +90,18 @@ class Variants(unittest.TestCase):
             name, path, _ = rb.variant_scene(args, 'plain')
             self.assertEqual(json.load(open(path))['integrator'], json.load(open(scene))['integrator'])
 
+    def test_interleaved_rounds_alternate_renderers_and_keep_the_fastest_time(self):
+        calls = []
+        def sweep(key, times):  # a renderer whose k-th sweep takes times[k] seconds at every spp
+            def run():
+                calls.append(key)
+                return {8: times[calls.count(key) - 1], 32: 4 * times[calls.count(key) - 1]}
+            return run
+        best = rb.interleaved_best({'cycles': sweep('cycles', [3.0, 2.0, 2.5]),
+                                    'ochre a': sweep('ochre a', [1.0, 1.5, 0.5])}, 3)
+        self.assertEqual(calls, ['cycles', 'ochre a'] * 3)  # rounds, not one renderer's repeats in a row
+        self.assertEqual(best, {'cycles': {8: 2.0, 32: 8.0}, 'ochre a': {8: 0.5, 32: 2.0}})
+
     def test_branched_variants_count_paths_per_pixel(self):
         with tempfile.TemporaryDirectory() as out:
             os.makedirs(os.path.join(out, 'scenes'))

@@ -9,7 +9,8 @@
 Each renderer is judged against its own converged reference (two renders of ref_spp/2 with seeds 1001
 and 1002, averaged; a quarter of their squared difference estimates the reference's own relMSE, the
 floor). The sweep renders every spp with seed 0, --repeat times, keeping the fastest run (the seed is
-fixed, so the image is the same). Render seconds exclude scene loading and BVH builds for both:
+fixed, so the image is the same); the repeats run in rounds, each renderer and variant once per round, so a
+machine whose speed drifts during the benchmark (a shared VM) slows all of them alike. Render seconds exclude scene loading and BVH builds for both:
 Cycles' 'Render time (without synchronization)', ochre-converge's in-process render timer.
 relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over pixels and R, G, B; C = relMSE x seconds, the
 geometric mean over the swept spp (lower is better: relMSE ~ C / t), also with the floor subtracted.
@@ -26,7 +27,7 @@ against the reference of the scene's own settings (the levers compared this way 
 converged image). Output in OUT: results.csv (one row per renderer, variant and spp), summary.md (the table
 of C), images in OUT/exr/. With --lock FILE every timed render runs under `flock FILE`.
 """
-import argparse, csv, json, math, os, re, shutil, subprocess, sys, time
+import argparse, csv, json, math, os, re, shutil, subprocess, sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -106,12 +107,11 @@ class Cycles:
             sys.exit(f'Blender failed on {exr} (rc {p.returncode}):\n' + (p.stdout + p.stderr)[-4000:])
         return float(m.group(1))
 
-    def sweep(self, spps, exr_dir):  # -> {spp: (seconds, exr)}
-        out = {}
-        for spp in spps:
-            exr = os.path.join(exr_dir, f'cycles_spp{spp}.exr')
-            out[spp] = (min(self.render(spp, 0, exr) for _ in range(self.args.repeat)), exr)
-        return out
+    def exr(self, spp):
+        return os.path.join(self.args.out, 'exr', f'cycles_spp{spp}.exr')
+
+    def time_sweep(self, spps):  # one render of every spp -> {spp: seconds}; the images stay in OUT/exr
+        return {spp: self.render(spp, 0, self.exr(spp)) for spp in spps}
 
 
 class Ochre:
@@ -134,18 +134,25 @@ class Ochre:
                '--threads', str(self.args.threads), '-q']
         subprocess.run(locked(cmd, self.args.lock), check=True)
 
-    def sweep(self, spps, ref_exr):  # -> {spp: seconds}; relMSE comes from our own reading of images
-        best = {}
-        for _ in range(self.args.repeat):
-            csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
-            cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
-                   '--spp', ','.join(str(self.camera_spp(s)) for s in spps), '--threads', str(self.args.threads),
-                   '--csv', csv_path]
-            subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
-            for row in csv.DictReader(open(csv_path)):
-                spp, s = int(row['spp']) * self.branches, float(row['seconds'])
-                best[spp] = min(best.get(spp, math.inf), s)
-        return best
+    def time_sweep(self, spps, ref_exr):  # one ochre-converge run -> {spp: seconds}; relMSE from our own reading
+        csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
+        cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
+               '--spp', ','.join(str(self.camera_spp(s)) for s in spps), '--threads', str(self.args.threads),
+               '--csv', csv_path]
+        subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
+        return {int(row['spp']) * self.branches: float(row['seconds']) for row in csv.DictReader(open(csv_path))}
+
+
+def interleaved_best(sweeps, repeat):
+    """sweeps: {key: function() -> {spp: seconds}}. Runs them in turn, `repeat` rounds (all keys once per
+    round, so a machine whose speed drifts during the benchmark slows every renderer alike), and keeps each
+    key's fastest time per spp -> {key: {spp: seconds}}."""
+    best = {key: {} for key in sweeps}
+    for _ in range(repeat):
+        for key, sweep in sweeps.items():
+            for spp, seconds in sweep().items():
+                best[key][spp] = min(best[key].get(spp, math.inf), seconds)
+    return best
 
 
 def variant_scene(args, spec):
@@ -266,34 +273,46 @@ def main():
     if 'cycles' in renderers and not shutil.which(args.blender):
         sys.exit(f'{args.blender} not found: apt-get install -y --no-install-recommends blender (docs/performance.md)')
 
-    results, summaries = [], []
+    # References first, then the timed sweeps of every renderer and variant in interleaved rounds.
+    pixels, sweeps = 0, {}
     if 'cycles' in renderers:
         cy = Cycles(args, args.scene)
-        ref, floor, _ = reference(args, cy, 'cycles')
-        rows = []
-        for spp, (seconds, exr) in cy.sweep(spps, os.path.join(args.out, 'exr')).items():
-            x = read_exr(exr)
-            rows.append(dict(renderer='cycles', variant='cycles', spp=spp, seconds=seconds, relmse=relmse(x, ref),
-                             luminance_relmse=luminance_relmse(x, ref)))
-            print(f"cycles spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
-        summaries.append(summarise('Cycles', rows, floor, ref.shape[0] * ref.shape[1], args.colour_spp))
-        results += rows
+        cycles_ref, cycles_floor, _ = reference(args, cy, 'cycles')
+        pixels = cycles_ref.shape[0] * cycles_ref.shape[1]
+        sweeps['cycles'] = lambda: cy.time_sweep(spps)
+    ochres = []
     if 'ochre' in renderers:
-        variants = [variant_scene(args, v) for v in (args.variant or ['ochre'])]
         _, ref_scene, _ = variant_scene(args, 'reference')
-        ref, floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
-        for label, scene, ochre_bin in variants:
+        ochre_ref, ochre_floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
+        pixels = ochre_ref.shape[0] * ochre_ref.shape[1]
+        for label, scene, ochre_bin in (variant_scene(args, v) for v in (args.variant or ['ochre'])):
             o = Ochre(args, scene, label, ochre_bin)
-            rows = []
-            for spp, seconds in o.sweep(spps, ref_exr).items():
-                exr = os.path.join(args.out, 'exr', f'ochre_{label}_spp{spp}.exr')
-                o.render(spp, 0, exr)  # the same image ochre-converge timed (same seed and settings)
-                x = read_exr(exr)
-                rows.append(dict(renderer='ochre', variant=label, spp=spp, seconds=seconds, relmse=relmse(x, ref),
-                                 luminance_relmse=luminance_relmse(x, ref)))
-                print(f"ochre {label} spp {spp}: {seconds:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
-            summaries.append(summarise(f'ochre {label}', rows, floor, ref.shape[0] * ref.shape[1], args.colour_spp))
-            results += rows
+            ochres.append(o)
+            sweeps[f'ochre {label}'] = lambda o=o: o.time_sweep(spps, ref_exr)
+    best = interleaved_best(sweeps, args.repeat)
+
+    results, summaries = [], []
+    if 'cycles' in renderers:
+        rows = []
+        for spp in spps:
+            x = read_exr(cy.exr(spp))
+            rows.append(dict(renderer='cycles', variant='cycles', spp=spp, seconds=best['cycles'][spp],
+                             relmse=relmse(x, cycles_ref), luminance_relmse=luminance_relmse(x, cycles_ref)))
+            print(f"cycles spp {spp}: {rows[-1]['seconds']:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
+        summaries.append(summarise('Cycles', rows, cycles_floor, pixels, args.colour_spp))
+        results += rows
+    for o in ochres:
+        rows = []
+        for spp in spps:
+            exr = os.path.join(args.out, 'exr', f'ochre_{o.label}_spp{spp}.exr')
+            o.render(spp, 0, exr)  # the same image ochre-converge timed (same seed and settings)
+            x = read_exr(exr)
+            rows.append(dict(renderer='ochre', variant=o.label, spp=spp, seconds=best[f'ochre {o.label}'][spp],
+                             relmse=relmse(x, ochre_ref), luminance_relmse=luminance_relmse(x, ochre_ref)))
+            print(f"ochre {o.label} spp {spp}: {rows[-1]['seconds']:.3f} s, relMSE {rows[-1]['relmse']:.4g}",
+                  flush=True)
+        summaries.append(summarise(f'ochre {o.label}', rows, ochre_floor, pixels, args.colour_spp))
+        results += rows
 
     with open(os.path.join(args.out, 'results.csv'), 'w', newline='') as f:
         w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
