@@ -9,9 +9,10 @@
 Each renderer is judged against its own converged reference (two renders of ref_spp/2 with seeds 1001
 and 1002, averaged; a quarter of their squared difference estimates the reference's own relMSE, the
 floor). The sweep renders every spp with seed 0, --repeat times, keeping the fastest run (the seed is
-fixed, so the image is the same); the repeats run in rounds, each renderer and variant once per round, so a
-machine whose speed drifts during the benchmark (a shared VM) slows all of them alike. Render seconds exclude scene loading and BVH builds for both:
-Cycles' 'Render time (without synchronization)', ochre-converge's in-process render timer.
+fixed, so the image is the same); the repeats run in rounds, each renderer and variant once per round, so
+a machine whose speed drifts during the benchmark (a shared VM) slows all of them alike. Render seconds
+exclude scene loading and BVH builds for both: Cycles' 'Render time (without synchronization)',
+ochre-converge's in-process render timer.
 relMSE = mean((x - ref)^2 / (ref^2 + 1e-2)) over pixels and R, G, B; C = relMSE x seconds, the
 geometric mean over the swept spp (lower is better: relMSE ~ C / t), also with the floor subtracted.
 relMSE at 1 s and at 10 s are read off the least-squares line through (log seconds, log relMSE) of the
@@ -155,6 +156,18 @@ def interleaved_best(sweeps, repeat):
     return best
 
 
+def judged_rows(renderer, variant, spps, seconds, image_of, ref):
+    """One results row per spp: the timed seconds and the relMSE of image_of(spp) (an EXR path) against ref."""
+    rows = []
+    for spp in spps:
+        x = read_exr(image_of(spp))
+        rows.append(dict(renderer=renderer, variant=variant, spp=spp, seconds=seconds[spp], relmse=relmse(x, ref),
+                         luminance_relmse=luminance_relmse(x, ref)))
+        name = renderer if variant == renderer else f'{renderer} {variant}'
+        print(f"{name} spp {spp}: {seconds[spp]:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
+    return rows
+
+
 def variant_scene(args, spec):
     """Writes the scene of an ochre variant NAME:key=value,... (keys of the integrator block)."""
     name, _, rest = spec.partition(':')
@@ -274,44 +287,37 @@ def main():
         sys.exit(f'{args.blender} not found: apt-get install -y --no-install-recommends blender (docs/performance.md)')
 
     # References first, then the timed sweeps of every renderer and variant in interleaved rounds.
-    pixels, sweeps = 0, {}
+    sweeps = {}
     if 'cycles' in renderers:
         cy = Cycles(args, args.scene)
         cycles_ref, cycles_floor, _ = reference(args, cy, 'cycles')
-        pixels = cycles_ref.shape[0] * cycles_ref.shape[1]
         sweeps['cycles'] = lambda: cy.time_sweep(spps)
     ochres = []
     if 'ochre' in renderers:
         _, ref_scene, _ = variant_scene(args, 'reference')
         ochre_ref, ochre_floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
-        pixels = ochre_ref.shape[0] * ochre_ref.shape[1]
         for label, scene, ochre_bin in (variant_scene(args, v) for v in (args.variant or ['ochre'])):
             o = Ochre(args, scene, label, ochre_bin)
             ochres.append(o)
             sweeps[f'ochre {label}'] = lambda o=o: o.time_sweep(spps, ref_exr)
     best = interleaved_best(sweeps, args.repeat)
 
+    def ochre_image(o, spp):  # the same image ochre-converge timed (same seed and settings)
+        exr = os.path.join(args.out, 'exr', f'ochre_{o.label}_spp{spp}.exr')
+        o.render(spp, 0, exr)
+        return exr
+
     results, summaries = [], []
     if 'cycles' in renderers:
-        rows = []
-        for spp in spps:
-            x = read_exr(cy.exr(spp))
-            rows.append(dict(renderer='cycles', variant='cycles', spp=spp, seconds=best['cycles'][spp],
-                             relmse=relmse(x, cycles_ref), luminance_relmse=luminance_relmse(x, cycles_ref)))
-            print(f"cycles spp {spp}: {rows[-1]['seconds']:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
-        summaries.append(summarise('Cycles', rows, cycles_floor, pixels, args.colour_spp))
+        rows = judged_rows('cycles', 'cycles', spps, best['cycles'], cy.exr, cycles_ref)
+        summaries.append(summarise('Cycles', rows, cycles_floor, cycles_ref.shape[0] * cycles_ref.shape[1],
+                                   args.colour_spp))
         results += rows
     for o in ochres:
-        rows = []
-        for spp in spps:
-            exr = os.path.join(args.out, 'exr', f'ochre_{o.label}_spp{spp}.exr')
-            o.render(spp, 0, exr)  # the same image ochre-converge timed (same seed and settings)
-            x = read_exr(exr)
-            rows.append(dict(renderer='ochre', variant=o.label, spp=spp, seconds=best[f'ochre {o.label}'][spp],
-                             relmse=relmse(x, ochre_ref), luminance_relmse=luminance_relmse(x, ochre_ref)))
-            print(f"ochre {o.label} spp {spp}: {rows[-1]['seconds']:.3f} s, relMSE {rows[-1]['relmse']:.4g}",
-                  flush=True)
-        summaries.append(summarise(f'ochre {o.label}', rows, ochre_floor, pixels, args.colour_spp))
+        rows = judged_rows('ochre', o.label, spps, best[f'ochre {o.label}'], lambda spp, o=o: ochre_image(o, spp),
+                           ochre_ref)
+        summaries.append(summarise(f'ochre {o.label}', rows, ochre_floor, ochre_ref.shape[0] * ochre_ref.shape[1],
+                                   args.colour_spp))
         results += rows
 
     with open(os.path.join(args.out, 'results.csv'), 'w', newline='') as f:
