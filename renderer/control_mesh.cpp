@@ -16,6 +16,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "renderer/ascii_case.h"
 #include "renderer/input_error.h"
 #include "renderer/mesh_file_reader.h"
 #include "renderer/mesh_import.h"
@@ -281,12 +282,6 @@ void reverse_winding(ControlMesh& mesh) {
                    mesh.face_uv_indices.begin() + long(start + size_t(size)));
     start += size_t(size);
   }
-}
-
-std::string lower_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
 }
 
 }  // namespace

@@ -1,19 +1,16 @@
 #include "renderer/display_image.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards
-// (docs/architecture.md, 'Building against Debian 12's packages').
 #include <fmt/format.h>
-// clang-format off
-#include <OpenImageIO/imageio.h>
-// clang-format on
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/ascii_case.h"
 #include "renderer/atomic_file.h"
 #include "renderer/image_error.h"
+#include "renderer/image_library.h"
 #include "renderer/memory_budget.h"
 #include "spectra/chromatic_adaptation.h"
 #include "spectra/input_file.h"
@@ -51,8 +48,7 @@ std::vector<std::uint8_t> quantize(const std::vector<float>& encoded) {
 }
 
 const char* format_for_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lower_extension(path);
   if (extension == ".png") return "png";
   if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
   throw ImageError(
@@ -72,16 +68,13 @@ void write_rgb8(const std::filesystem::path& path, const char* format, int width
 void write_rgb8(AtomicOutput& atomic, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description) {
   const std::string file = atomic.final_path().string();
-  auto output = OIIO::ImageOutput::create(format);
-  if (!output) throw ImageError(fmt::format("cannot write {}: OIIO has no {} writer", file, format));
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("Software", "ochre");
-  spec.attribute("ImageDescription", description);
-  if (std::string_view(format) == "jpeg") spec.attribute("Compression", "jpeg:95");
-
-  if (!output->open(atomic.temp_path().string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !output->close()) {
-    throw ImageError(fmt::format("cannot write {}: {}", file, output->geterror()));
+  ImageAttributes attributes = {{"Software", "ochre"}, {"ImageDescription", description}};
+  if (std::string_view(format) == "jpeg") attributes.emplace_back("Compression", "jpeg:95");
+  try {
+    image_library().write_uint8(format, atomic.temp_path().string(), width, height, 3, pixels.data(),
+                                attributes);
+  } catch (const std::runtime_error& e) {
+    throw ImageError(fmt::format("cannot write {}: {}", file, e.what()));
   }
 }
 
@@ -178,20 +171,24 @@ DisplayTransformReport write_display_image(const std::filesystem::path& path, in
 std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& width, int& height) {
   const std::string file = path.string();
   check_regular_input(path, kImageFileInput);  // a FIFO or a device is refused before OIIO opens it
-  auto input = OIIO::ImageInput::open(file);
-  if (!input) throw ImageError(fmt::format("cannot read {}: {}", file, OIIO::geterror()));
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.nchannels < 3) {
-    throw ImageError(fmt::format("cannot read {}: {} channel(s), expected RGB", file, spec.nchannels));
+  const auto unreadable = [&](const std::string& why) {
+    return ImageError(fmt::format("cannot read {}: {}", file, why));
+  };
+  ImageHeader header;
+  try {
+    header = image_library().read_header(file);
+  } catch (const std::runtime_error& e) {
+    throw unreadable(e.what());
   }
-  width = spec.width;
-  height = spec.height;
+  if (header.channels < 3) throw unreadable(fmt::format("{} channel(s), expected RGB", header.channels));
+  width = header.width;
+  height = header.height;
   check_memory_estimate(3.0 * width * height, fmt::format("reading {} ({}x{})", file, width, height));
-  std::vector<std::uint8_t> pixels(3 * static_cast<size_t>(width) * static_cast<size_t>(height));
-  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data())) {
-    throw ImageError(fmt::format("cannot read {}: {}", file, input->geterror()));
+  try {
+    return image_library().read_uint8(file, 3);
+  } catch (const std::runtime_error& e) {
+    throw unreadable(e.what());
   }
-  return pixels;
 }
 
 }  // namespace ochre

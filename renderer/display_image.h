@@ -1,7 +1,7 @@
 #pragma once
 // Display images (8-bit sRGB PNG, or JPEG) from the renderer's linear working-space RGB, through an
 // OpenColorIO display/view transform or, with ocio_config = "none", the plain sRGB transfer function.
-// Files are written through AtomicOutput. OIIO and OCIO headers stay in the .cpp files.
+// Files are written through AtomicOutput; PNG/JPEG through renderer/image_library.h (OpenImageIO).
 
 #include <array>
 #include <cstdint>

@@ -3,16 +3,14 @@
 
 #include "renderer/environment_map.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
 #include <fmt/format.h>
-// OIIO after fmt.
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <system_error>
 
+#include "renderer/image_library.h"
 #include "renderer/memory_budget.h"
 #include "spectra/color_space.h"
 #include "spectra/input_file.h"
@@ -25,11 +23,6 @@ namespace {
 // Texel luminance Y of linear Rec.709 RGB, with the project's D65 white (RGB (1,1,1) -> Y = 1).
 double luminance(const RGB& rgb) {
   return rgb_to_xyz(rgb, ColorSpace::LinearRec709).y;
-}
-
-bool is_float_format(OIIO::TypeDesc format) {
-  return format.basetype == OIIO::TypeDesc::HALF || format.basetype == OIIO::TypeDesc::FLOAT ||
-         format.basetype == OIIO::TypeDesc::DOUBLE;
 }
 
 // Solid angle of one texel of row `row`: (2 pi / width) * (cos theta_top - cos theta_bottom).
@@ -106,22 +99,18 @@ EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw std::runtime_error("no such file");
   check_regular_input(path, kEnvironmentMapInput);  // a FIFO or a device is refused before OIIO opens it
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input) throw std::runtime_error(OIIO::geterror());
-  const OIIO::ImageSpec spec = input->spec();
-  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) throw std::runtime_error("the image is empty");
-  if (!is_float_format(spec.format))
-    throw std::runtime_error(
-        fmt::format("expected a linear HDR image (.hdr or .exr, floating-point pixels), got {} pixels",
-                    spec.format.c_str()));
-  const int channels = spec.nchannels;
+  const ImageLibrary& library = image_library();
+  const ImageHeader spec = library.read_header(path.string());
+  if (spec.width < 1 || spec.height < 1 || spec.channels < 1) throw std::runtime_error("the image is empty");
+  if (!spec.floating_point)
+    throw std::runtime_error(fmt::format(
+        "expected a linear HDR image (.hdr or .exr, floating-point pixels), got {} pixels", spec.pixel_type));
+  const int channels = spec.channels;
   // The float pixels, the RGB texels, the luminance (double) and the sampling distribution (2 floats).
   check_memory_estimate(static_cast<double>(spec.width) * spec.height *
                             static_cast<double>(channels * sizeof(float) + sizeof(RGB) + sizeof(double) + 8),
                         fmt::format("environment map {} ({}x{})", path.string(), spec.width, spec.height));
-  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw std::runtime_error(input->geterror());
+  const std::vector<float> pixels = library.read_float(path.string(), 0, channels);
   std::vector<RGB> rgb(static_cast<size_t>(spec.width) * spec.height);
   for (size_t i = 0; i < rgb.size(); ++i) {
     const float* p = &pixels[i * channels];

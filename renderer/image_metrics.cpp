@@ -1,11 +1,6 @@
 #include "renderer/image_metrics.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards
-// (docs/architecture.md, 'Building against Debian 12's packages').
 #include <fmt/format.h>
-// clang-format off
-#include <OpenImageIO/imageio.h>
-// clang-format on
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +8,7 @@
 #include "renderer/atomic_file.h"
 #include "renderer/ciede2000.h"
 #include "renderer/image_error.h"
+#include "renderer/image_library.h"
 #include "renderer/input_error.h"
 #include "spectra/color_space.h"
 
@@ -197,14 +193,14 @@ void write_heatmap_png(AtomicOutput& atomic, int width, int height, const std::v
     std::copy(colour.begin(), colour.end(), codes.begin() + static_cast<std::ptrdiff_t>(3 * p));
   }
 
-  auto output = OIIO::ImageOutput::create("png");
-  if (!output) throw ImageError(fmt::format("cannot write {}: OIIO has no png writer", file));
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("Software", "ochre-diff");
-  spec.attribute("ImageDescription", fmt::format("error heat-map, full scale {:.6g}", scale));
-  if (!output->open(atomic.temp_path().string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::UINT8, codes.data()) || !output->close()) {
-    throw ImageError(fmt::format("cannot write {}: {}", file, output->geterror()));
+  const ImageAttributes attributes = {
+      {"Software", "ochre-diff"},
+      {"ImageDescription", fmt::format("error heat-map, full scale {:.6g}", scale)}};
+  try {
+    image_library().write_uint8("png", atomic.temp_path().string(), width, height, 3, codes.data(),
+                                attributes);
+  } catch (const std::runtime_error& e) {
+    throw ImageError(fmt::format("cannot write {}: {}", file, e.what()));
   }
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/ascii_case.h"
 #include "renderer/input_error.h"
 #include "renderer/mesh_file_reader.h"
 #include "spectra/input_file.h"
@@ -19,12 +20,6 @@
 namespace ochre {
 
 namespace {
-
-std::string lower_extension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 bool is_integer_ply_type(const std::string& type) {
   static const char* const kIntegerTypes[] = {"char", "uchar", "short", "ushort", "int",   "uint",

@@ -1,14 +1,12 @@
 #include "renderer/mip_pyramid.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
 #include <fmt/format.h>
-// OIIO after fmt.
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/image_library.h"
 #include "renderer/periodic_texture_coordinate.h"
 
 namespace ochre {
@@ -46,37 +44,43 @@ MipPyramid::MipPyramid(std::vector<Level> levels, int channels)
 }
 
 std::size_t MipPyramid::file_bytes(const std::filesystem::path& file) {
-  auto input = OIIO::ImageInput::open(file.string());
-  if (!input) {
-    (void)OIIO::geterror();
+  ImageHeader header;
+  try {
+    header = image_library().read_header(file.string());
+  } catch (const std::runtime_error&) {
     return 0;
   }
   std::size_t bytes = 0;
-  for (int m = 0; input->seek_subimage(0, m); ++m) {
-    const OIIO::ImageSpec& spec = input->spec();
-    bytes += static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels * sizeof(float);
+  for (const ImageLevelSize& level : header.levels) {
+    bytes += static_cast<std::size_t>(level.width) * level.height * level.channels * sizeof(float);
   }
   return bytes;
 }
 
 MipPyramid MipPyramid::load(const std::filesystem::path& file) {
-  auto input = OIIO::ImageInput::open(file.string());
-  if (!input)
-    throw std::runtime_error(fmt::format("cannot read texture {}: {}", file.string(), OIIO::geterror()));
-  const int channels = input->spec().nchannels;
+  const ImageLibrary& library = image_library();
+  ImageHeader header;
+  try {
+    header = library.read_header(file.string());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(fmt::format("cannot read texture {}: {}", file.string(), e.what()));
+  }
+  const int channels = header.channels;
   std::vector<Level> levels;
-  for (int m = 0; input->seek_subimage(0, m); ++m) {
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.nchannels != channels)
+  for (int m = 0; m < static_cast<int>(header.levels.size()); ++m) {
+    const ImageLevelSize& size = header.levels[static_cast<std::size_t>(m)];
+    if (size.channels != channels)
       throw std::runtime_error(fmt::format("texture {}: MIP level {} has {} channels, level 0 {}",
-                                           file.string(), m, spec.nchannels, channels));
+                                           file.string(), m, size.channels, channels));
     Level level;
-    level.width = spec.width;
-    level.height = spec.height;
-    level.texels.resize(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!input->read_image(0, m, 0, channels, OIIO::TypeDesc::FLOAT, level.texels.data()))
+    level.width = size.width;
+    level.height = size.height;
+    try {
+      level.texels = library.read_float(file.string(), m, channels);
+    } catch (const std::runtime_error& e) {
       throw std::runtime_error(
-          fmt::format("cannot read MIP level {} of texture {}: {}", m, file.string(), input->geterror()));
+          fmt::format("cannot read MIP level {} of texture {}: {}", m, file.string(), e.what()));
+    }
     levels.push_back(std::move(level));
   }
   try {

@@ -17,7 +17,9 @@
 
 namespace ochre {
 
-// Throws InputError naming the output (and the input or the other output it collides with).
+// Throws InputError naming the output (and the input or the other output it collides with); loads the
+// image library (renderer/image_library.h) when an output is a PNG or JPEG image, and throws its
+// ImageError when the module cannot be loaded.
 void check_output_files(const std::vector<std::filesystem::path>& outputs, const InputFileLog& inputs);
 
 }  // namespace ochre

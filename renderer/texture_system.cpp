@@ -1,14 +1,6 @@
 #include "renderer/texture_system.h"
 
-// fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
 #include <fmt/format.h>
-// OIIO after fmt.
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imagecache.h>
-#include <OpenImageIO/imageio.h>
-#include <OpenImageIO/strutil.h>
-#include <OpenImageIO/texture.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,8 +15,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "renderer/ascii_case.h"
 #include "renderer/atomic_file.h"
 #include "renderer/fnv1a.h"
+#include "renderer/image_library.h"
 #include "renderer/memory_budget.h"
 #include "renderer/mip_pyramid.h"
 #include "renderer/periodic_texture_coordinate.h"
@@ -80,7 +74,7 @@ bool make_writable_directory(const fs::path& dir) {
 
 struct SourceInfo {
   fs::path path;  // absolute, normalized
-  OIIO::ImageSpec spec;
+  ImageHeader header;
   bool tiled_and_mipmapped = false;
 };
 
@@ -96,35 +90,32 @@ SourceInfo open_source(const fs::path& file) {
   SourceInfo info;
   info.path = fs::weakly_canonical(fs::absolute(file), error);
   if (error) info.path = fs::absolute(file).lexically_normal();
-  auto input = OIIO::ImageInput::open(info.path.string());
-  if (!input) throw_unreadable(file, OIIO::geterror());
-  info.spec = input->spec();
-  if (info.spec.nchannels < 1 || info.spec.width < 1 || info.spec.height < 1) {
+  try {
+    info.header = image_library().read_header(info.path.string());
+  } catch (const std::runtime_error& e) {
+    throw_unreadable(file, e.what());
+  }
+  if (info.header.channels < 1 || info.header.width < 1 || info.header.height < 1) {
     throw_unreadable(file, "the image is empty");
   }
-  info.tiled_and_mipmapped = info.spec.tile_width > 0 && input->seek_subimage(0, 1);
+  info.tiled_and_mipmapped = info.header.tiled && info.header.mipmapped();
   return info;
-}
-
-bool is_integer_format(OIIO::TypeDesc format) {
-  return format.basetype != OIIO::TypeDesc::HALF && format.basetype != OIIO::TypeDesc::FLOAT &&
-         format.basetype != OIIO::TypeDesc::DOUBLE;
 }
 
 // "auto": integer pixels are display-encoded (sRGB) unless the file says it is linear; float/half
 // pixels (EXR, HDR) are scene-linear.
 Encoding resolve_encoding(const SourceInfo& source, const std::string& colorspace) {
-  if (OIIO::Strutil::iequals(colorspace, "srgb")) return Encoding::srgb;
-  if (OIIO::Strutil::iequals(colorspace, "linear")) return Encoding::linear;
-  if (!OIIO::Strutil::iequals(colorspace, "auto")) {
+  if (equals_ignoring_case(colorspace, "srgb")) return Encoding::srgb;
+  if (equals_ignoring_case(colorspace, "linear")) return Encoding::linear;
+  if (!equals_ignoring_case(colorspace, "auto")) {
     throw std::runtime_error(
         fmt::format("texture {}: unknown colorspace \"{}\" (expected auto, srgb or linear)",
                     source.path.string(), colorspace));
   }
-  const std::string declared = source.spec.get_string_attribute("oiio:ColorSpace");
+  const std::string& declared = source.header.colorspace;
   const bool declared_linear =
-      OIIO::Strutil::iequals(declared, "linear") || OIIO::Strutil::iequals(declared, "scene_linear");
-  return (is_integer_format(source.spec.format) && !declared_linear) ? Encoding::srgb : Encoding::linear;
+      equals_ignoring_case(declared, "linear") || equals_ignoring_case(declared, "scene_linear");
+  return (!source.header.floating_point && !declared_linear) ? Encoding::srgb : Encoding::linear;
 }
 
 // Cache file name: source stem + hash of (absolute path, size, mtime, encoding, format version), so an
@@ -143,75 +134,74 @@ fs::path cache_file_for(const fs::path& cache_dir, const SourceInfo& source, Enc
 
 // Reads the first subimage of the source as float, in [0, 1] for integer formats. Alpha is kept
 // unassociated (as stored in PNG), so colour and mask channels are filtered as they were painted.
-OIIO::ImageBuf read_as_float(const SourceInfo& source) {
+std::vector<float> read_as_float(const SourceInfo& source) {
   // The float pixels, then MakeTx's copy of them and its MIP levels (a third more).
-  const OIIO::ImageSpec& header = source.spec;
-  check_memory_estimate(static_cast<double>(header.width) * header.height * header.nchannels * sizeof(float) *
-                            (2.0 + 1.0 / 3.0),
-                        fmt::format("converting texture {} ({}x{}, {} channels)", source.path.string(),
-                                    header.width, header.height, header.nchannels));
-  OIIO::ImageSpec read_config;
-  read_config.attribute("oiio:UnassociatedAlpha", 1);
-  auto input = OIIO::ImageInput::open(source.path.string(), &read_config);
-  if (!input) throw_unreadable(source.path, OIIO::geterror());
-  const OIIO::ImageSpec& in_spec = input->spec();
-  OIIO::ImageSpec spec(in_spec.width, in_spec.height, in_spec.nchannels, OIIO::TypeDesc::FLOAT);
-  spec.channelnames = in_spec.channelnames;
-  spec.alpha_channel = in_spec.alpha_channel;
-  OIIO::ImageBuf buffer(spec, OIIO::InitializePixels::No);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, buffer.localpixels())) {
-    throw_unreadable(source.path, input->geterror());
+  const ImageHeader& header = source.header;
+  check_memory_estimate(
+      static_cast<double>(header.width) * header.height * header.channels * sizeof(float) * (2.0 + 1.0 / 3.0),
+      fmt::format("converting texture {} ({}x{}, {} channels)", source.path.string(), header.width,
+                  header.height, header.channels));
+  try {
+    return image_library().read_float(source.path.string(), 0, header.channels, /*unassociated_alpha=*/true);
+  } catch (const std::runtime_error& e) {
+    throw_unreadable(source.path, e.what());
   }
-  return buffer;
 }
 
-void decode_srgb(OIIO::ImageBuf& buffer) {
-  const OIIO::ImageSpec& spec = buffer.spec();
-  auto* pixels = static_cast<float*>(buffer.localpixels());
-  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
+void decode_srgb(std::vector<float>& pixels, const ImageHeader& header) {
+  const std::size_t count = static_cast<std::size_t>(header.width) * header.height;
   for (std::size_t pixel = 0; pixel < count; ++pixel) {
-    for (int channel = 0; channel < spec.nchannels; ++channel) {
-      if (channel == spec.alpha_channel) continue;  // coverage, not colour
-      float& value = pixels[pixel * spec.nchannels + channel];
+    for (int channel = 0; channel < header.channels; ++channel) {
+      if (channel == header.alpha_channel) continue;  // coverage, not colour
+      float& value = pixels[pixel * header.channels + channel];
       value = srgb_decode(value);  // IEC 61966-2-1 transfer function
     }
   }
+}
+
+// The source's channel names, or R, G, B, A, ... when the file does not give one per channel.
+std::vector<std::string> channel_names_of(const ImageHeader& header) {
+  if (static_cast<int>(header.channel_names.size()) == header.channels) return header.channel_names;
+  static const char* const kDefault[] = {"R", "G", "B", "A"};
+  std::vector<std::string> names;
+  for (int channel = 0; channel < header.channels; ++channel) {
+    names.push_back(channel < 4 ? kDefault[channel] : fmt::format("channel{}", channel));
+  }
+  return names;
 }
 
 // Writes a tiled, MIP-mapped OpenEXR texture of the linear pixels of `source` to `target` (temporary
 // name, then rename: a concurrent render never sees a half-written file). Integer sources become half
 // (11-bit mantissa: finer than 8-bit sRGB steps everywhere), float sources stay float.
 void convert_to_texture(const SourceInfo& source, Encoding encoding, const fs::path& target) {
-  OIIO::ImageBuf buffer = read_as_float(source);
-  if (encoding == Encoding::srgb) decode_srgb(buffer);
+  const ImageHeader& header = source.header;
+  std::vector<float> pixels = read_as_float(source);
+  if (encoding == Encoding::srgb) decode_srgb(pixels, header);
 
-  OIIO::ImageSpec config;
-  config.format = source.spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                          source.spec.format.basetype == OIIO::TypeDesc::DOUBLE
-                      ? OIIO::TypeDesc::FLOAT
-                      : OIIO::TypeDesc::HALF;
-  config.tile_width = 64;
-  config.tile_height = 64;
-  config.tile_depth = 1;
-  config.attribute("compression", "zip");
-  config.attribute("wrapmodes", "periodic,periodic");
-  config.attribute("oiio:ColorSpace", "Linear");
-  config.attribute("ochre:source", source.path.string());
-  config.attribute("ochre:source_encoding", encoding_name(encoding));
-  config.attribute("maketx:fileformatname", "openexr");  // the temporary name has no .exr extension
+  TextureFileLayout layout;
+  layout.half = header.pixel_type != "float" && header.pixel_type != "double";
+  layout.tile_size = 64;
+  layout.attributes = {{"compression", "zip"},
+                       {"wrapmodes", "periodic,periodic"},
+                       {"oiio:ColorSpace", "Linear"},
+                       {"ochre:source", source.path.string()},
+                       {"ochre:source_encoding", encoding_name(encoding)},
+                       // the temporary name has no .exr extension
+                       {"maketx:fileformatname", "openexr"}};
 
   AtomicOutput output(target);
-  if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, buffer,
-                                        output.temp_path().string(), config)) {
-    throw std::runtime_error(fmt::format("cannot convert texture {} to {}: {}", source.path.string(),
-                                         target.string(), OIIO::geterror()));
+  try {
+    image_library().make_texture(pixels, header.width, header.height, channel_names_of(header),
+                                 header.alpha_channel, layout, output.temp_path().string());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(
+        fmt::format("cannot convert texture {} to {}: {}", source.path.string(), target.string(), e.what()));
   }
   output.commit();
 }
 
-struct TextureSystemDeleter {
-  void operator()(OIIO::TextureSystem* system) const { OIIO::TextureSystem::destroy(system); }
-};
+// OpenImageIO 2.4 defaults to a 256 MB tile cache; photogrammetry walls carry several 8k textures.
+constexpr float kTileCacheMegabytes = 1024.0f;
 
 }  // namespace
 
@@ -226,7 +216,7 @@ fs::path default_texture_cache_dir() {
 
 struct OiioTextureProvider::Impl {
   struct Texture {
-    OIIO::TextureSystem::TextureHandle* handle = nullptr;
+    TextureCache::Handle handle = nullptr;
     int channels = 0;
     fs::path file;  // what the TextureSystem reads (cache file or the source itself)
     std::unique_ptr<const MipPyramid> resident;  // its MIP levels in memory, when they fit the budget
@@ -234,7 +224,8 @@ struct OiioTextureProvider::Impl {
 
   fs::path cache_dir;
   std::string cache_note;  // why the requested cache directory was not used, if it was not
-  std::unique_ptr<OIIO::TextureSystem, TextureSystemDeleter> system;
+  // Created with the first texture: a scene without textures never loads the image library.
+  std::unique_ptr<TextureCache> cache;
   std::vector<Texture> textures;
   std::unordered_map<std::string, int> ids;  // "<absolute path>|<encoding>" -> id
   std::mutex add_mutex;
@@ -243,6 +234,11 @@ struct OiioTextureProvider::Impl {
   mutable std::atomic<std::uint64_t> failed_lookups{0};
 
   // Returns the file the TextureSystem should read for source/encoding, converting it if needed.
+  TextureCache& tile_cache() {
+    if (!cache) cache = image_library().create_texture_cache(kTileCacheMegabytes);
+    return *cache;
+  }
+
   fs::path texture_file_for(const SourceInfo& source, Encoding encoding) {
     if (encoding == Encoding::linear && source.tiled_and_mipmapped) {
       ++used_directly;  // already a linear MIP-mapped texture (e.g. made by maketx)
@@ -275,12 +271,6 @@ OiioTextureProvider::OiioTextureProvider(fs::path cache_dir, std::size_t residen
     impl_->cache_dir = fallback;
     impl_->cache_note = fmt::format(" (requested {} is not writable)", requested.string());
   }
-  impl_->system.reset(OIIO::TextureSystem::create(/*shared=*/false));
-  if (!impl_->system) throw std::runtime_error("cannot create the OpenImageIO TextureSystem");
-  // Every channel count is handled in lookup(); never let OIIO widen grey on its own.
-  impl_->system->attribute("gray_to_rgb", 0);
-  // OIIO 2.4 defaults to a 256 MB tile cache; photogrammetry walls carry several 8k textures.
-  impl_->system->attribute("max_memory_MB", 1024.0f);
 }
 
 OiioTextureProvider::~OiioTextureProvider() = default;
@@ -297,15 +287,12 @@ int OiioTextureProvider::add_texture(const fs::path& file, const std::string& co
 
   Impl::Texture texture;
   texture.file = impl_->texture_file_for(source, encoding);
-  OIIO::TextureSystem& system = *impl_->system;
-  texture.handle = system.get_texture_handle(OIIO::ustring(texture.file.string()));
-  OIIO::ImageSpec spec;
-  if (texture.handle == nullptr || !system.good(texture.handle) ||
-      !system.get_imagespec(texture.handle, nullptr, 0, spec)) {
+  try {
+    texture.handle = impl_->tile_cache().open(texture.file.string(), texture.channels);
+  } catch (const std::runtime_error& e) {
     throw std::runtime_error(fmt::format("cannot read texture {} (converted file {}): {}",
-                                         source.path.string(), texture.file.string(), system.geterror()));
+                                         source.path.string(), texture.file.string(), e.what()));
   }
-  texture.channels = spec.nchannels;
   const std::size_t bytes = MipPyramid::file_bytes(texture.file);
   if (bytes > 0 && impl_->resident_bytes + bytes <= impl_->resident_budget) {
     texture.resident = std::make_unique<const MipPyramid>(MipPyramid::load(texture.file));
@@ -348,19 +335,9 @@ void OiioTextureProvider::lookup(int texture_id, const Vec2& uv, float footprint
     return;
   }
 
-  OIIO::TextureOpt options;
-  options.firstchannel = first_channel;
-  options.swrap = OIIO::TextureOpt::WrapPeriodic;
-  options.twrap = OIIO::TextureOpt::WrapPeriodic;
-  // Bilinear (not OIIO's default smart-bicubic, a non-interpolating B-spline when magnifying), so that a
-  // point lookup at a texel centre returns that texel exactly.
-  options.interpmode = OIIO::TextureOpt::InterpBilinear;
-  OIIO::TextureSystem& system = *impl_->system;
-  OIIO::TextureSystem::Perthread* thread_info = system.get_perthread_info();
-  if (!system.texture(texture.handle, thread_info, options, s, 1.0f - v, width, 0.0f, 0.0f, width, fetched,
-                      out)) {
+  // Bilinear within a level (a point lookup at a texel centre returns that texel exactly), periodic wrap.
+  if (!impl_->cache->lookup(texture.handle, first_channel, fetched, s, 1.0f - v, width, out)) {
     impl_->failed_lookups.fetch_add(1, std::memory_order_relaxed);
-    (void)system.geterror();  // do not let errors pile up in OIIO's per-thread buffer
     std::fill(out, out + nchannels, 0.0f);
     return;
   }
@@ -381,14 +358,12 @@ int OiioTextureProvider::resident_count() const {
 }
 
 std::size_t OiioTextureProvider::memory_bytes() const {
-  long long bytes = 0;
-  impl_->system->imagecache()->getattribute("stat:cache_memory_used", OIIO::TypeDesc::INT64, &bytes);
-  return static_cast<std::size_t>(std::max(0LL, bytes)) + impl_->resident_bytes;
+  const std::int64_t bytes = impl_->cache ? impl_->cache->memory_used() : 0;
+  return static_cast<std::size_t>(std::max<std::int64_t>(0, bytes)) + impl_->resident_bytes;
 }
 
 std::string OiioTextureProvider::stats() const {
-  long long bytes_read = 0;
-  impl_->system->imagecache()->getattribute("stat:bytes_read", OIIO::TypeDesc::INT64, &bytes_read);
+  const std::int64_t bytes_read = impl_->cache ? impl_->cache->bytes_read() : 0;
   constexpr double kMiB = 1024.0 * 1024.0;
   return fmt::format(
       "textures: {} ({} converted, {} from cache, {} used as is; {} resident, {:.1f} MiB); tile cache "

@@ -20,7 +20,7 @@
 // state and allocates nothing per call). add_texture() must not run concurrently with lookup(): add all
 // textures while loading the scene, then render.
 //
-// OIIO headers stay in the .cpp file.
+// OpenImageIO is reached through renderer/image_library.h (a module loaded with the first texture).
 
 #include <cstddef>
 #include <filesystem>

@@ -4,9 +4,9 @@
 #   cmake -DEXE=<test executable> -DOUT=<file to write> -DPREFIX=<test name prefix> -DLABEL=<label>
 #         -DWORKDIR=<working directory> -P gtest_suites.cmake
 #
-# Each test is named PREFIX/SUITE and runs `EXE --gtest_filter=SUITE.*`. Executables linked with
-# OpenImageIO spend ~0.2 s of CPU loading its ~260 shared libraries per process, more than most of their
-# tests take: one process per suite instead of one per test saves about a minute of the suite on 2 cores.
+# Each test is named PREFIX/SUITE and runs `EXE --gtest_filter=SUITE.*`. A process that reads or writes an
+# image loads OpenImageIO and its ~260 shared libraries (0.2-0.5 s), more than most tests take: one process
+# per suite instead of one per test saves about a minute of the suite on 2 cores.
 # A run whose every test skipped prints the marker of tests/support/test_main.cpp and is reported skipped;
 # a run with failures never prints it.
 foreach(arg EXE OUT PREFIX LABEL WORKDIR)
