@@ -1,6 +1,7 @@
 #include "materials/lobes/closure.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace ochre {
 
@@ -8,6 +9,10 @@ void Closure::add_lobe(const Lobe* lobe, const SampledSpectrum& weight) {
   if (weight.is_black()) return;
   if (count_ == kMaxLobes) throw std::length_error("closure has more than 8 lobes");
   lobes_[count_++] = {lobe, weight};
+}
+
+void Closure::throw_lobe_out_of_range(int i) const {
+  throw std::out_of_range("closure lobe " + std::to_string(i) + " of " + std::to_string(count_));
 }
 
 void Closure::scale(const SampledSpectrum& s) {

@@ -60,7 +60,12 @@ class Closure {
   const Vec3& tangent() const { return tangent_; }
 
   int lobe_count() const { return count_; }
-  const WeightedLobe& lobe(int i) const { return lobes_[i]; }
+  // Lobe i of the lobe_count() lobes; throws std::out_of_range for any other i (the unused slots hold
+  // stale lobes after clear() or a copy of fewer lobes).
+  const WeightedLobe& lobe(int i) const {
+    if (i < 0 || i >= count_) throw_lobe_out_of_range(i);
+    return lobes_[static_cast<std::size_t>(i)];
+  }
   const SampledSpectrum& emission() const { return emission_; }
   bool has_lobes() const { return count_ > 0; }
   bool has_non_delta_lobes() const;
@@ -83,6 +88,7 @@ class Closure {
                                    const SampledWavelengths& lambda) const;
 
  private:
+  [[noreturn]] void throw_lobe_out_of_range(int i) const;
   std::optional<LobeSample> sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
                                              const SampledWavelengths& lambda) const;
   // Lobe selection probabilities; returns their sum (0 when nothing can be sampled).

@@ -117,6 +117,8 @@ TEST(Closure, CopiesAndClearDoNotKeepTheTargetsOldLobes) {
   const SampledSpectrum got = target.eval(wo, wi, test_wavelengths());
   for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(got[k], want[k]);
 
+  EXPECT_THROW((void)target.lobe(1), std::out_of_range) << "slot 1 still holds big's silver lobe";
+  EXPECT_THROW((void)target.lobe(-1), std::out_of_range);
   target = big;
   target.clear();
   EXPECT_EQ(target.lobe_count(), 0);
