@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "support/test_paths.h"
 #include "tools/halfspace/direction.h"
 #include "tools/halfspace/phase_function.h"
 
@@ -35,7 +36,7 @@ struct Table {
 };
 
 Table read_table() {
-  std::ifstream in(std::string(OCHRE_SOURCE_DIR) + "/tests/data/halfspace_reference.csv");
+  std::ifstream in(ochre::test::source_dir() / "tests/data/halfspace_reference.csv");
   Table t;
   std::string line;
   while (std::getline(in, line)) {

@@ -16,6 +16,7 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "support/test_paths.h"
 
 namespace ochre::test {
 namespace {
@@ -27,7 +28,7 @@ struct Row {
 };
 
 std::vector<Row> read_reference() {
-  std::ifstream in(std::string(OCHRE_SOURCE_DIR) + "/tests/data/halfspace_reference.csv");
+  std::ifstream in(ochre::test::source_dir() / "tests/data/halfspace_reference.csv");
   std::vector<Row> rows;
   std::string line;
   while (std::getline(in, line)) {
