@@ -48,6 +48,8 @@ std::vector<fs::path> module_candidates() {
     candidates.push_back(here / OCHRE_IMAGE_MODULE_FROM_BIN / kModuleFile);    // installed tools
     candidates.push_back(here / ".." / "lib" / "ochre" / kModuleFile);         // build tree: bin/
     candidates.push_back(here / ".." / ".." / "lib" / "ochre" / kModuleFile);  // build tree: python/ochre/
+    // Installed Python package: PREFIX/lib/python3/dist-packages/ochre/ -> PREFIX/lib/ochre/.
+    candidates.push_back(here / ".." / ".." / ".." / "ochre" / kModuleFile);
   }
   candidates.push_back(fs::path(OCHRE_IMAGE_MODULE_INSTALL_DIR) / kModuleFile);
   std::vector<fs::path> distinct;

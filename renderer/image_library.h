@@ -17,7 +17,8 @@
 // Finding the module (image_library()): $OCHRE_IMAGE_MODULE if set (a file path), else, from the
 // directory of the executable or Python extension, the installed library directory relative to the
 // installed bin/ (../lib/ochre/ usually), ../lib/ochre/ (build tree: bin/), ../../lib/ochre/ (build tree:
-// python/ochre/), then the absolute installed library directory (PREFIX/lib/ochre/).
+// python/ochre/), ../../../ochre/ (installed Python package, PREFIX/lib/python3/dist-packages/ochre/), then
+// the absolute installed library directory (PREFIX/lib/ochre/ of the configured prefix).
 
 #include <cstdint>
 #include <memory>

@@ -74,8 +74,9 @@ foreach(asset report.css report.js)
     fail("the installed ochre-regress wrote ${WORK_DIR}/report/${asset} unlike tools/regress/report/${asset}")
   endif()
 endforeach()
-# The Python package: imported from the prefix alone (PYTHONPATH=PREFIX/PYTHON_DIR), it reports the version
-# and renders the copied scene to the bits the installed ochre wrote.
+# The Python package: imported from the prefix alone (PYTHONPATH=PREFIX/PYTHON_DIR), it reports the version,
+# renders the copied scene to the bits the installed ochre wrote and loads a textured scene (the image
+# library module of PREFIX/lib/ochre, renderer/image_library.h).
 if(PYTHON)
   set(ENV{PYTHONPATH} ${PREFIX}/${PYTHON_DIR})
   run(printed ${PYTHON} -c "
@@ -84,6 +85,8 @@ assert ochre.__file__.startswith('${PREFIX}/'), ochre.__file__
 r = ochre.load_scene('${WORK_DIR}/cornell-box/cornell-box.json', resolution=(16, 16), spp=2).render()
 cli, _ = ochre.read_exr('${WORK_DIR}/out.exr')
 assert numpy.array_equal(r.rgb[..., 0], cli['R']), 'Python and the installed ochre differ'
+# A scene with a texture and an HDR map: the package finds the image library module of the prefix.
+ochre.load_scene('${PREFIX}/share/ochre/scenes/benchmark/rock-gold.json', resolution=(8, 8), spp=1)
 print(ochre.__version__)")
   if(NOT printed STREQUAL "${VERSION}\n")
     fail("the installed Python module printed '${printed}', expected '${VERSION}'")
