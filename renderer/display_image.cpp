@@ -185,7 +185,7 @@ std::vector<std::uint8_t> read_png_rgb8(const std::filesystem::path& path, int& 
   height = header.height;
   check_memory_estimate(3.0 * width * height, fmt::format("reading {} ({}x{})", file, width, height));
   try {
-    return image_library().read_uint8(file, 3);
+    return image_library().read_uint8(file, {width, height, 3});
   } catch (const std::runtime_error& e) {
     throw unreadable(e.what());
   }

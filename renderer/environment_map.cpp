@@ -110,7 +110,7 @@ EnvironmentMap EnvironmentMap::load(const std::filesystem::path& path) {
   check_memory_estimate(static_cast<double>(spec.width) * spec.height *
                             static_cast<double>(channels * sizeof(float) + sizeof(RGB) + sizeof(double) + 8),
                         fmt::format("environment map {} ({}x{})", path.string(), spec.width, spec.height));
-  const std::vector<float> pixels = library.read_float(path.string(), 0, channels);
+  const std::vector<float> pixels = library.read_float(path.string(), 0, {spec.width, spec.height, channels});
   std::vector<RGB> rgb(static_cast<size_t>(spec.width) * spec.height);
   for (size_t i = 0; i < rgb.size(); ++i) {
     const float* p = &pixels[i * channels];

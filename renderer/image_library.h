@@ -79,12 +79,14 @@ class ImageLibrary {
   virtual ~ImageLibrary() = default;
 
   virtual ImageHeader read_header(const std::string& file) const = 0;
-  // MIP level `level` of the first subimage, channels [0, channels), as float (integer formats scaled
-  // to [0, 1]). unassociated_alpha keeps alpha unpremultiplied, as PNG stores it.
-  virtual std::vector<float> read_float(const std::string& file, int level, int channels,
+  // MIP level `level` of the first subimage, channels [0, size.channels), as float (integer formats
+  // scaled to [0, 1]); size is what read_header() said of that level, and a file whose level no longer
+  // has that width and height (replaced in between) throws, so the result always has
+  // width x height x channels values. unassociated_alpha keeps alpha unpremultiplied, as PNG stores it.
+  virtual std::vector<float> read_float(const std::string& file, int level, const ImageLevelSize& size,
                                         bool unassociated_alpha = false) const = 0;
-  // The first subimage, channels [0, channels), as 8-bit codes.
-  virtual std::vector<std::uint8_t> read_uint8(const std::string& file, int channels) const = 0;
+  // The first subimage, channels [0, size.channels), as 8-bit codes (the same size check).
+  virtual std::vector<std::uint8_t> read_uint8(const std::string& file, const ImageLevelSize& size) const = 0;
   // Writes 8-bit pixels (row 0 on top) as `format` ("png", "jpeg", ...) with the given attributes.
   virtual void write_uint8(const std::string& format, const std::string& file, int width, int height,
                            int channels, const std::uint8_t* pixels,

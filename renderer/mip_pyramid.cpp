@@ -76,7 +76,7 @@ MipPyramid MipPyramid::load(const std::filesystem::path& file) {
     level.width = size.width;
     level.height = size.height;
     try {
-      level.texels = library.read_float(file.string(), m, channels);
+      level.texels = library.read_float(file.string(), m, {size.width, size.height, channels});
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(
           fmt::format("cannot read MIP level {} of texture {}: {}", m, file.string(), e.what()));

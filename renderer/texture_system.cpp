@@ -142,7 +142,8 @@ std::vector<float> read_as_float(const SourceInfo& source) {
       fmt::format("converting texture {} ({}x{}, {} channels)", source.path.string(), header.width,
                   header.height, header.channels));
   try {
-    return image_library().read_float(source.path.string(), 0, header.channels, /*unassociated_alpha=*/true);
+    return image_library().read_float(source.path.string(), 0, {header.width, header.height, header.channels},
+                                      /*unassociated_alpha=*/true);
   } catch (const std::runtime_error& e) {
     throw_unreadable(source.path, e.what());
   }

@@ -38,6 +38,15 @@ void read_level(OIIO::ImageInput& input, int level, int channels, OIIO::TypeDesc
   if (!input.read_image(0, level, 0, channels, type, out)) throw std::runtime_error(input.geterror());
 }
 
+// Throws unless the level the input is at has the size read_header() gave.
+void check_size(const OIIO::ImageSpec& spec, const ImageLevelSize& size) {
+  if (spec.width != size.width || spec.height != size.height || spec.nchannels < size.channels) {
+    throw std::runtime_error(
+        fmt::format("the file changed while it was read ({}x{}, {} channels; expected {}x{}, {})", spec.width,
+                    spec.height, spec.nchannels, size.width, size.height, size.channels));
+  }
+}
+
 std::size_t pixel_count(const OIIO::ImageSpec& spec, int channels) {
   return static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
          static_cast<std::size_t>(channels);
@@ -119,21 +128,23 @@ class OiioImageLibrary final : public ImageLibrary {
     return header;
   }
 
-  std::vector<float> read_float(const std::string& file, int level, int channels,
+  std::vector<float> read_float(const std::string& file, int level, const ImageLevelSize& size,
                                 bool unassociated_alpha) const override {
     OIIO::ImageSpec config;
     if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
     auto input = open_input(file, &config);
     if (!input->seek_subimage(0, level)) throw std::runtime_error(fmt::format("no MIP level {}", level));
-    std::vector<float> pixels(pixel_count(input->spec(), channels));
-    read_level(*input, level, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+    check_size(input->spec(), size);
+    std::vector<float> pixels(pixel_count(input->spec(), size.channels));
+    read_level(*input, level, size.channels, OIIO::TypeDesc::FLOAT, pixels.data());
     return pixels;
   }
 
-  std::vector<std::uint8_t> read_uint8(const std::string& file, int channels) const override {
+  std::vector<std::uint8_t> read_uint8(const std::string& file, const ImageLevelSize& size) const override {
     auto input = open_input(file);
-    std::vector<std::uint8_t> pixels(pixel_count(input->spec(), channels));
-    read_level(*input, 0, channels, OIIO::TypeDesc::UINT8, pixels.data());
+    check_size(input->spec(), size);
+    std::vector<std::uint8_t> pixels(pixel_count(input->spec(), size.channels));
+    read_level(*input, 0, size.channels, OIIO::TypeDesc::UINT8, pixels.data());
     return pixels;
   }
 
