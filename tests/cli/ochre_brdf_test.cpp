@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
+#include "support/angles.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::ochre_brdf_test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const char* kLambert = R"({"type": "lambert", "color": 0.8})";
 const char* kPairsHeader = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,lambda_nm\n";
 
@@ -69,7 +69,7 @@ TEST(OchreBrdf, EvalOfLambertIsColorOverPiAboveTheSurfaceAndZeroBelow) {
     ASSERT_EQ(rows[i].size(), 8u);
     const double f = std::stod(rows[i][7]);
     if (i < 4)
-      EXPECT_NEAR(f, 0.8 / kPi, 1e-6) << "pair " << i;
+      EXPECT_NEAR(f, 0.8 / kPiD, 1e-6) << "pair " << i;
     else
       EXPECT_EQ(f, 0.0) << "pair " << i << " has a direction below the surface";
   }
@@ -131,7 +131,7 @@ TEST(OchreBrdf, PicksANamedMaterialFromAMaterialsObject) {
   r = run_tool("ochre-brdf", "eval --material two.json --name light --input pairs.csv --output v.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::string header;
-  EXPECT_NEAR(std::stod(read_csv(dir / "v.csv", header).at(0).at(7)), 0.9 / kPi, 1e-6);
+  EXPECT_NEAR(std::stod(read_csv(dir / "v.csv", header).at(0).at(7)), 0.9 / kPiD, 1e-6);
 }
 
 struct BadCase {
@@ -237,7 +237,7 @@ TEST(OchreBrdf, PlotWritesAPng) {
 std::vector<std::pair<double, double>> gauss_legendre_unit(int n) {  // nodes and weights on [0, 1]
   std::vector<std::pair<double, double>> rule;
   for (int i = 0; i < n; ++i) {
-    double x = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    double x = std::cos(kPiD * (i + 0.75) / (n + 0.5)), dp = 1.0;
     for (int iteration = 0; iteration < 100; ++iteration) {  // Newton on P_n(x) by its recurrence
       double p0 = 1.0, p1 = x;
       for (int k = 2; k <= n; ++k) {
@@ -287,7 +287,7 @@ TEST(OchreBrdf, LambertSphereIsReciprocalAndItsKdIsTheBondAlbedo) {
   std::string angles;
   for (const auto& node : rule) {  // appended piecewise: GCC 12 warns falsely on "," + std::string
     if (!angles.empty()) angles += ',';
-    angles += fmt::format("{:.10f}", std::acos(node.first) * 180.0 / kPi);
+    angles += fmt::format("{:.10f}", std::acos(node.first) * 180.0 / kPiD);
   }
   r = run_tool("ochre-brdf",
                "albedo --material ls.json --angles " + angles + " --samples 2000 --output a.csv", dir);
@@ -306,4 +306,4 @@ TEST(OchreBrdf, LambertSphereIsReciprocalAndItsKdIsTheBondAlbedo) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::ochre_brdf_test

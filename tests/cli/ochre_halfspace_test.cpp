@@ -10,7 +10,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::ochre_halfspace_test {
 namespace {
 
 std::string read_file(const std::filesystem::path& path) {
@@ -62,4 +62,4 @@ TEST(OchreHalfspace, BadInputExitsWithTwo) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::ochre_halfspace_test

@@ -14,7 +14,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_cave_scene {
 namespace {
 
 namespace fs = std::filesystem;
@@ -131,4 +131,4 @@ TEST(WhiteBalance, AColourlessIlluminantIsRejected) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_cave_scene

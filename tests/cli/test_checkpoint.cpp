@@ -17,7 +17,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_checkpoint {
 namespace {
 
 namespace fs = std::filesystem;
@@ -203,4 +203,4 @@ TEST(CheckpointOptions, MalformedDurationsAndAMissingSceneAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_checkpoint

@@ -7,7 +7,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_determinism {
 namespace {
 
 ExrImage render_cornell(const std::string& args) {
@@ -49,4 +49,4 @@ TEST(Determinism, SeedChangesTheNoise) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_determinism

@@ -16,7 +16,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_example_scenes {
 namespace {
 
 namespace fs = std::filesystem;
@@ -87,4 +87,4 @@ TEST(ExampleScenes, EveryShippedSceneRendersAtLowResolution) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_example_scenes

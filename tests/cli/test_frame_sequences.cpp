@@ -9,7 +9,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_frame_sequences {
 namespace {
 
 // A wall lit by a torch and a grease lamp, 24x16 pixels.
@@ -116,4 +116,4 @@ TEST(FrameSequences, EveryFrameOutputIsCheckedFirst) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_frame_sequences

@@ -8,7 +8,7 @@
 #include "cli/exr_bits.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_fuzz_findings {
 namespace {
 
 struct Rejection {
@@ -242,4 +242,4 @@ TEST(FuzzFindings, CoordinatesBeyondTheTracedRangeAreRejected) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_fuzz_findings

@@ -11,11 +11,11 @@
 #include <string>
 
 #include "cli/render_probe.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::test_lambert_sphere_render {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kResolution = 64;
 constexpr double kViewSize = 2.4;  // orthographic extent: the unit sphere covers a disc of radius 26.7 px
 
@@ -51,7 +51,7 @@ FurnaceMeasure render_furnace(const std::string& material) {
                   img.mean(n - c, n - c, n, n)) /
                  4.0;
   const double radius_px = n / kViewSize;
-  const double disc_px = kPi * radius_px * radius_px;
+  const double disc_px = kPiD * radius_px * radius_px;
   const double image_sum = img.mean(0, 0, n, n) * n * n;
   m.sphere = (image_sum - (n * n - disc_px) * m.background) / disc_px;
   return m;
@@ -92,4 +92,4 @@ TEST(LambertSphereFurnace, KdIsTheRenderedBondAlbedo) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_lambert_sphere_render

@@ -11,7 +11,7 @@
 #include "renderer/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_negative_light {
 namespace {
 
 const char* kGrey = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
@@ -184,4 +184,4 @@ TEST(NegativeLight, TexturedEmissionIsClampedToZeroAtRunTime) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_negative_light

@@ -21,7 +21,7 @@
 #include "renderer/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_nonfinite_values {
 namespace {
 
 namespace fs = std::filesystem;
@@ -261,15 +261,16 @@ TEST(NonFiniteValues, EnvironmentMapWithNonFiniteTexelsIsRejected) {
 
 TEST(NonFiniteValues, DisplacementByNonFiniteTexelsIsRejected) {
   const auto dir = scene_dir();
-  expect_rejected(dir,
-                  R"({"film": {"resolution": [8, 8]}, "materials": {"m": {"type": "lambert"}},
+  expect_rejected(
+      dir,
+      R"({"film": {"resolution": [8, 8]}, "materials": {"m": {"type": "lambert"}},
       "lights": [{"type": "environment", "radiance": 1}],
       "shapes": [{"type": "mesh", "file": ")" +
-                      (source_dir() / "tests/data/cube_quads.obj").string() +
-                      R"(", "material": "m", "subdivision": {"level": 1},
+          (source_dir() / "tests/data/cube_quads.obj").string() +
+          R"(", "material": "m", "subdivision": {"level": 1},
                   "displacement": {"file": "bad.exr", "colorspace": "linear", "scale": 0.1}}]})",
-                  {"scene.json", "shapes[0].displacement", "cube_quads", "position of vertex 0 is not finite"});
+      {"scene.json", "shapes[0].displacement", "cube_quads", "position of vertex 0 is not finite"});
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_nonfinite_values

@@ -12,7 +12,7 @@
 #include "renderer/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_ochre_diff {
 namespace {
 
 struct DiffResult {
@@ -162,4 +162,4 @@ TEST(OchreDiff, BadInputExitsTwoNamingTheProblem) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_ochre_diff

@@ -24,7 +24,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_ochre_fit {
 namespace {
 
 namespace fs = std::filesystem;
@@ -513,4 +513,4 @@ TEST(OchreFit, BadSynthesizeOptionsNameTheOption) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_ochre_fit

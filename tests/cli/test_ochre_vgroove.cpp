@@ -21,7 +21,7 @@
 #include "spectra/cie.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_ochre_vgroove {
 namespace {
 
 const char* kTool = "ochre-vgroove";
@@ -600,4 +600,4 @@ TEST(OchreVGroove, BadCompareOptionsExitWithTwoAndLeaveNoFile) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_ochre_vgroove

@@ -11,7 +11,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_output_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -280,4 +280,4 @@ TEST(OutputFiles, OchreVGrooveWritesItsOutputsAllOrNothing) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_output_files

@@ -12,7 +12,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_photogrammetry {
 namespace {
 
 namespace fs = std::filesystem;
@@ -232,4 +232,4 @@ TEST(Photogrammetry, PigmentProjectedOntoTheMontBegoScan) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_photogrammetry

@@ -20,7 +20,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_pigments {
 namespace {
 
 namespace fs = std::filesystem;
@@ -147,4 +147,4 @@ TEST(Pigments, InTheInfraredIronOxidesTurnLightAndCharcoalStaysDark) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_pigments

@@ -9,12 +9,11 @@
 
 #include "cli/cli_runner.h"
 #include "renderer/exr_reader.h"
+#include "support/angles.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_polarization_render {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Rendered {
   ExrImage exr;
@@ -71,7 +70,7 @@ TEST(PolarizationRender, MalusLawThroughARotatedAnalyzer) {
   // A polarizer passes half of unpolarized light; a parallel analyzer passes all of what it lets through.
   EXPECT_NEAR(parallel / unfiltered, 0.5, 1e-5);
   for (int degrees = 15; degrees <= 90; degrees += 15) {
-    const double t = degrees * kPi / 180.0;
+    const double t = degrees * kPiD / 180.0;
     const double ratio = render(polarized_lamp_scene("[1, 0, 0]", analyzer(degrees))).luminance() / parallel;
     std::printf("Malus: analyzer at %2d deg passes %.6f (cos^2 = %.6f)\n", degrees, ratio,
                 std::cos(t) * std::cos(t));
@@ -92,7 +91,7 @@ TEST(PolarizationRender, AngleOfLinearPolarizationIsMeasuredFromTheImageXAxis) {
     const double s0 = r.mean("stokes.S0.Y"), s1 = r.mean("stokes.S1.Y"), s2 = r.mean("stokes.S2.Y"),
                  s3 = r.mean("stokes.S3.Y");
     ASSERT_GT(s0, 0.0) << r.log;
-    double aolp = r.mean("AoLP") * 180.0 / kPi;
+    double aolp = r.mean("AoLP") * 180.0 / kPiD;
     if (c.aolp_degrees == 90.0 && aolp < 0.0) aolp += 180.0;  // +-90 is the same axis
     EXPECT_NEAR(aolp, c.aolp_degrees, 1e-3) << c.axis;
     EXPECT_NEAR(r.mean("DoLP"), 1.0, 1e-5) << c.axis;
@@ -194,9 +193,9 @@ TEST(PolarizationRender, PolarizationPngIsWritten) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_polarization_render
 
-namespace ochre::test {
+namespace ochre::test::test_polarization_render {
 namespace {
 
 // Black glass (n = 1.5, refraction absorbed) seen at Brewster's angle atan(1.5) in the x-z plane,
@@ -218,7 +217,7 @@ std::string brewster_scene(const std::string& lamp_extra, const std::string& cam
                {{"type": "plane", "size": [10, 10], "material": "lamp" {},
                 "transform": [{{"rotate": {{"axis": [0, 1, 0], "angle": {}}}}}, {{"translate": [{}, 0, {}]}} {}]}}]
   }})",
-                     -5 * s, 5 * c, camera_extra, rotate, lamp_extra, 180.0 + theta * 180.0 / kPi, 5 * s,
+                     -5 * s, 5 * c, camera_extra, rotate, lamp_extra, 180.0 + theta * 180.0 / kPiD, 5 * s,
                      5 * c, rotate);
 }
 
@@ -263,7 +262,7 @@ TEST(PolarizationRender, BrewsterAngleExtinguishesPPolarizedLight) {
 // with it: (S1, S2) rotate by 2 psi (AoLP + psi).
 TEST(PolarizationRender, RotationAboutTheViewAxisRotatesS1S2ByTwiceTheAngle) {
   const double theta = std::atan(1.5);
-  const double psi_degrees = 30.0, psi = psi_degrees * kPi / 180.0;
+  const double psi_degrees = 30.0, psi = psi_degrees * kPiD / 180.0;
   // About the view axis pointing back at the camera: a right-handed turn about it is counter-clockwise as
   // the camera sees it (from its image x axis toward its up axis), the sense in which AoLP grows.
   const std::string rotation = fmt::format(R"({{"rotate": {{"axis": [{}, 0, {}], "angle": {}}}}})",
@@ -283,9 +282,9 @@ TEST(PolarizationRender, RotationAboutTheViewAxisRotatesS1S2ByTwiceTheAngle) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_polarization_render
 
-namespace ochre::test {
+namespace ochre::test::test_polarization_render {
 namespace {
 
 struct V3 {
@@ -294,7 +293,7 @@ struct V3 {
 
 // Rodrigues rotation of v about the unit axis k by `degrees`.
 V3 rotate(const V3& v, const V3& k, double degrees) {
-  const double a = degrees * kPi / 180.0, c = std::cos(a), s = std::sin(a);
+  const double a = degrees * kPiD / 180.0, c = std::cos(a), s = std::sin(a);
   const double kv = k.x * v.x + k.y * v.y + k.z * v.z;
   const V3 kxv{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z, k.x * v.y - k.y * v.x};
   return {v.x * c + kxv.x * s + k.x * kv * (1 - c), v.y * c + kxv.y * s + k.y * kv * (1 - c),
@@ -313,7 +312,7 @@ std::string json(const V3& v) {
 // reference frames').
 std::string groove_scene(double theta_degrees, double degrees) {
   const V3 axis{0.267261242, 0.534522484, 0.801783726};  // (1, 2, 3) / sqrt(14)
-  const double t = theta_degrees * kPi / 180.0;
+  const double t = theta_degrees * kPiD / 180.0;
   const V3 target{0, 0.4, 0.4};
   const V3 eye{target.x - 6 * std::sin(t), target.y, target.z + 6 * std::cos(t)};
   const double h = 0.70710678118654752;  // half the facet width (2) times cos 45
@@ -369,9 +368,9 @@ TEST(PolarizationRender, GrooveWithHorizontalSegmentsMatchesTheExactReflectance)
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_polarization_render
 
-namespace ochre::test {
+namespace ochre::test::test_polarization_render {
 namespace {
 
 // With unpolarized light, an intensity film and one polarizing bounce, the first row of the Mueller
@@ -428,9 +427,9 @@ TEST(PolarizationRender, CrossedPolarizersRemoveSpecularGlare) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_polarization_render
 
-namespace ochre::test {
+namespace ochre::test::test_polarization_render {
 namespace {
 
 // Spectral Stokes layers (Fichet et al. 2021): S0..S3 per bin; light polarized along the image x axis has
@@ -450,4 +449,4 @@ TEST(PolarizationRender, SpectralStokesLayersFollowTheSpectralLayout) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_polarization_render

@@ -16,12 +16,11 @@
 #include "materials/numerics/gauss_legendre.h"
 #include "renderer/exr_reader.h"
 #include "spectra/cie.h"
+#include "support/angles.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_powder_render {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 PowderWavelength<double> default_hematite(double lambda_nm) {
   const auto table = PigmentTable::named("hematite", PowderTau::kPaper);
@@ -33,7 +32,7 @@ double directional_albedo(double lambda_nm, const Vec3d& wo) {
   const PowderParams<double> p;
   const PowderWavelength<double> w = default_hematite(lambda_nm);
   const GaussLegendreRule us = gauss_legendre_rule(192, 0.0, 1.0),
-                          phis = gauss_legendre_rule(192, 0.0, 2 * kPi);
+                          phis = gauss_legendre_rule(192, 0.0, 2 * kPiD);
   double sum = 0.0;
   for (size_t a = 0; a < us.nodes.size(); ++a) {
     const double s = std::sqrt(us.nodes[a]), c = std::sqrt(1.0 - us.nodes[a]);
@@ -46,7 +45,7 @@ double directional_albedo(double lambda_nm, const Vec3d& wo) {
 
 TEST(PowderRender, SpectralRadianceUnderAConstantEnvironmentIsTheDirectionalAlbedo) {
   // Orthographic view at 30 degrees from the normal; the environment's radiance is 1 at every wavelength.
-  const double theta = 30.0 * kPi / 180.0;
+  const double theta = 30.0 * kPiD / 180.0;
   const auto dir = scratch_dir();
   write_text(dir / "scene.json", fmt::format(R"({{
     "camera": {{"type": "orthographic", "size": 0.5, "eye": [0, {}, {}], "target": [0, 0, 0], "up": [0, 0, 1]}},
@@ -114,4 +113,4 @@ TEST(PowderRender, OppositionEffectWithTheLightAtTheCamera) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_powder_render

@@ -16,7 +16,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test {
+namespace ochre::test::test_regression {
 namespace {
 
 namespace fs = std::filesystem;
@@ -146,4 +146,4 @@ TEST(OchreRegress, BadArguments) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_regression

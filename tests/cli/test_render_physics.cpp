@@ -11,7 +11,7 @@
 #include "renderer/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // One Lambert sphere (radius 1) filling the centre of an orthographic view, in a constant
@@ -110,9 +110,9 @@ TEST(AnalyticDirectLighting, ConstantEnvironmentOverPlane) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // A one-sided emissive disk of radius R and radiance L, facing down at height h over a Lambert
@@ -185,9 +185,9 @@ TEST(Textures, TexturedPlaneShowsTexelColours) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // A 256x256 black/white checker seen so that one pixel covers 32x32 texels: with the ray-cone
@@ -225,9 +225,9 @@ TEST(Textures, MinifiedTextureIsFiltered) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // A spot light straight above a Lambert plane: inside the inner cone the plane shows the point-light
@@ -262,9 +262,9 @@ TEST(AnalyticDirectLighting, SpotLightCone) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // An environment map of constant value renders the same image as the constant environment of that
@@ -301,9 +301,9 @@ TEST(EnvironmentMap, ConstantMapMatchesConstantEnvironment) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics
 
-namespace ochre::test {
+namespace ochre::test::test_render_physics {
 namespace {
 
 // A Catmull-Clark subdivided cube (the scene's "subdivision" key) is a closed convex-ish surface:
@@ -342,4 +342,4 @@ TEST(Subdivision, DisplacementNeedsSubdivision) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_render_physics

@@ -15,7 +15,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_scene_field_types {
 namespace {
 
 std::string data_file(const char* name) {
@@ -388,4 +388,4 @@ TEST(SceneFieldTypes, DocumentedKeysAllHaveACase) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_scene_field_types

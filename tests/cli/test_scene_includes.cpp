@@ -9,7 +9,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_scene_includes {
 namespace {
 
 namespace fs = std::filesystem;
@@ -271,4 +271,4 @@ TEST(SceneIncludesBad, BadValueFromAPresetNamesThePreset) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_scene_includes

@@ -17,7 +17,7 @@
 #include "cli/process_control.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_signals {
 namespace {
 
 namespace fs = std::filesystem;
@@ -105,4 +105,4 @@ TEST(Signals, SigtermWhileOchreVGrooveDrawsTheGridPanels) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_signals

@@ -8,7 +8,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_spectrum_extrapolation {
 namespace {
 
 std::string scene_with_sky(const std::string& radiance) {
@@ -59,4 +59,4 @@ TEST(SpectrumExtrapolation, UnknownValueIsBadInputNamingTheField) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_spectrum_extrapolation

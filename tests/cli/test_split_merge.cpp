@@ -15,7 +15,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test {
+namespace ochre::test::test_split_merge {
 namespace {
 
 namespace fs = std::filesystem;
@@ -301,4 +301,4 @@ TEST(SplitOptions, MalformedOrOutOfRangeValuesAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_split_merge

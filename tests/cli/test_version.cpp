@@ -12,7 +12,7 @@
 #include "renderer/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_version {
 namespace {
 
 std::string cmake_project_version() {
@@ -46,4 +46,4 @@ TEST(Version, RenderedExrRecordsTheVersionOfCMakeLists) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_version

@@ -14,18 +14,17 @@
 
 #include "cli/render_probe.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::test_vgroove_render {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Vec {
   double x, y, z;
 };
 
 Vec rotate(const Vec& v, const Vec& k, double degrees) {  // Rodrigues, k unit
-  const double a = degrees * kDeg, c = std::cos(a), s = std::sin(a), kv = k.x * v.x + k.y * v.y + k.z * v.z;
+  const double a = degrees * kDegD, c = std::cos(a), s = std::sin(a), kv = k.x * v.x + k.y * v.y + k.z * v.z;
   const Vec kxv{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z, k.x * v.y - k.y * v.x};
   return {v.x * c + kxv.x * s + k.x * kv * (1 - c), v.y * c + kxv.y * s + k.y * kv * (1 - c),
           v.z * c + kxv.z * s + k.z * kv * (1 - c)};
@@ -46,7 +45,7 @@ struct View {
 // The camera, the environment and one shape with its material, all turned by view.turn.
 std::string scene(const View& v, const std::string& shape, const std::string& material, double size, int spp,
                   int max_depth = 24) {
-  const double t = v.theta * kDeg, p = v.phi * kDeg;
+  const double t = v.theta * kDegD, p = v.phi * kDegD;
   const Vec e{std::sin(t) * std::sin(p), std::sin(t) * std::cos(p), std::cos(t)};
   const Vec target{v.centre, v.centre, 0.0};
   const Vec eye{target.x + 50 * e.x, target.y + 50 * e.y, target.z + 50 * e.z};
@@ -101,7 +100,7 @@ const LuminanceImage& white_image(int spp) {
 }
 
 double exact_reflectance(double alpha, const View& v, const FacetIndex& facet) {
-  return directional_reflectance(VGroove(alpha * kDeg), groove_direction(v.theta * kDeg, v.phi * kDeg),
+  return directional_reflectance(VGroove(alpha * kDegD), groove_direction(v.theta * kDegD, v.phi * kDegD),
                                  ChainModel::kRigorous, std::vector<FacetIndex>{facet})
       .reflectance[0];
 }
@@ -176,4 +175,4 @@ TEST(VGrooveRender, HugeTiltedMirrorRendersTheEnvironmentAtEveryPixel) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_vgroove_render

@@ -5,12 +5,11 @@
 
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "spectra/named_spectra.h"
+#include "support/angles.h"
 
 namespace ochre::test {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 ChainModel chain_model(const std::string& name) {
   if (name == "rigorous") return ChainModel::kRigorous;
@@ -34,15 +33,15 @@ FacetSpec tabulated_facet(const std::string& element, double wavelength_nm) {
 
 double library_bihemispherical(const FacetSpec& facet, double alpha_deg, const std::string& model,
                                int reflection_limit) {
-  return bihemispherical_reflectance(VGroove(alpha_deg * kDeg), chain_model(model), facets(facet),
+  return bihemispherical_reflectance(VGroove(alpha_deg * kDegD), chain_model(model), facets(facet),
                                      reflection_limit)[0];
 }
 
 LibraryDirectional library_directional(const FacetSpec& facet, double alpha_deg, double theta_deg,
                                        double phi_deg, const std::string& model) {
-  const DirectionalReflectance r =
-      directional_reflectance(VGroove(alpha_deg * kDeg), groove_direction(theta_deg * kDeg, phi_deg * kDeg),
-                              chain_model(model), facets(facet));
+  const DirectionalReflectance r = directional_reflectance(
+      VGroove(alpha_deg * kDegD), groove_direction(theta_deg * kDegD, phi_deg * kDegD), chain_model(model),
+      facets(facet));
   return {r.reflectance[0], r.max_reflections};
 }
 

@@ -10,16 +10,18 @@
 #include <vector>
 
 #include "chandrasekhar_h.h"
+#include "support/angles.h"
 #include "tools/halfspace/gauss_legendre.h"
 
-namespace ochre::halfspace::test {
+namespace ochre::halfspace::test::halfspace_mc_test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using ochre::test::kPiD;
+
 constexpr double kSigmas = 4.0;
 
 Direction at(double mu, double phi_deg) {
-  return direction_from_angles(mu, phi_deg * kPi / 180.0);
+  return direction_from_angles(mu, phi_deg * kPiD / 180.0);
 }
 
 double combined_se(const Estimate& a, const Estimate& b) {
@@ -87,8 +89,8 @@ struct HemisphereQuadrature {
     const std::vector<double>&x = rule.x, &w = rule.w;
     for (int i = 0; i < mu_nodes; ++i)
       for (int j = 0; j < phi_nodes; ++j) {
-        directions.push_back(direction_from_angles(x[i], kPi * (j + 0.5) / phi_nodes));
-        weights.push_back(w[i] * x[i] * 2.0 * kPi / phi_nodes);
+        directions.push_back(direction_from_angles(x[i], kPiD * (j + 0.5) / phi_nodes));
+        weights.push_back(w[i] * x[i] * 2.0 * kPiD / phi_nodes);
       }
   }
   Estimate integrate(const GridResult& r) const {
@@ -136,7 +138,7 @@ TEST(HalfspaceMc, ConservativeHalfspaceReflectsEverything) {
     options.max_collisions = cut;
     const GridResult r = simulate_brdf_grid(1.0, at(0.5, 0.0), {at(0.5, 0.0)}, 4'000, 17, options);
     EXPECT_NEAR(r.albedo.mean + r.truncated_weight, 1.0, 1e-12) << "no weight is lost at c = 1";
-    EXPECT_LT(r.truncated_weight, 3.0 / std::sqrt(kPi * cut)) << "cut " << cut;
+    EXPECT_LT(r.truncated_weight, 3.0 / std::sqrt(kPiD * cut)) << "cut " << cut;
   }
 }
 
@@ -156,7 +158,7 @@ TEST(HalfspaceMc, IsotropicScatteringMatchesChandrasekhar) {
       const GridResult r = simulate_brdf_grid(k.c, at(mu_i, 0.0), outgoing, k.paths, seed++, options);
       for (size_t i = 0; i < outgoing.size(); ++i) {
         const double mu_o = outgoing[i].z;
-        const double expected = k.c * h(mu_i) * h(mu_o) / (4.0 * kPi * (mu_i + mu_o));
+        const double expected = k.c * h(mu_i) * h(mu_o) / (4.0 * kPiD * (mu_i + mu_o));
         EXPECT_NEAR(r.brdf[i].total.mean, expected, kSigmas * r.brdf[i].total.standard_error)
             << "c " << k.c << " mu_i " << mu_i << " mu_o " << mu_o;
       }
@@ -195,4 +197,4 @@ TEST(HalfspaceMc, DeterministicForASeedWhateverTheThreadCount) {
 }
 
 }  // namespace
-}  // namespace ochre::halfspace::test
+}  // namespace ochre::halfspace::test::halfspace_mc_test

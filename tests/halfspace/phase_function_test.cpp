@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "chi_square.h"
+#include "support/angles.h"
 
-namespace ochre::halfspace::test {
+namespace ochre::halfspace::test::phase_function_test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using ochre::test::kPiD;
 
 // Composite Simpson's rule.
 template <typename F>
@@ -55,20 +56,20 @@ std::vector<double> expected_counts(int samples, int bins) {
   std::vector<double> expected(bins);
   for (int b = 0; b < bins; ++b) {
     const double u0 = -1.0 + 2.0 * b / bins, u1 = -1.0 + 2.0 * (b + 1) / bins;
-    expected[b] = samples * 2.0 * kPi * integrate(lambertian_sphere_phase, u0, u1, 200);
+    expected[b] = samples * 2.0 * kPiD * integrate(lambertian_sphere_phase, u0, u1, 200);
   }
   return expected;
 }
 
 TEST(LambertianSpherePhase, MatchesEquation1Properties) {
-  EXPECT_NEAR(2.0 * kPi * integrate(lambertian_sphere_phase, -1.0, 1.0), 1.0, 1e-7) << "normalised to 1";
-  const double g = 2.0 * kPi * integrate([](double u) { return u * lambertian_sphere_phase(u); }, -1.0, 1.0);
+  EXPECT_NEAR(2.0 * kPiD * integrate(lambertian_sphere_phase, -1.0, 1.0), 1.0, 1e-7) << "normalised to 1";
+  const double g = 2.0 * kPiD * integrate([](double u) { return u * lambertian_sphere_phase(u); }, -1.0, 1.0);
   EXPECT_NEAR(g, -4.0 / 9.0, 1e-7) << "d'Eon: g = -4/9";
   EXPECT_NEAR(lambertian_sphere_phase(1.0), 0.0, 1e-15) << "no forward scattering";
-  EXPECT_NEAR(lambertian_sphere_phase(-1.0), 2.0 / (3.0 * kPi), 1e-15);
+  EXPECT_NEAR(lambertian_sphere_phase(-1.0), 2.0 / (3.0 * kPiD), 1e-15);
   // The Legendre coefficient A2 = 2 pi 5 int p P2 = 5/16 (d'Eon Eq 4).
   const double a2 =
-      2.0 * kPi * 5.0 *
+      2.0 * kPiD * 5.0 *
       integrate([](double u) { return lambertian_sphere_phase(u) * 0.5 * (3.0 * u * u - 1.0); }, -1.0, 1.0);
   EXPECT_NEAR(a2, 5.0 / 16.0, 1e-6);
 }
@@ -104,8 +105,8 @@ TEST(LambertianSpherePhase, SamplerIsAzimuthallySymmetric) {
   for (int i = 0; i < kSamples; ++i) {
     const Direction out = sample_lambertian_sphere_scattering(d, random);
     double phi = std::atan2(dot(out, e2), dot(out, e1));
-    if (phi < 0.0) phi += 2.0 * kPi;
-    counts[std::min(kBins - 1, static_cast<int>(phi / (2.0 * kPi) * kBins))] += 1.0;
+    if (phi < 0.0) phi += 2.0 * kPiD;
+    counts[std::min(kBins - 1, static_cast<int>(phi / (2.0 * kPiD) * kBins))] += 1.0;
   }
   const ChiSquare chi2 = chi_square(counts, std::vector<double>(kBins, double(kSamples) / kBins));
   EXPECT_LT(chi_square_z(chi2), 4.0) << chi2.statistic;
@@ -120,4 +121,4 @@ TEST(LambertianSpherePhase, ChiSquareRejectsAWrongSampler) {
 }
 
 }  // namespace
-}  // namespace ochre::halfspace::test
+}  // namespace ochre::halfspace::test::phase_function_test

@@ -19,7 +19,7 @@
 #include "tools/halfspace/direction.h"
 #include "tools/halfspace/phase_function.h"
 
-namespace ochre::halfspace::test {
+namespace ochre::halfspace::test::reference_table_test {
 namespace {
 
 // With ~1000 rows, 4.5 sigma keeps the chance of a false alarm of a correct table below 1 %.
@@ -112,4 +112,4 @@ TEST(HalfspaceReference, TotalsAreReciprocal) {
 }
 
 }  // namespace
-}  // namespace ochre::halfspace::test
+}  // namespace ochre::halfspace::test::reference_table_test

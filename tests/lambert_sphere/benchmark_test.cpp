@@ -13,7 +13,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::benchmark_test {
 namespace {
 
 struct Directions {
@@ -81,4 +81,4 @@ TEST(LambertSphereBenchmark, NanosecondsPerEvaluation) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::benchmark_test

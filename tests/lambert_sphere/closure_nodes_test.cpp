@@ -13,7 +13,7 @@
 #include "support/spectrum_lanes.h"
 #include "support/test_material.h"
 
-namespace ochre::test {
+namespace ochre::test::closure_nodes_test {
 namespace {
 
 const SampledWavelengths& wavelengths() {
@@ -69,4 +69,4 @@ TEST(LambertSphereNode, OrenNayarAndChandrasekhar) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::closure_nodes_test

@@ -8,7 +8,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_constants_table.h"
 
-namespace ochre {
+namespace ochre::constants_table_test {
 namespace {
 
 TEST(LambertSphereConstantsTable, InterpolatedConstantsGiveTheDirectBrdf) {
@@ -53,4 +53,4 @@ TEST(LambertSphereConstantsTable, InterpolatedConstantsGiveTheDirectBrdf) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::constants_table_test

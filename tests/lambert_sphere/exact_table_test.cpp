@@ -17,7 +17,7 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 
-namespace ochre::test {
+namespace ochre::test::exact_table_test {
 namespace {
 
 // Grid of the committed table: 25 x 25 cosines (x = sqrt(mu)), 25 albedos (s = sqrt(1 - c)):
@@ -72,4 +72,4 @@ TEST(LambertSphereExactTable, CommittedTableMatchesAFreshSolution) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::exact_table_test

@@ -10,7 +10,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/numerics/gauss_legendre.h"
 
-namespace ochre::test {
+namespace ochre::test::h_function_test {
 namespace {
 
 TEST(HFunction, IsotropicConservativeValue) {
@@ -118,4 +118,4 @@ TEST(HFunction, FittedH0AndCorrectedH1AgainstExact) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::h_function_test

@@ -14,12 +14,11 @@
 #include "materials/lobes/oren_nayar.h"
 #include "materials/lobes/sampling_check.h"
 #include "materials/numerics/h_function.h"
+#include "support/angles.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::lobes_test {
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 const SampledWavelengths& wavelengths() {
   static const SampledWavelengths lambda = SampledWavelengths::fixed(lanes({400.0f, 500.0f, 600.0f, 700.0f}));
@@ -119,4 +118,4 @@ TEST(Chandrasekhar, TabulatedHFunctionAndEnergy) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::lobes_test

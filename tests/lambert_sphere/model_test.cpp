@@ -14,11 +14,10 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/numerics/h_function.h"
 #include "materials/numerics/halfspace_doubling.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::model_test {
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 double wi_dot_wo(double mu_i, double mu_o, double phi) {
   return mu_i * mu_o + std::sqrt((1 - mu_i * mu_i) * (1 - mu_o * mu_o)) * std::cos(phi);
@@ -334,4 +333,4 @@ TEST(LambertSphereModel, HardCasesAreFiniteNonNegativeAndZeroBelowTheHorizon) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::model_test

@@ -12,12 +12,11 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "support/angles.h"
 #include "tools/halfspace/halfspace_mc.h"
 
-namespace ochre::test {
+namespace ochre::test::monte_carlo_test {
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 struct Case {
   double c;
@@ -74,4 +73,4 @@ TEST(LambertSphereMonteCarlo, ModelsAgainstTheSimulation) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::monte_carlo_test

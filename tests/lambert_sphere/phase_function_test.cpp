@@ -10,11 +10,10 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
 #include "materials/lobes/sampling_check.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::phase_function_test {
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 // 2 pi int_{-1}^{1} g(u) p(u) du by composite Simpson in theta (u = cos theta), independent of the
 // Gauss rule the library uses.
@@ -121,4 +120,4 @@ TEST(LambertSpherePhase, Eq7MaximumErrorIsBelow6e4) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::phase_function_test

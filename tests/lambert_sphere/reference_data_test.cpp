@@ -16,12 +16,11 @@
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
+#include "support/angles.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::reference_data_test {
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 struct Row {
   double c, mu_i, mu_o, phi_deg, single, single_se, multiple, multiple_se, total, total_se;
@@ -100,4 +99,4 @@ TEST(LambertSphereReference, ModelsAgainstTheCommittedSimulation) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::reference_data_test

@@ -13,7 +13,7 @@
 #include "materials/lobes/lambert.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::closure_test {
 namespace {
 
 const SampledSpectrum kWeight = lanes({0.25f, 0.5f, 0.75f, 1.0f});
@@ -132,4 +132,4 @@ TEST(Closure, CopiesAndClearDoNotKeepTheTargetsOldLobes) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::closure_test

@@ -17,7 +17,7 @@
 #include "spectra/named_spectra.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::conductor_test {
 namespace {
 
 const SampledSpectrum kSilverN(0.136125f), kSilverK(4.010625f);
@@ -321,4 +321,4 @@ TEST_F(ConductorNode, RejectsUnknownMetalsAndBadRoughness) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::conductor_test

@@ -15,7 +15,7 @@
 #include "materials/lobes/fresnel.h"
 #include "polarization_test_support.h"
 
-namespace ochre::test {
+namespace ochre::test::dielectric_test {
 namespace {
 
 TEST(SmoothDielectric, ReflectionAndRefractionProbabilitiesSumToOneOnBothSides) {
@@ -233,4 +233,4 @@ TEST(DielectricNode, SmoothRoughAndOpaque) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::dielectric_test

@@ -7,10 +7,10 @@
 
 #include <cmath>
 
-namespace ochre::test {
-namespace {
+#include "support/angles.h"
 
-constexpr float kDeg = kPi / 180.0f;
+namespace ochre::test::fresnel_test {
+namespace {
 
 Mueller make(std::initializer_list<std::initializer_list<float>> rows) {
   Mueller m;
@@ -30,19 +30,19 @@ void expect_mueller(const Mueller& got, const Mueller& want, float tol) {
 
 TEST(Fresnel, ScalarDielectricValuesOfTheNote) {
   EXPECT_NEAR(fresnel_dielectric(1.0f, 1.5f), 0.04f, 1e-6f);
-  EXPECT_NEAR(fresnel_dielectric(std::cos(45 * kDeg), 1.5f), 0.0502399f, 1e-6f);
-  EXPECT_NEAR(fresnel_dielectric(std::cos(10 * kDeg), 1 / 1.5f), 0.0400830f, 1e-6f);
-  EXPECT_EQ(fresnel_dielectric(std::cos(45 * kDeg), 1 / 1.5f), 1.0f);  // total internal reflection
+  EXPECT_NEAR(fresnel_dielectric(std::cos(45 * kDegF), 1.5f), 0.0502399f, 1e-6f);
+  EXPECT_NEAR(fresnel_dielectric(std::cos(10 * kDegF), 1 / 1.5f), 0.0400830f, 1e-6f);
+  EXPECT_EQ(fresnel_dielectric(std::cos(45 * kDegF), 1 / 1.5f), 1.0f);  // total internal reflection
   for (float c : {0.0f, 1e-7f, 0.3f, 0.7f, 1.0f}) EXPECT_EQ(fresnel_dielectric(c, 1.0f), 0.0f) << c;
   // The other side: cos < 0 means eta inverted.
-  EXPECT_NEAR(fresnel_dielectric(-std::cos(10 * kDeg), 1.5f), 0.0400830f, 1e-6f);
+  EXPECT_NEAR(fresnel_dielectric(-std::cos(10 * kDegF), 1.5f), 0.0400830f, 1e-6f);
 }
 
 TEST(Fresnel, AmplitudeSignsAreVerdet) {
   const auto a = fresnel_amplitudes_dielectric(1.0f, 1.5f);
   EXPECT_NEAR(a.r_s.real(), -0.2f, 1e-6f);
   EXPECT_NEAR(a.r_p.real(), +0.2f, 1e-6f);
-  const auto b = fresnel_amplitudes_dielectric(std::cos(45 * kDeg), 1.5f);
+  const auto b = fresnel_amplitudes_dielectric(std::cos(45 * kDegF), 1.5f);
   EXPECT_NEAR(b.r_s.real(), -0.3033370f, 1e-6f);
   EXPECT_NEAR(b.r_p.real(), +0.0920134f, 1e-6f);
   EXPECT_NEAR(b.t_s.real(), 1.0f + b.r_s.real(), 1e-6f);  // t_s = 1 + r_s
@@ -126,7 +126,7 @@ TEST(Fresnel, TransmissionAtBrewsterFromInside) {
 }
 
 TEST(Fresnel, DielectricAt45Degrees) {
-  expect_mueller(specular_reflection(std::cos(45 * kDeg), 1.5f),
+  expect_mueller(specular_reflection(std::cos(45 * kDegF), 1.5f),
                  make({{0.0502399f, 0.0417735f, 0, 0},
                        {0.0417735f, 0.0502399f, 0, 0},
                        {0, 0, -0.0279111f, 0},
@@ -135,7 +135,7 @@ TEST(Fresnel, DielectricAt45Degrees) {
 }
 
 TEST(Fresnel, SilverAt45Degrees) {
-  const float n = 0.136125f, k = 4.010625f, c = std::cos(45 * kDeg);
+  const float n = 0.136125f, k = 4.010625f, c = std::cos(45 * kDegF);
   const auto a = fresnel_amplitudes(c, std::complex<float>(n, -k));
   EXPECT_NEAR(std::norm(a.r_s), 0.9780722f, 2e-6f);
   EXPECT_NEAR(std::norm(a.r_p), 0.9566252f, 2e-6f);
@@ -226,4 +226,4 @@ TEST(Fresnel, MuellerMatricesArePhysical) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::fresnel_test

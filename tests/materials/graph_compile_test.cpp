@@ -7,7 +7,7 @@
 #include "materials/lobes/lambert.h"
 #include "materials/nodes/node_registry.h"
 
-namespace ochre::test {
+namespace ochre::test::graph_compile_test {
 namespace {
 
 bool lists(const CompiledMaterial& m, const std::string& fragment) {
@@ -211,4 +211,4 @@ TEST(Registry, RejectsDuplicatesAndIncompleteDefinitions) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::graph_compile_test

@@ -13,7 +13,7 @@
 #include "material_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::graph_error_test {
 namespace {
 
 using nlohmann::json;
@@ -358,9 +358,9 @@ TEST(GraphErrors, ConflictingSpectralRolesNeedAnExplicitConversion) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::graph_error_test
 
-namespace ochre::test {
+namespace ochre::test::graph_error_test {
 namespace {
 
 std::string numbered(const char* prefix, int i) {
@@ -393,4 +393,4 @@ TEST(GraphErrors, TooManyLobes) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::graph_error_test

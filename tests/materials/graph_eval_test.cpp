@@ -15,7 +15,7 @@
 #include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::graph_eval_test {
 namespace {
 
 class GraphEval : public MaterialEvaluation {
@@ -355,4 +355,4 @@ TEST_F(GraphEval, MissingWavelengthsIsAnError) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::graph_eval_test

@@ -7,7 +7,7 @@
 
 #include "materials/lobes/fresnel.h"
 
-namespace ochre::test {
+namespace ochre::test::jones_test {
 namespace {
 
 void expect_mueller(const Mueller& got, const Mueller& want, float tol) {
@@ -36,4 +36,4 @@ TEST(Jones, ProductMapsToTheProductOfMuellerMatrices) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::jones_test

@@ -10,7 +10,7 @@
 #include "materials/core/sampling.h"
 #include "materials/lobes/lambert.h"
 
-namespace ochre::test {
+namespace ochre::test::lambert_chi2_test {
 namespace {
 
 // Samples the cosine-weighted hemisphere but claims a uniform hemisphere pdf (1 / 2pi). Its
@@ -144,4 +144,4 @@ TEST(Chi2, CatchesWeightsInconsistentWithEvalAndPdf) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::lambert_chi2_test

@@ -12,7 +12,7 @@
 #include "materials/lobes/microfacet_ggx.h"
 #include "polarization_test_support.h"
 
-namespace ochre::test {
+namespace ochre::test::microfacet_test {
 namespace {
 
 // Midpoint quadrature of f(m) over the upper hemisphere in (theta, phi).
@@ -145,4 +145,4 @@ TEST(Ggx, HardCasesStayFinite) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::microfacet_test

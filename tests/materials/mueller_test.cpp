@@ -7,12 +7,11 @@
 
 #include <cmath>
 
+#include "support/angles.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::mueller_test {
 namespace {
-
-constexpr float kDeg = kPi / 180.0f;
 
 void expect_stokes(const Stokes& got, const Stokes& want, float tol = 1e-6f) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(got[i], want[i], tol) << "component " << i;
@@ -48,7 +47,7 @@ TEST(Mueller, ProductTransposeAndRowVectorAgreeWithDefinitions) {
 
 TEST(Mueller, RotatorMatchesTheNote) {
   // rotator(+45 deg)[1,1,0,0] = [1,0,-1,0]
-  expect_stokes(rotator(45 * kDeg) * Stokes{{1, 1, 0, 0}}, Stokes{{1, 0, -1, 0}});
+  expect_stokes(rotator(45 * kDegF) * Stokes{{1, 1, 0, 0}}, Stokes{{1, 0, -1, 0}});
   // Rotations compose additively, and the inverse is the transpose.
   expect_mueller(rotator(0.3f) * rotator(0.5f), rotator(0.8f));
   expect_mueller(rotator(-0.7f), transpose(rotator(0.7f)));
@@ -57,7 +56,7 @@ TEST(Mueller, RotatorMatchesTheNote) {
 
 TEST(Mueller, MalusLawThroughARotatedPolarizer) {
   // A linear polarizer rotated by 30 deg passes S0 = cos^2(30 deg) = 0.75 of [1,1,0,0].
-  const Stokes out = rotated_element(30 * kDeg, linear_polarizer()) * Stokes{{1, 1, 0, 0}};
+  const Stokes out = rotated_element(30 * kDegF, linear_polarizer()) * Stokes{{1, 1, 0, 0}};
   EXPECT_NEAR(out[0], 0.75f, 1e-6f);
   for (float theta : {0.0f, 0.2f, 1.0f, 2.5f}) {
     const Stokes o = rotated_element(theta, linear_polarizer()) * Stokes{{1, 1, 0, 0}};
@@ -68,9 +67,9 @@ TEST(Mueller, MalusLawThroughARotatedPolarizer) {
 TEST(Mueller, PolarizerAtFourAnglesOnUnpolarizedLight) {
   const Stokes unpolarized = Stokes::unpolarized(1.0f);
   expect_stokes(rotated_element(0, linear_polarizer()) * unpolarized, Stokes{{.5f, .5f, 0, 0}});
-  expect_stokes(rotated_element(90 * kDeg, linear_polarizer()) * unpolarized, Stokes{{.5f, -.5f, 0, 0}});
-  expect_stokes(rotated_element(45 * kDeg, linear_polarizer()) * unpolarized, Stokes{{.5f, 0, .5f, 0}});
-  expect_stokes(rotated_element(-45 * kDeg, linear_polarizer()) * unpolarized, Stokes{{.5f, 0, -.5f, 0}});
+  expect_stokes(rotated_element(90 * kDegF, linear_polarizer()) * unpolarized, Stokes{{.5f, -.5f, 0, 0}});
+  expect_stokes(rotated_element(45 * kDegF, linear_polarizer()) * unpolarized, Stokes{{.5f, 0, .5f, 0}});
+  expect_stokes(rotated_element(-45 * kDegF, linear_polarizer()) * unpolarized, Stokes{{.5f, 0, -.5f, 0}});
 }
 
 TEST(Mueller, DepolarizerAndAbsorber) {
@@ -123,12 +122,12 @@ TEST(StokesBasisRotation, ReframedElementActsTheSameOnTheSameLight) {
   // same world-space light gives the same world-space result.
   const Vec3 d = normalize(Vec3(-0.2f, 0.7f, 0.4f));
   const Vec3 x = normalize(cross(d, Vec3(0, 0, 1))), x2 = rotate_about(x, d, 0.9f);
-  const Mueller m = rotated_element(30 * kDeg, linear_polarizer());
+  const Mueller m = rotated_element(30 * kDegF, linear_polarizer());
   const Mueller m2 = reframe_mueller(m, d, x, x2, d, x, x2);
   const Stokes in{{1, 0.3f, -0.5f, 0.2f}};  // given in frame x
   const Stokes in2 = stokes_basis_rotation(d, x, x2) * in;
   expect_stokes(m2 * in2, stokes_basis_rotation(d, x, x2) * (m * in), 2e-6f);
-  expect_mueller(m2, rotated_element(30 * kDeg - 0.9f, linear_polarizer()), 2e-6f);
+  expect_mueller(m2, rotated_element(30 * kDegF - 0.9f, linear_polarizer()), 2e-6f);
   const StokesSpectrum out = uniform_spectrum(m) * StokesSpectrum{in, in, in, in};
   expect_stokes(out[3], m * in);
 }
@@ -164,4 +163,4 @@ TEST(StokesBasisRotation, IsContinuousWhereBranchyBasesJump) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::mueller_test

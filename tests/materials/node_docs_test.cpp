@@ -8,7 +8,7 @@
 #include "materials/nodes/node_registry.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::node_docs_test {
 namespace {
 
 std::string read_text(const std::filesystem::path& file) {
@@ -43,4 +43,4 @@ TEST(NodeDocs, EveryNodeAndSocketIsDocumented) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::node_docs_test

@@ -12,7 +12,7 @@
 #include "materials/nodes/shading_context.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::noise_test {
 namespace {
 
 TEST(Noise, GradientNoiseIsZeroOnTheLatticeAndBoundedElsewhere) {
@@ -178,4 +178,4 @@ TEST_F(PositionNodes, PositionNodeReadsTheWorldPosition) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::noise_test

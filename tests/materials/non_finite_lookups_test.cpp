@@ -23,7 +23,7 @@
 
 using ochre::test::lanes;
 
-namespace ochre {
+namespace ochre::non_finite_lookups_test {
 namespace {
 
 using test::awkward_floats;
@@ -133,4 +133,4 @@ TEST(NonFiniteLookups, LobesBuiltFromNonFiniteParameters) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::non_finite_lookups_test

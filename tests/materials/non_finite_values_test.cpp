@@ -18,7 +18,7 @@
 #include "support/awkward_floats.h"
 #include "support/spectrum_lanes.h"
 
-namespace ochre::test {
+namespace ochre::test::non_finite_values_test {
 namespace {
 
 bool finite(const SampledSpectrum& s) {
@@ -277,4 +277,4 @@ TEST_F(NonFiniteEntryPoints, MixFactorFedNaN) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::non_finite_values_test

@@ -7,7 +7,7 @@
 
 #include "material_test_support.h"
 
-namespace ochre::test {
+namespace ochre::test::uniform_closure_memo_test {
 namespace {
 
 void expect_same_closure(const Closure& a, const Closure& b, const SampledWavelengths& lambda) {
@@ -87,4 +87,4 @@ TEST_F(UniformClosureMemo, ReusesCountTheNonFiniteValuesOfTheEvaluation) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::uniform_closure_memo_test

@@ -16,7 +16,7 @@
 #include "support/spectrum_lanes.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::powder_closure_test {
 namespace {
 
 class Files : public ResourceResolver {
@@ -143,4 +143,4 @@ TEST(PowderNode, BadParametersAreNamed) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::powder_closure_test

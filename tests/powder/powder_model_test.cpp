@@ -14,12 +14,10 @@
 #include "materials/core/vec3d.h"
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/numerics/gauss_legendre.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::powder_model_test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
 
 Vec3d direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
@@ -27,7 +25,7 @@ Vec3d direction(double theta, double phi) {
 
 Vec3d random_direction(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  return direction(std::acos(u(rng)), 2.0 * kPi * u(rng));
+  return direction(std::acos(u(rng)), 2.0 * kPiD * u(rng));
 }
 
 // The note's eight stress sets (g = 0.7 and -0.5, rho = 0 and 1, kappa = 0.01 and 50, d = 1 um) and the
@@ -73,7 +71,7 @@ TEST(PowderModel, FiniteAndNonNegativeEverywhere) {  // T1
 TEST(PowderModel, FiniteAtExactBackscatterAndGrazing) {  // T2
   for (const Set& s : stress_sets())
     for (double theta : {0.0, 30.0, 80.0, 89.99}) {
-      const Vec3d w = direction(theta * kDeg, 0.7);
+      const Vec3d w = direction(theta * kDegD, 0.7);
       const PowderTerms<double> t = powder_terms(s.p, PowderWavelength<double>{0.55, s.rho, 0.03}, w, w);
       for (double v : {t.l1, t.l2, t.c, t.s}) EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << theta;
     }
@@ -99,7 +97,7 @@ TEST(PowderModel, Reciprocal) {  // T3
   PowderParams<double> printed;
   printed.ladder = PowderLadder::kPrinted;
   const PowderWavelength<double> w{0.7, 0.752, 0.0318};
-  const Vec3d a = direction(20 * kDeg, 0.0), b = direction(60 * kDeg, 2.0);
+  const Vec3d a = direction(20 * kDegD, 0.0), b = direction(60 * kDegD, 2.0);
   EXPECT_GT(std::fabs(powder_terms(printed, w, a, b).l2 - powder_terms(printed, w, b, a).l2), 1e-6);
 }
 
@@ -109,7 +107,7 @@ TEST(PowderModel, EnhancementFactorIsTwoAtExactBackscatter) {  // T4
       for (double theta : {0.0, 25.0, 60.0, 85.0}) {
         PowderParams<double> p;
         p.g = g;
-        const Vec3d w = direction(theta * kDeg, 1.1);
+        const Vec3d w = direction(theta * kDegD, 1.1);
         const PowderTerms<double> t = powder_terms(p, PowderWavelength<double>{0.55, rho, 0.03}, w, w);
         if (t.l2 > 0.0) {
           EXPECT_NEAR((t.l2 + t.c) / t.l2, 2.0, 1e-12) << rho << " " << g << " " << theta;
@@ -129,7 +127,7 @@ TEST(PowderModel, SymmetricLadderEqualsTheSignFixedEquation21) {  // T5
       const double q = (1.0 + mi * c0 - (1.0 - mi * c0) * std::exp(-2.0 * c0 * tau)) / (4.0 * c0);
       const double eq21 =
           3.0 * rho * rho / (1.0 - mi * mi * c0 * c0) * (2.0 * q / (1.0 + mo * c0) - mi * mi / (mi + mo));
-      EXPECT_NEAR(powder_terms(p, PowderWavelength<double>{0.6, rho, tau}, wi, wo).l2, eq21 / (4.0 * kPi),
+      EXPECT_NEAR(powder_terms(p, PowderWavelength<double>{0.6, rho, tau}, wi, wo).l2, eq21 / (4.0 * kPiD),
                   1e-10 * std::fabs(eq21));
     }
   }
@@ -142,14 +140,14 @@ TEST(PowderModel, IsotropicLimitIsEquation14) {  // T6
   for (int i = 0; i < 500; ++i) {
     const Vec3d wi = random_direction(rng), wo = random_direction(rng);
     const double mi = wi.z, mo = wo.z;
-    const double f = std::hypot(wo.x - wi.x, wo.y - wi.y), k = 2.0 * kPi / lambda;
+    const double f = std::hypot(wo.x - wi.x, wo.y - wi.y), k = 2.0 * kPiD / lambda;
     const double alpha = k / p.kappa * f, u = k / p.kappa * (mi - mo), v = 0.5 * (1.0 / mi + 1.0 / mo);
     const double c = std::sqrt(3.0 * (1.0 - rho) + alpha * alpha);  // Eq 15d
     const double eq14c = 3.0 * rho * rho * (c + v * (1.0 - std::exp(-2.0 * c * tau))) /
                          (2.0 * mi * mo * c * v * ((c + v) * (c + v) + u * u));
-    const double eq14a = rho / (4.0 * kPi) / (mi + mo);
+    const double eq14a = rho / (4.0 * kPiD) / (mi + mo);
     const PowderTerms<double> t = powder_terms(p, PowderWavelength<double>{lambda, rho, tau}, wi, wo);
-    EXPECT_NEAR(t.c, eq14c / (4.0 * kPi), 1e-12 * eq14c);
+    EXPECT_NEAR(t.c, eq14c / (4.0 * kPiD), 1e-12 * eq14c);
     EXPECT_NEAR(t.l1, eq14a, 1e-14);
   }
 }
@@ -158,7 +156,7 @@ TEST(PowderModel, IsotropicLimitIsEquation14) {  // T6
 double volume_albedo(const PowderParams<double>& p, const PowderWavelength<double>& w, const Vec3d& wi,
                      bool with_c, int n = 256) {
   const GaussLegendreRule us = gauss_legendre_rule(n, 0.0, 1.0),
-                          phis = gauss_legendre_rule(n, 0.0, 2.0 * kPi);
+                          phis = gauss_legendre_rule(n, 0.0, 2.0 * kPiD);
   double sum = 0.0;
   for (size_t a = 0; a < us.nodes.size(); ++a) {
     const double theta = std::asin(std::sqrt(us.nodes[a]));
@@ -188,9 +186,9 @@ TEST(PowderModel, DefaultMaterialConservesEnergy) {  // T8
     const PowderWavelength<double> w{lambda_nm * 1e-3, table->albedo(float(lambda_nm), 0.05f),
                                      table->tau_o(float(lambda_nm))};
     for (double theta : {0.0, 30.0, 60.0, 80.0, 89.0}) {
-      const Vec3d wi = direction(theta * kDeg, 0.0);
+      const Vec3d wi = direction(theta * kDegD, 0.0);
       // The surface term's albedo is its total integrated scatter, (4 pi mu_i / lambda)^2 A_s'.
-      const double tis = std::pow(4.0 * kPi * wi.z / w.lambda_um, 2) * p.surface_amplitude;
+      const double tis = std::pow(4.0 * kPiD * wi.z / w.lambda_um, 2) * p.surface_amplitude;
       const double albedo = volume_albedo(p, w, wi, true, 128) + tis;
       largest = std::max(largest, albedo);
       EXPECT_LE(albedo, 1.0) << lambda_nm << " " << theta;
@@ -215,12 +213,12 @@ TEST(PowderModel, CyclicalTermScalesWithKappaLambdaAndPeaksAtBackscatter) {  // 
     PowderParams<double> q;
     q.kappa = kappa;
     const PowderWavelength<double> w{lambda, 0.752, 0.0318};
-    const Vec3d wi = direction(30 * kDeg, 0.0);
+    const Vec3d wi = direction(30 * kDegD, 0.0);
     const double peak = powder_terms(q, w, wi, wi).c;
     double lo = 0.0, hi = 0.5;
     for (int it = 0; it < 100; ++it) {
       const double mid = 0.5 * (lo + hi);
-      const Vec3d wo = direction(std::asin(std::sin(30 * kDeg) + mid), 0.0);
+      const Vec3d wo = direction(std::asin(std::sin(30 * kDegD) + mid), 0.0);
       (powder_terms(q, w, wi, wo).c > 0.5 * peak ? lo : hi) = mid;
     }
     return lo;
@@ -230,10 +228,10 @@ TEST(PowderModel, CyclicalTermScalesWithKappaLambdaAndPeaksAtBackscatter) {  // 
   EXPECT_NEAR(half_width(0.125, 0.7) / base, 0.5, 0.05);
   // The peak: C along the incidence plane is largest at theta_o = theta_i (backscatter side).
   for (double theta_i : {0.0, 20.0, 50.0}) {
-    const Vec3d wi = direction(theta_i * kDeg, 0.0);
+    const Vec3d wi = direction(theta_i * kDegD, 0.0);
     double best = -1.0, best_theta = -100.0;
     for (double t = -80.0; t <= 80.0; t += 0.05) {
-      const Vec3d wo = direction(std::fabs(t) * kDeg, t < 0 ? kPi : 0.0);
+      const Vec3d wo = direction(std::fabs(t) * kDegD, t < 0 ? kPiD : 0.0);
       const double c = powder_terms(p, PowderWavelength<double>{0.7, 0.752, 0.0318}, wi, wo).c;
       if (c > best) best = c, best_theta = t;
     }
@@ -248,7 +246,7 @@ TEST(PowderModel, HarveyShackLobeAtTheMirrorWithItsTotalIntegratedScatter) {  //
   // (4 pi sigma mu_i / lambda)^2 is the paraxial result: it holds while the lobe (here sigma_xy = 0.06 in
   // the projected disk) stays clear of the horizon; at 60 degrees the horizon cuts 3.5 % of it.
   for (double theta_i : {0.0, 20.0, 40.0}) {
-    const Vec3d wi = direction(theta_i * kDeg, 0.3);
+    const Vec3d wi = direction(theta_i * kDegD, 0.3);
     const PowderWavelength<double> w{0.55, 0.752, 0.0318};
     // Integrate S cos over the hemisphere on a fine grid of the projected disk (d omega cos = dA).
     double sum = 0.0;
@@ -260,12 +258,12 @@ TEST(PowderModel, HarveyShackLobeAtTheMirrorWithItsTotalIntegratedScatter) {  //
         if (x * x + y * y >= 1.0) continue;
         sum += powder_terms(p, w, wi, Vec3d(x, y, std::sqrt(1.0 - x * x - y * y))).s * h * h;
       }
-    const double tis = std::pow(4.0 * kPi * sigma * wi.z / w.lambda_um, 2);
+    const double tis = std::pow(4.0 * kPiD * sigma * wi.z / w.lambda_um, 2);
     EXPECT_NEAR(sum * sigma * sigma, tis, 0.01 * tis) << theta_i;
     // Its maximum is the mirror direction.
     const Vec3d mirror{-wi.x, -wi.y, wi.z};
     const double at_mirror = powder_terms(p, w, wi, mirror).s;
-    EXPECT_GT(at_mirror, powder_terms(p, w, wi, direction((theta_i + 1) * kDeg, 0.3 + kPi)).s);
+    EXPECT_GT(at_mirror, powder_terms(p, w, wi, direction((theta_i + 1) * kDegD, 0.3 + kPiD)).s);
   }
 }
 
@@ -273,14 +271,14 @@ TEST(PowderModel, SingleScatteringAtBackscatterAndTheThicknessFactor) {  // T13,
   for (double g : {-0.5, 0.0, 0.7}) {
     PowderParams<double> p;
     p.g = g;
-    const Vec3d w = direction(40 * kDeg, 0.2);
+    const Vec3d w = direction(40 * kDegD, 0.2);
     const double rho = 0.6;
     const double l1 = powder_terms(p, PowderWavelength<double>{0.55, rho, 0.03}, w, w).l1;
-    EXPECT_NEAR(l1, rho * (1.0 - g) / (4.0 * kPi * (1.0 + g) * (1.0 + g)) / (2.0 * w.z), 1e-14);
+    EXPECT_NEAR(l1, rho * (1.0 - g) / (4.0 * kPiD * (1.0 + g) * (1.0 + g)) / (2.0 * w.z), 1e-14);
   }
   PowderParams<double> thin, thick;
   thin.thickness = 1e-4;
-  const Vec3d wi = direction(20 * kDeg, 0.0), wo = direction(50 * kDeg, 2.0);
+  const Vec3d wi = direction(20 * kDegD, 0.0), wo = direction(50 * kDegD, 2.0);
   const PowderWavelength<double> w{0.55, 0.6, 0.03};
   const double infinite = powder_terms(thick, w, wi, wo).l1;
   // Thin layer: [1 - exp(-kappa d (1/mu_i + 1/mu_o))] -> kappa d (1/mu_i + 1/mu_o).
@@ -292,4 +290,4 @@ TEST(PowderModel, SingleScatteringAtBackscatterAndTheThicknessFactor) {  // T13,
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::powder_model_test

@@ -12,7 +12,7 @@
 #include "materials/numerics/mie.h"
 #include "spectra/named_spectra.h"
 
-namespace ochre::test {
+namespace ochre::test::powder_optics_test {
 namespace {
 
 TEST(PowderOptics, BohrenHuffmanTestCase) {  // T14
@@ -85,4 +85,4 @@ TEST(PowderOptics, PigmentTableInterpolation) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::powder_optics_test

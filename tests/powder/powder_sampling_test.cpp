@@ -11,14 +11,13 @@
 #include "materials/lobes/powder/powder_lobe.h"
 #include "materials/lobes/sampling_check.h"
 #include "materials/numerics/gauss_legendre.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::powder_sampling_test {
 namespace {
 
-constexpr float kDeg = std::numbers::pi_v<float> / 180.0f;
-
 Vec3 direction(float theta_deg, float phi) {
-  const float t = theta_deg * kDeg;
+  const float t = theta_deg * kDegF;
   return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
 }
 
@@ -160,4 +159,4 @@ TEST(PowderSampling, SpectralMisEstimatesTheAlbedoOfEveryWavelength) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::powder_sampling_test

@@ -11,7 +11,7 @@
 #include "renderer/procedural_shapes.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_accel {
 namespace {
 
 struct Random {
@@ -436,4 +436,4 @@ TEST(Accel, ScannedMeshesBuildStatistics) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_accel

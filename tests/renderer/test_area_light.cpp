@@ -11,7 +11,7 @@
 #include "renderer/surface_shading.h"
 #include "support/test_material.h"
 
-namespace ochre {
+namespace ochre::test_area_light {
 namespace {
 
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
@@ -87,4 +87,4 @@ TEST(AreaLight, EmitterWithTheMostAndLargestLobesIsEvaluated) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_area_light

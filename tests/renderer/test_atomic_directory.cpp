@@ -6,7 +6,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test {
+namespace ochre::test::test_atomic_directory {
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,4 +65,4 @@ TEST(AtomicDirectory, MissingParentIsAnError) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_atomic_directory

@@ -13,7 +13,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre {
+namespace ochre::test_atomic_file {
 namespace {
 
 namespace fs = std::filesystem;
@@ -113,4 +113,4 @@ TEST(CheckOutputWritable, ParentThatIsAFileOrOutputThatIsADirectoryIsRejected) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_atomic_file

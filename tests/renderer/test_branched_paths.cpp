@@ -12,7 +12,7 @@
 #include "renderer/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_branched_paths {
 namespace {
 
 constexpr int kSize = 32;
@@ -150,4 +150,4 @@ TEST(BranchedPaths, BranchesLeaveTheFirstNonDeltaVertex) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_branched_paths

@@ -6,7 +6,7 @@
 
 #include "renderer/camera.h"
 
-namespace ochre {
+namespace ochre::test_camera_fov_axis {
 namespace {
 
 double degrees(double radians) {
@@ -38,4 +38,4 @@ TEST(CameraFovAxis, TheFilmEdgeSeesTheGivenAngle) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_camera_fov_axis

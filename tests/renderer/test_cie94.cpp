@@ -5,7 +5,7 @@
 
 #include "renderer/cie94.h"
 
-namespace ochre {
+namespace ochre::test_cie94 {
 namespace {
 
 TEST(Cie94, PureLightnessDifferenceIsDeltaL) {
@@ -48,4 +48,4 @@ TEST(Cie94, TextileConstants) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_cie94

@@ -3,7 +3,7 @@
 
 #include "renderer/coverage.h"
 
-namespace ochre {
+namespace ochre::test_coverage {
 namespace {
 
 TEST(RenderSplit, ParsesAndFormatsRangesRectsAndParts) {
@@ -110,4 +110,4 @@ TEST(Coverage, NamesOverlapsWithBothFiles) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_coverage

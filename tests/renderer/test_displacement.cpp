@@ -13,7 +13,7 @@
 #include "renderer/subdivision.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_displacement {
 namespace {
 
 namespace fs = std::filesystem;
@@ -214,4 +214,4 @@ TEST(Displacement, ParsesProceduralRock) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_displacement

@@ -13,7 +13,7 @@
 #include "renderer/ocio_display.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_display_image {
 namespace {
 
 namespace fs = std::filesystem;
@@ -320,4 +320,4 @@ TEST(AcesCgConfig, UntoneMappedViewAgreesWithTheNoOcioPath) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_display_image

@@ -11,7 +11,7 @@
 
 #include "renderer/distribution_1d.h"
 
-namespace ochre {
+namespace ochre::test_distribution_1d {
 namespace {
 
 // Reference: the item below the first normalised CDF entry above u, skipping zero-weight items.
@@ -99,4 +99,4 @@ TEST(Distribution1D, AllZeroWeightsStillReturnAValidIndex) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_distribution_1d

@@ -16,7 +16,7 @@
 #include "materials/lobes/sampling_check.h"
 #include "renderer/distribution_2d.h"
 
-namespace ochre {
+namespace ochre::test_distribution_2d {
 namespace {
 
 // 4 columns x 3 rows; row 1 is empty, cell (2, 0) too.
@@ -299,4 +299,4 @@ TEST(Distribution2D, MicroBenchmark1024x512) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_distribution_2d

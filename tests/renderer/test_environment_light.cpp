@@ -21,7 +21,7 @@
 #include "spectra/rgb_spectrum.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_environment_light {
 namespace {
 
 namespace fs = std::filesystem;
@@ -387,4 +387,4 @@ TEST(EnvironmentLight, SharedMuseumExr) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_environment_light

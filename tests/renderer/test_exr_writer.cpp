@@ -12,7 +12,7 @@
 #include "renderer/image_error.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_exr_writer {
 namespace {
 
 namespace fs = std::filesystem;
@@ -164,4 +164,4 @@ TEST(ExrReader, MissingOrInvalidFilesAreNamed) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_exr_writer

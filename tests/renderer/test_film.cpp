@@ -5,7 +5,7 @@
 
 #include "renderer/film.h"
 
-namespace ochre {
+namespace ochre::test_film {
 namespace {
 
 TEST(Film, MeanAndVariance) {
@@ -60,9 +60,9 @@ TEST(Film, SumIsIndependentOfOrderAndSplit) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_film
 
-namespace ochre {
+namespace ochre::test_film {
 namespace {
 
 // The accumulators round-trip exactly (partial-sum files rely on it), also negative and 128-bit values.
@@ -103,4 +103,4 @@ TEST(Film, MergeAtAnOffsetPlacesATile) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_film

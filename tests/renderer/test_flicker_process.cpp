@@ -10,7 +10,7 @@
 #include "renderer/flicker_process.h"
 #include "renderer/light_presets.h"
 
-namespace ochre {
+namespace ochre::test_flicker_process {
 namespace {
 
 struct SeriesStats {
@@ -123,4 +123,4 @@ TEST(LightPresets, KnownNamesAndValues) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_flicker_process

@@ -8,7 +8,7 @@
 
 #include "renderer/groove_shapes.h"
 
-namespace ochre {
+namespace ochre::test_groove_shapes {
 namespace {
 
 double area(const Mesh& mesh) {
@@ -61,4 +61,4 @@ TEST(GroovePlate, TileBoundariesAreSharedExactly) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_groove_shapes

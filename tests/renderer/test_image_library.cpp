@@ -13,7 +13,7 @@
 #include "renderer/image_library.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_image_library {
 namespace {
 
 namespace fs = std::filesystem;
@@ -75,4 +75,4 @@ TEST(ImageLibrary, UnreadableFilesThrowWithTheLibrarysMessage) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_image_library

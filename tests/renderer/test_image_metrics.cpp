@@ -11,7 +11,7 @@
 #include "renderer/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_image_metrics {
 namespace {
 
 struct Ciede2000Pair {
@@ -242,4 +242,4 @@ TEST(Heatmap, PngHoldsTheRamp) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_image_metrics

@@ -21,7 +21,7 @@
 #include "renderer/texture_system.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_input_readers {
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,4 +152,4 @@ TEST(InputReaders, OcioConfigThatIsAFifoIsRefused) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_input_readers

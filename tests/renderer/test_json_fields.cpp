@@ -10,7 +10,7 @@
 #include "renderer/json_fields.h"
 #include "support/input_error_of.h"
 
-namespace ochre {
+namespace ochre::test_json_fields {
 namespace {
 
 using nlohmann::json;
@@ -119,4 +119,4 @@ TEST(JsonDuplicateKeys, EqualKeysInDifferentObjectsAndCommentsAreFine) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_json_fields

@@ -12,7 +12,7 @@
 #include "spectra/cie.h"
 #include "spectra/constant_spectrum.h"
 
-namespace ochre {
+namespace ochre::test_light_importance {
 namespace {
 
 SpectrumPtr constant(float v) {
@@ -79,4 +79,4 @@ TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_light_importance

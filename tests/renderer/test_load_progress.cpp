@@ -8,7 +8,7 @@
 
 #include "renderer/load_progress.h"
 
-namespace ochre {
+namespace ochre::test_load_progress {
 namespace {
 
 struct PlainProgress {
@@ -53,4 +53,4 @@ TEST(LoadProgress, SlowStepPrintsLinesWithTheElapsedTimeSinceItBegan) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_load_progress

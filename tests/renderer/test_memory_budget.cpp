@@ -16,7 +16,7 @@
 #include "spectra/byte_size.h"
 #include "support/input_error_of.h"
 
-namespace ochre {
+namespace ochre::test_memory_budget {
 namespace {
 
 // Restores the default limit when a test ends.
@@ -128,4 +128,4 @@ TEST(MemoryBudget, TriangleEstimateRefusesMoreThanThirtyTwoBitIndicesWhateverThe
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_memory_budget

@@ -7,7 +7,7 @@
 #include "renderer/mesh_import.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_mesh_import {
 namespace {
 
 std::filesystem::path data(const char* name) {
@@ -182,4 +182,4 @@ TEST(MeshImport, SharedScans) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_mesh_import

@@ -10,7 +10,7 @@
 #include "renderer/mip_pyramid.h"
 #include "support/awkward_floats.h"
 
-namespace ochre {
+namespace ochre::test_mip_pyramid {
 namespace {
 
 // Level 0: 4x2 single-channel ramp 0..7 (row 0 = top); level 1: 2x1 of 10, 20; level 2: 1x1 of 100.
@@ -102,4 +102,4 @@ TEST(MipPyramid, HugeCoordinatesWrapToZero) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_mip_pyramid

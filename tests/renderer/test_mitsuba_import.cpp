@@ -13,7 +13,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre {
+namespace ochre::test_mitsuba_import {
 namespace {
 
 using nlohmann::json;
@@ -385,4 +385,4 @@ TEST(MitsubaImport, ErrorsInIncludedFilesNameThatFile) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_mitsuba_import

@@ -20,7 +20,7 @@
 #include "support/awkward_floats.h"
 #include "support/test_paths.h"
 
-namespace ochre::test {
+namespace ochre::test::test_non_finite_lookups {
 namespace {
 
 using test::awkward_floats;
@@ -135,4 +135,4 @@ TEST(NonFiniteLookups, MeshesRejectNonFiniteAttributes) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::test_non_finite_lookups

@@ -11,7 +11,7 @@
 #include "renderer/output_files.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_output_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -91,4 +91,4 @@ TEST(OutputFiles, LinksDevicesFifosAndDirectoriesAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_output_files

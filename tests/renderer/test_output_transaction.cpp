@@ -12,7 +12,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre {
+namespace ochre::test_output_transaction {
 namespace {
 
 namespace fs = std::filesystem;
@@ -94,4 +94,4 @@ TEST(OutputTransaction, AFailedRenamePutsBackTheFilesAlreadyReplaced) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_output_transaction

@@ -7,7 +7,7 @@
 
 #include "renderer/pixel_filter.h"
 
-namespace ochre {
+namespace ochre::test_pixel_filter {
 namespace {
 
 TEST(PixelFilter, PixelBoxKeepsThePositionBitForBit) {
@@ -72,4 +72,4 @@ TEST(PixelFilter, BadParametersAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_pixel_filter

@@ -3,13 +3,12 @@
 
 #include <gtest/gtest.h>
 
-
 #include "renderer/planar_mirrors.h"
 #include "renderer/procedural_shapes.h"
 #include "renderer/transform.h"
 #include "support/test_material.h"
 
-namespace ochre {
+namespace ochre::test_planar_mirrors {
 namespace {
 
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
@@ -107,4 +106,4 @@ TEST(PlanarMirrors, PairsAreChosenInProportionToTheLightsPower) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_planar_mirrors

@@ -5,7 +5,7 @@
 #include "renderer/input_error.h"
 #include "renderer/procedural_shapes.h"
 
-namespace ochre {
+namespace ochre::test_procedural_shapes {
 namespace {
 
 Vec3 face_normal(const Mesh& m, size_t t) {
@@ -140,4 +140,4 @@ TEST(ProceduralShapes, BadParametersAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_procedural_shapes

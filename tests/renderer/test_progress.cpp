@@ -11,7 +11,7 @@
 
 #include "renderer/progress.h"
 
-namespace ochre {
+namespace ochre::test_progress {
 namespace {
 
 TEST(ProgressFormat, PercentRoundsDown) {
@@ -162,4 +162,4 @@ TEST_F(ProgressReporterTest, EnvironmentOverridesTheStyle) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_progress

@@ -9,7 +9,7 @@
 #include "renderer/regression_compare.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_regression_compare {
 namespace {
 
 constexpr int kSize = 64;  // 4096 pixels
@@ -142,4 +142,4 @@ TEST(RegressionCompare, PValueImageChannels) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_regression_compare

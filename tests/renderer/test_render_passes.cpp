@@ -6,7 +6,7 @@
 #include "renderer/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_render_passes {
 namespace {
 
 std::unique_ptr<Scene> small_cornell() {
@@ -88,4 +88,4 @@ TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_render_passes

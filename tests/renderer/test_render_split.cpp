@@ -5,7 +5,7 @@
 #include "renderer/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_render_split {
 namespace {
 
 TEST(RenderSplit, MergedSampleRangesEqualOneRender) {
@@ -38,4 +38,4 @@ TEST(RenderSplit, MergedSampleRangesEqualOneRender) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_render_split

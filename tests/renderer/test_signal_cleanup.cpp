@@ -14,7 +14,7 @@
 #include "renderer/signal_cleanup.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_signal_cleanup {
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,4 +123,4 @@ TEST(SignalCleanup, ReleasedRegistrationIsNotRemoved) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_signal_cleanup

@@ -12,7 +12,7 @@
 #include "renderer/sampler.h"
 #include "renderer/sobol_sampler.h"
 
-namespace ochre {
+namespace ochre::test_sobol_sampler {
 namespace {
 
 constexpr uint64_t kSeed = 12345;
@@ -343,4 +343,4 @@ TEST(SobolSampler, CostPerGet2dComparedWithIndependent) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_sobol_sampler

@@ -8,7 +8,7 @@
 #include "renderer/spot_light.h"
 #include "spectra/constant_spectrum.h"
 
-namespace ochre {
+namespace ochre::test_spot_light_falloff {
 namespace {
 
 Vec3 at_angle(double degrees) {
@@ -46,4 +46,4 @@ TEST(SpotLightFalloff, PowerIsTheProfileIntegratedOverTheSphere) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_spot_light_falloff

@@ -19,7 +19,7 @@
 #include "renderer/subdivision.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_subdivision {
 namespace {
 
 using namespace OpenSubdiv;
@@ -310,4 +310,4 @@ TEST(Subdivision, OneMillionTrianglesTiming) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_subdivision

@@ -22,7 +22,7 @@
 #include "spectra/color_space.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::test_texture_system {
 namespace {
 
 namespace fs = std::filesystem;
@@ -427,4 +427,4 @@ TEST(TextureSystem, LoadsSharedPhotoTexture) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_texture_system

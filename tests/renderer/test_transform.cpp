@@ -6,7 +6,7 @@
 #include "renderer/json_fields.h"
 #include "renderer/transform.h"
 
-namespace ochre {
+namespace ochre::test_transform {
 namespace {
 
 void expect_near(const Vec3& a, const Vec3& b, float tolerance = 1e-5f) {
@@ -150,4 +150,4 @@ TEST(JsonVec3, RejectsNonFiniteAndWrongShapes) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_transform

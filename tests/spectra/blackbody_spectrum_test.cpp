@@ -8,7 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace ochre {
+namespace ochre::blackbody_spectrum_test {
 namespace {
 
 TEST(Blackbody, IntegratesToStefanBoltzmann) {
@@ -59,4 +59,4 @@ TEST(Blackbody, NormalizedToUnitPeak) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::blackbody_spectrum_test

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace ochre {
+namespace ochre::byte_size_test {
 namespace {
 
 TEST(ByteSize, FormatsWithBinaryUnits) {
@@ -37,4 +37,4 @@ TEST(ByteSize, RefusesMalformedZeroAndHugeSizes) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::byte_size_test

@@ -14,7 +14,7 @@
 
 using ochre::test::lanes;
 
-namespace ochre {
+namespace ochre::cie_test {
 namespace {
 
 TEST(Cie, MatchingFunctionValues) {
@@ -114,4 +114,4 @@ TEST(Cie, SampledToXyzConvergesToSpectrumToXyz) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::cie_test

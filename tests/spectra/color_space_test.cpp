@@ -10,7 +10,7 @@
 #include "spectra/cie.h"
 #include "spectra/rgb_primaries.h"
 
-namespace ochre {
+namespace ochre::color_space_test {
 namespace {
 
 TEST(ColorSpace, ParsesNames) {
@@ -97,4 +97,4 @@ TEST(ColorSpace, SrgbTransferFunction) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::color_space_test

@@ -11,7 +11,7 @@
 
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::csv_table_test {
 namespace {
 
 // The message of the exception thrown by parsing `text` as "t.csv" (empty when it parses).
@@ -97,4 +97,4 @@ TEST(CsvTable, LoadsFilesAndReportsMissingOnes) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::csv_table_test

@@ -10,7 +10,7 @@
 #include "spectra/embedded_tables.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::embedded_data_test {
 namespace {
 
 TEST(EmbeddedData, TablesAreEmbedded) {
@@ -36,4 +36,4 @@ TEST(EmbeddedData, CopiesMatchSharedData) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::embedded_data_test

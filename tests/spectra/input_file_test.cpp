@@ -15,7 +15,7 @@
 #include "support/input_error_of.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::input_file_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -126,4 +126,4 @@ TEST(InputFile, CsvTableRefusesDevicesAndFifos) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::input_file_test

@@ -10,7 +10,7 @@
 #include "spectra/named_spectra.h"
 #include "support/test_paths.h"
 
-namespace ochre {
+namespace ochre::metal_spectra_test {
 namespace {
 
 constexpr const char* kMetals[] = {"Au", "Ag", "Cu", "Al", "Si"};
@@ -94,4 +94,4 @@ TEST(MetalSpectra, GoldAndCopperAreRedderThanTheyAreBlue) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::metal_spectra_test

@@ -8,7 +8,7 @@
 
 #include "spectra/cie.h"
 
-namespace ochre {
+namespace ochre::named_spectra_test {
 namespace {
 
 TEST(NamedSpectra, KnownNamesResolve) {
@@ -71,4 +71,4 @@ TEST(NamedSpectra, UnknownNameListsTheKnownOnes) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::named_spectra_test

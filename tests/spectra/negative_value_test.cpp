@@ -9,7 +9,7 @@
 #include "spectra/scaled_spectrum.h"
 #include "spectra/tabulated_spectrum.h"
 
-namespace ochre {
+namespace ochre::negative_value_test {
 namespace {
 
 TEST(FirstNegativeValue, TableEntryEvenWhereInterpolationStaysPositive) {
@@ -43,4 +43,4 @@ TEST(FirstNegativeValue, AnalyticSpectrumAtTheFirstWholeNanometre) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::negative_value_test

@@ -18,7 +18,7 @@
 #include "spectra/rgb_to_spectrum_table.h"
 #include "support/awkward_floats.h"
 
-namespace ochre::test {
+namespace ochre::test::non_finite_test {
 namespace {
 
 using test::awkward_floats;
@@ -135,4 +135,4 @@ TEST(NonFinite, UnboundedDecompositionMatchesTheDirectFormula) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::non_finite_test

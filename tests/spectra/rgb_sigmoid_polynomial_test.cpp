@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-namespace ochre {
+namespace ochre::rgb_sigmoid_polynomial_test {
 namespace {
 
 TEST(RGBSigmoidPolynomial, SigmoidProperties) {
@@ -58,4 +58,4 @@ TEST(RGBSigmoidPolynomial, MaxValueIsTheMaximumOverTheVisibleRange) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::rgb_sigmoid_polynomial_test

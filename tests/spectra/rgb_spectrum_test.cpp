@@ -17,7 +17,7 @@
 #include "spectra/product_spectrum.h"
 #include "spectra/rgb_to_spectrum_table.h"
 
-namespace ochre {
+namespace ochre::rgb_spectrum_test {
 namespace {
 
 // Linear Rec.709 colour of a reflectance under D65:
@@ -164,4 +164,4 @@ TEST(RGBIlluminantSpectrum, EmissionHasTheRequestedColour) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::rgb_spectrum_test

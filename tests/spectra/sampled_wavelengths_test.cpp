@@ -14,7 +14,7 @@
 
 using ochre::test::lanes;
 
-namespace ochre {
+namespace ochre::sampled_wavelengths_test {
 namespace {
 
 // Composite Simpson rule of the visible pdf over [a, b].
@@ -126,4 +126,4 @@ TEST(SampledWavelengths, TerminateSecondaryKeepsTheHeroUnbiased) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::sampled_wavelengths_test

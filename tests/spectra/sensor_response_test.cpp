@@ -15,7 +15,7 @@
 #include "spectra/tabulated_spectrum.h"
 #include "spectra/white_balance.h"
 
-namespace ochre {
+namespace ochre::sensor_response_test {
 namespace {
 
 SensorResponse table_sensor(std::string_view file, float lo, float hi) {
@@ -137,4 +137,4 @@ TEST(SpectraBeyondTheVisible, DocumentedExtrapolation) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::sensor_response_test

@@ -20,7 +20,7 @@
 
 using ochre::test::lanes;
 
-namespace ochre {
+namespace ochre::tabulated_spectrum_test {
 namespace {
 
 // Reference evaluation by linear search, clamped outside.
@@ -211,4 +211,4 @@ TEST(SimpleSpectra, ConstantScaledProduct) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::tabulated_spectrum_test

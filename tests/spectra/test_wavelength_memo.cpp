@@ -7,7 +7,7 @@
 
 #include "spectra/wavelength_memo.h"
 
-namespace ochre {
+namespace ochre::test_wavelength_memo {
 namespace {
 
 SampledSpectrum counting(int& calls, float v) {
@@ -57,4 +57,4 @@ TEST(WavelengthMemo, EachThreadHasItsOwnTable) {
 }
 
 }  // namespace
-}  // namespace ochre
+}  // namespace ochre::test_wavelength_memo

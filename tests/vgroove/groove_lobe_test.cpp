@@ -11,11 +11,10 @@
 #include "materials/lobes/vgroove/microgroove_lobe.h"
 #include "materials/lobes/vgroove/vgroove_lobe.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::groove_lobe_test {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 FacetSpectrum silicon() {
   FacetSpectrum f;
@@ -48,8 +47,8 @@ TEST(GrooveLobes, MicrogrooveOnAVProfileReproducesVGrooveRayForRay) {
   for (double alpha_deg : {5.0, 30.0, 45.0, 90.0, 150.0}) {
     for (ChainModel model : {ChainModel::kRigorous, ChainModel::kSeparateSP, ChainModel::kUnpolarized}) {
       const Vec3 axis{0.6f, 0.8f, 0.0f};
-      const GrooveProfile profile = GrooveProfile::v(alpha_deg * kDeg);
-      const VGrooveLobe analytic(alpha_deg * kDeg, axis, silicon(), model, 0);
+      const GrooveProfile profile = GrooveProfile::v(alpha_deg * kDegD);
+      const VGrooveLobe analytic(alpha_deg * kDegD, axis, silicon(), model, 0);
       const MicrogrooveLobe explicit_lobe({&profile}, axis, silicon(), model, 0);
       int compared = 0, differing_paths = 0;
       for (int i = 0; i < 4000; ++i) {
@@ -81,8 +80,8 @@ TEST(GrooveLobes, MicrogrooveOnAVProfileReproducesVGrooveRayForRay) {
 
 TEST(GrooveLobes, EveryProfileConservesEnergyWithIdealMirrors) {
   const GrooveProfile profiles[] = {
-      GrooveProfile::v(20 * kDeg), GrooveProfile::asymmetric_v(30 * kDeg, 70 * kDeg),
-      GrooveProfile::flat_bottom(60 * kDeg, 0.4), GrooveProfile::rounded(40 * kDeg, 48)};
+      GrooveProfile::v(20 * kDegD), GrooveProfile::asymmetric_v(30 * kDegD, 70 * kDegD),
+      GrooveProfile::flat_bottom(60 * kDegD, 0.4), GrooveProfile::rounded(40 * kDegD, 48)};
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (const GrooveProfile& profile : profiles) {
@@ -96,7 +95,8 @@ TEST(GrooveLobes, EveryProfileConservesEnergyWithIdealMirrors) {
       }
     }
   }
-  const MicrogrooveLobe mix({nullptr, 30 * kDeg, 120 * kDeg}, {1, 0, 0}, mirror(), ChainModel::kRigorous, 0);
+  const MicrogrooveLobe mix({nullptr, 30 * kDegD, 120 * kDegD}, {1, 0, 0}, mirror(), ChainModel::kRigorous,
+                            0);
   for (int i = 0; i < 2000; ++i) {
     const auto s = mix.sample(direction(rng), u(rng), {u(rng), u(rng)}, wavelengths());
     ASSERT_TRUE(s);
@@ -107,7 +107,7 @@ TEST(GrooveLobes, EveryProfileConservesEnergyWithIdealMirrors) {
 TEST(GrooveLobes, DegenerateProfilesEqualTheVGroove) {
   // A flat bottom of depth fraction 0, an asymmetric V with equal slopes and a mix of one angle are all
   // the symmetric V: the same mean reflectance (the asymmetric V is scaled, so paths match up to rounding).
-  const double alpha = 50 * kDeg, slope = 0.5 * (std::numbers::pi - alpha);
+  const double alpha = 50 * kDegD, slope = 0.5 * (std::numbers::pi - alpha);
   const GrooveProfile v = GrooveProfile::v(alpha), flat = GrooveProfile::flat_bottom(alpha, 0.0),
                       asym = GrooveProfile::asymmetric_v(slope, slope);
   const MicrogrooveLobe a({&v}, {1, 0, 0}, silicon(), ChainModel::kRigorous, 0);
@@ -131,14 +131,14 @@ TEST(GrooveLobes, DegenerateProfilesEqualTheVGroove) {
 
 TEST(GrooveLobes, SamplingTheVGrooveLobeEstimatesTheExactReflectance) {
   const Vec3 axis{std::cos(0.4f), std::sin(0.4f), 0.0f};
-  const VGrooveLobe lobe(45 * kDeg, axis, silicon(), ChainModel::kRigorous, 0);
-  const VGroove groove(45 * kDeg);
+  const VGrooveLobe lobe(45 * kDegD, axis, silicon(), ChainModel::kRigorous, 0);
+  const VGroove groove(45 * kDegD);
   std::mt19937_64 rng(2);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (double theta_deg : {20.0, 61.0, 80.0}) {
     for (double phi_deg : {0.0, 35.0, 90.0}) {
       // wo in the local frame: phi is measured from the groove frame's y axis (across the grooves).
-      const Vec3d e = groove_direction(theta_deg * kDeg, phi_deg * kDeg);
+      const Vec3d e = groove_direction(theta_deg * kDegD, phi_deg * kDegD);
       const Vec3 across{-axis.y, axis.x, 0.0f};
       const Vec3 wo = axis * float(e.x) + across * float(e.y) + Vec3(0, 0, float(e.z));
       const double exact =
@@ -160,8 +160,8 @@ TEST(GrooveLobes, SamplingTheVGrooveLobeEstimatesTheExactReflectance) {
 }
 
 TEST(GrooveLobes, ReflectionLimitAbsorbsLongerPaths) {
-  const VGrooveLobe limited(30 * kDeg, {1, 0, 0}, mirror(), ChainModel::kRigorous, 2);
-  const VGroove groove(30 * kDeg);
+  const VGrooveLobe limited(30 * kDegD, {1, 0, 0}, mirror(), ChainModel::kRigorous, 2);
+  const VGroove groove(30 * kDegD);
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int i = 0; i < 2000; ++i) {
@@ -173,7 +173,7 @@ TEST(GrooveLobes, ReflectionLimitAbsorbsLongerPaths) {
 }
 
 TEST(GrooveLobes, MuellerFramesArePerpendicularToTheirBeams) {
-  const VGrooveLobe lobe(40 * kDeg, {0.28f, 0.96f, 0}, silicon(), ChainModel::kRigorous, 0);
+  const VGrooveLobe lobe(40 * kDegD, {0.28f, 0.96f, 0}, silicon(), ChainModel::kRigorous, 0);
   std::mt19937_64 rng(8);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (int i = 0; i < 2000; ++i) {
@@ -194,4 +194,4 @@ TEST(GrooveLobes, MuellerFramesArePerpendicularToTheirBeams) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::groove_lobe_test

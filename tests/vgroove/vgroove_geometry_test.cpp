@@ -10,11 +10,10 @@
 
 #include "materials/lobes/vgroove/vgroove.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::vgroove_geometry_test {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct ExplicitPath {
   int reflections = 0;
@@ -61,7 +60,7 @@ TEST(VGrooveGeometry, ReflectionCountFirstFacetAndExitAgreeWithAnExplicitTracer)
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (double alpha_deg : {1.0, 2.0, 5.0, 30.0, 45.0, 60.0, 90.0, 100.0, 150.0, 179.9}) {
-    const VGroove g(alpha_deg * kDeg);
+    const VGroove g(alpha_deg * kDegD);
     int disagreements = 0;
     const int rays = 20000;
     for (int i = 0; i < rays; ++i) {
@@ -84,7 +83,7 @@ TEST(VGrooveGeometry, ReflectionCountFirstFacetAndExitAgreeWithAnExplicitTracer)
 
 TEST(VGrooveGeometry, FlatSurfaceIsOneMirrorReflection) {
   const VGroove g(std::numbers::pi);
-  const Vec3d e = groove_direction(40 * kDeg, 25 * kDeg);
+  const Vec3d e = groove_direction(40 * kDegD, 25 * kDegD);
   for (double y : {-1.0, -0.3, 0.0, 0.7, 1.0}) {
     const VGroovePath path = g.trace(e, y);
     EXPECT_EQ(path.reflections, 1);
@@ -94,8 +93,8 @@ TEST(VGrooveGeometry, FlatSurfaceIsOneMirrorReflection) {
 
 TEST(VGrooveGeometry, NinetyDegreeGrooveSeenAcrossIsARetroreflector) {
   // Two reflections off perpendicular facets reverse the cross-section direction: a corner reflector.
-  const VGroove g(90 * kDeg);
-  const Vec3d e = groove_direction(20 * kDeg, 0.0);
+  const VGroove g(90 * kDegD);
+  const Vec3d e = groove_direction(20 * kDegD, 0.0);
   const VGroovePath path = g.trace(e, 0.3 * g.half_opening());
   EXPECT_EQ(path.reflections, 2);
   EXPECT_NEAR(length(path.exit - Vec3d(e.x, e.y, e.z)), 0.0, 1e-12);
@@ -103,10 +102,10 @@ TEST(VGrooveGeometry, NinetyDegreeGrooveSeenAcrossIsARetroreflector) {
 
 TEST(VGrooveGeometry, HardCasesStayFiniteAndConsistent) {
   for (double alpha_deg : {1.0, 2.0, 5.0, 179.9, 180.0}) {
-    const VGroove g(alpha_deg * kDeg);
+    const VGroove g(alpha_deg * kDegD);
     for (double theta_deg : {0.0, 1e-6, 30.0, 60.0, 89.0, 89.9, 89.99}) {
       for (double phi_deg : {0.0, 1e-7, 30.0, 89.9999, 90.0, 135.0, 180.0}) {
-        const Vec3d e = groove_direction(theta_deg * kDeg, phi_deg * kDeg);
+        const Vec3d e = groove_direction(theta_deg * kDegD, phi_deg * kDegD);
         // Exactly at every breakpoint (rays through the apex and the rim images) and between them.
         const std::vector<double> y = g.breakpoints(e);
         for (size_t i = 0; i < y.size(); ++i) {
@@ -135,10 +134,10 @@ TEST(VGrooveGeometry, HardCasesStayFiniteAndConsistent) {
 TEST(VGrooveGeometry, TheResponseIsConstantBetweenBreakpoints) {
   // Every ray of an interval follows the midpoint's facet sequence: check the ends of each interval
   // (just inside) against the midpoint.
-  const VGroove g(37 * kDeg);
+  const VGroove g(37 * kDegD);
   for (double theta_deg : {10.0, 45.0, 80.0}) {
     for (double phi_deg : {0.0, 33.0, 70.0}) {
-      const Vec3d e = groove_direction(theta_deg * kDeg, phi_deg * kDeg);
+      const Vec3d e = groove_direction(theta_deg * kDegD, phi_deg * kDegD);
       const std::vector<double> y = g.breakpoints(e);
       for (size_t i = 0; i + 1 < y.size(); ++i) {
         const double w = y[i + 1] - y[i];
@@ -154,4 +153,4 @@ TEST(VGrooveGeometry, TheResponseIsConstantBetweenBreakpoints) {
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::vgroove_geometry_test

@@ -13,11 +13,11 @@
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "materials/numerics/gauss_legendre.h"
 #include "spectra/named_spectra.h"
+#include "support/angles.h"
 
-namespace ochre::test {
+namespace ochre::test::vgroove_reflectance_test {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 const ChainModel kModels[] = {ChainModel::kRigorous, ChainModel::kUnpolarized, ChainModel::kSeparateSP,
                               ChainModel::kPaperLiteral};
 const FacetIndex kSilicon = FacetIndex::conductor(4.073, 0.028);  // 550 nm
@@ -30,13 +30,13 @@ double one(const VGroove& g, const Vec3d& e, ChainModel model, const FacetIndex&
 
 TEST(VGrooveReflectance, IdealMirrorsReflectEverythingAtEveryAngleAndDirection) {
   for (double alpha_deg : {1.0, 2.0, 5.0, 45.0, 90.0, 133.0, 179.9, 180.0}) {
-    const VGroove g(alpha_deg * kDeg);
+    const VGroove g(alpha_deg * kDegD);
     for (double theta_deg : {0.0, 30.0, 75.0, 89.99})
       for (double phi_deg : {0.0, 45.0, 90.0, 160.0})
         for (ChainModel m : kModels)
           EXPECT_NEAR(
-              one(g, groove_direction(theta_deg * kDeg, phi_deg * kDeg), m, FacetIndex::ideal_mirror()), 1.0,
-              1e-12)
+              one(g, groove_direction(theta_deg * kDegD, phi_deg * kDegD), m, FacetIndex::ideal_mirror()),
+              1.0, 1e-12)
               << alpha_deg << " " << theta_deg << " " << phi_deg;
   }
 }
@@ -66,9 +66,9 @@ TEST(VGrooveReflectance, FlatColumnIsTheHemisphericalFresnelAverage) {
 TEST(VGrooveReflectance, RigorousEqualsSeparateSPAcrossTheGrooves) {
   // At phi = 0 every plane of incidence is the (y, z) plane: s stays s, p stays p.
   for (double alpha_deg : {30.0, 45.0, 60.0, 90.0, 120.0}) {
-    const VGroove g(alpha_deg * kDeg);
+    const VGroove g(alpha_deg * kDegD);
     for (double theta_deg : {0.0, 20.0, 50.0, 80.0}) {
-      const Vec3d e = groove_direction(theta_deg * kDeg, 0.0);
+      const Vec3d e = groove_direction(theta_deg * kDegD, 0.0);
       EXPECT_NEAR(one(g, e, ChainModel::kRigorous, kSilicon), one(g, e, ChainModel::kSeparateSP, kSilicon),
                   1e-12);
     }
@@ -78,15 +78,15 @@ TEST(VGrooveReflectance, RigorousEqualsSeparateSPAcrossTheGrooves) {
 TEST(VGrooveReflectance, BrewsterDipAlongTheGroovesOnlyInTheRigorousModel) {
   // Silicon, alpha = 45 deg, phi = 90 deg, 550 nm (the paper's Fig 9b): the rigorous reflectance has a
   // minimum near theta = 61 deg, where light already p-polarized meets a facet near Brewster's angle.
-  const VGroove g(45 * kDeg);
+  const VGroove g(45 * kDegD);
   double best = 1.0, best_theta = 0.0;
   for (double theta_deg = 40.0; theta_deg <= 80.0; theta_deg += 0.25) {
-    const double r = one(g, groove_direction(theta_deg * kDeg, 90 * kDeg), ChainModel::kRigorous, kSilicon);
+    const double r = one(g, groove_direction(theta_deg * kDegD, 90 * kDegD), ChainModel::kRigorous, kSilicon);
     if (r < best) best = r, best_theta = theta_deg;
   }
   EXPECT_NEAR(best_theta, 61.0, 1.5);
   EXPECT_LT(best, 1e-3);
-  const Vec3d e = groove_direction(best_theta * kDeg, 90 * kDeg);
+  const Vec3d e = groove_direction(best_theta * kDegD, 90 * kDegD);
   EXPECT_GT(one(g, e, ChainModel::kUnpolarized, kSilicon), 20.0 * best);
   EXPECT_GT(one(g, e, ChainModel::kSeparateSP, kSilicon), 100.0 * best);
 }
@@ -97,9 +97,9 @@ TEST(VGrooveReflectance, PaperLiteralRotationDiffersFromThreeReflectionsOn) {
   const std::vector<FacetIndex> si{kSilicon};
   for (double alpha_deg : {90.0, 120.0})
     EXPECT_NEAR(
-        bihemispherical_reflectance(VGroove(alpha_deg * kDeg), ChainModel::kPaperLiteral, si, 0, 32)[0],
-        bihemispherical_reflectance(VGroove(alpha_deg * kDeg), ChainModel::kRigorous, si, 0, 32)[0], 1e-12);
-  const VGroove g45(45 * kDeg);
+        bihemispherical_reflectance(VGroove(alpha_deg * kDegD), ChainModel::kPaperLiteral, si, 0, 32)[0],
+        bihemispherical_reflectance(VGroove(alpha_deg * kDegD), ChainModel::kRigorous, si, 0, 32)[0], 1e-12);
+  const VGroove g45(45 * kDegD);
   const double diff = bihemispherical_reflectance(g45, ChainModel::kPaperLiteral, si)[0] -
                       bihemispherical_reflectance(g45, ChainModel::kRigorous, si)[0];
   EXPECT_NEAR(diff, -0.0021, 0.0003);
@@ -117,7 +117,7 @@ TEST(VGrooveReflectance, Table3SilverTotalsAndTruncatedRows) {
                       {60, 2, 66.7}, {60, 3, 92.1}, {90, 1, 54.7}, {90, 2, 94.4}};
   const std::vector<FacetIndex> ag{kPaperSilver};
   for (const Row& r : rows) {
-    const VGroove g(r.alpha * kDeg);
+    const VGroove g(r.alpha * kDegD);
     const bool total = r.limit >= g.max_reflections();
     const double ours = 100.0 * bihemispherical_reflectance(g, ChainModel::kRigorous, ag, r.limit)[0];
     if (total)
@@ -129,7 +129,7 @@ TEST(VGrooveReflectance, Table3SilverTotalsAndTruncatedRows) {
   }
   // At 90 degrees, 58.6 % of the flux is reflected exactly once... times the facet's reflectance, which
   // the 1-reflection row holds; with an ideal mirror it is the fraction itself.
-  const double once = bihemispherical_reflectance(VGroove(90 * kDeg), ChainModel::kRigorous,
+  const double once = bihemispherical_reflectance(VGroove(90 * kDegD), ChainModel::kRigorous,
                                                   std::vector<FacetIndex>{FacetIndex::ideal_mirror()}, 1)[0];
   EXPECT_NEAR(once, 0.586, 0.001);
 }
@@ -151,15 +151,15 @@ TEST(VGrooveReflectance, Table1WithTheProjectsOpticalData) {
   const double alphas[6] = {45, 60, 90, 120, 150, 180};
   for (int a = 0; a < 6; ++a) {
     const std::vector<double> r =
-        bihemispherical_reflectance(VGroove(alphas[a] * kDeg), ChainModel::kRigorous, facets);
+        bihemispherical_reflectance(VGroove(alphas[a] * kDegD), ChainModel::kRigorous, facets);
     for (int m = 0; m < 6; ++m)
       EXPECT_NEAR(100.0 * r[m], printed[m][a], tolerance[m]) << "material " << m << " alpha " << alphas[a];
     // Exact integration is monotonic in alpha for every material (the printed Al row is not).
     if (a > 0) {
       const std::vector<double> prev =
-          bihemispherical_reflectance(VGroove(alphas[a - 1] * kDeg), ChainModel::kRigorous, facets, 0, 48);
+          bihemispherical_reflectance(VGroove(alphas[a - 1] * kDegD), ChainModel::kRigorous, facets, 0, 48);
       const std::vector<double> cur =
-          bihemispherical_reflectance(VGroove(alphas[a] * kDeg), ChainModel::kRigorous, facets, 0, 48);
+          bihemispherical_reflectance(VGroove(alphas[a] * kDegD), ChainModel::kRigorous, facets, 0, 48);
       for (int m = 0; m < 6; ++m) EXPECT_GT(cur[m], prev[m]);
     }
   }
@@ -170,9 +170,9 @@ TEST(VGrooveReflectance, ExactIntegrationEqualsSamplingTheEntryPosition) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::vector<FacetIndex> si{kSilicon};
   for (double alpha_deg : {20.0, 45.0, 100.0}) {
-    const VGroove g(alpha_deg * kDeg);
+    const VGroove g(alpha_deg * kDegD);
     for (double theta_deg : {15.0, 55.0, 85.0}) {
-      const Vec3d e = groove_direction(theta_deg * kDeg, 40 * kDeg);
+      const Vec3d e = groove_direction(theta_deg * kDegD, 40 * kDegD);
       const double exact = one(g, e, ChainModel::kRigorous, kSilicon);
       const int n = 20000;
       double sum = 0.0, sum2 = 0.0;
@@ -191,10 +191,10 @@ TEST(VGrooveReflectance, ExactIntegrationEqualsSamplingTheEntryPosition) {
 
 TEST(VGrooveReflectance, QuadratureConverges) {
   const std::vector<FacetIndex> si{kSilicon};
-  const VGroove g(45 * kDeg);
+  const VGroove g(45 * kDegD);
   EXPECT_NEAR(bihemispherical_reflectance(g, ChainModel::kRigorous, si, 0, 96)[0],
               bihemispherical_reflectance(g, ChainModel::kRigorous, si, 0, 192)[0], 2e-6);
 }
 
 }  // namespace
-}  // namespace ochre::test
+}  // namespace ochre::test::vgroove_reflectance_test
