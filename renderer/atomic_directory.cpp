@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-[[noreturn]] void fail(const fs::path& final_path, const std::string& why) {
+[[noreturn]] void fail_to_replace(const fs::path& final_path, const std::string& why) {
   throw ImageError(fmt::format("cannot write {}: {}", final_path.string(), why));
 }
 
@@ -27,12 +27,12 @@ void replace_by_renames(const fs::path& temp, const fs::path& final_path) {
   const fs::path aside = temporary_name(final_path);
   std::error_code error;
   fs::rename(final_path, aside, error);
-  if (error) fail(final_path, error.message());
+  if (error) fail_to_replace(final_path, error.message());
   fs::rename(temp, final_path, error);
   if (error) {
     std::error_code ignored;
     fs::rename(aside, final_path, ignored);
-    fail(final_path, error.message());
+    fail_to_replace(final_path, error.message());
   }
   fs::rename(aside, temp, error);  // so that the caller removes the old directory as the scratch one
   if (error) fs::remove_all(aside, error);
@@ -46,8 +46,8 @@ AtomicDirectory::AtomicDirectory(fs::path final_path)
       registration_(temp_path_, TemporaryKind::kDirectory) {
   std::error_code error;
   if (!fs::create_directory(temp_path_, error) || error)
-    fail(final_path_,
-         fmt::format("cannot create {}: {}", temp_path_.string(), error ? error.message() : "it exists"));
+    fail_to_replace(final_path_, fmt::format("cannot create {}: {}", temp_path_.string(),
+                                             error ? error.message() : "it exists"));
 }
 
 AtomicDirectory::~AtomicDirectory() {
@@ -61,9 +61,9 @@ void AtomicDirectory::commit() {
   std::error_code error;
   if (!fs::exists(fs::symlink_status(final_path_, error))) {
     fs::rename(temp_path_, final_path_, error);
-    if (error) fail(final_path_, error.message());
+    if (error) fail_to_replace(final_path_, error.message());
   } else if (::renameat2(AT_FDCWD, temp_path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) != 0) {
-    if (errno != EINVAL && errno != ENOSYS) fail(final_path_, std::strerror(errno));
+    if (errno != EINVAL && errno != ENOSYS) fail_to_replace(final_path_, std::strerror(errno));
     replace_by_renames(temp_path_, final_path_);  // the filesystem cannot exchange
   }
   committed_ = true;

@@ -26,10 +26,6 @@ namespace ochre {
 
 namespace {
 
-bool finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // Exact bit pattern of a position: welding must only join vertices the file meant to be one.
 struct PositionKey {
   uint32_t bits[3];
@@ -60,14 +56,6 @@ struct UvKeyHash {
     return size_t(k.vertex) * 2654435761u ^ (size_t{k.bits[0]} * 19349663u) ^ (size_t{k.bits[1]} * 83492791u);
   }
 };
-
-Transform to_transform(const aiMatrix4x4& a) {
-  Transform t;  // both row-major with column vectors
-  const float values[16] = {a.a1, a.a2, a.a3, a.a4, a.b1, a.b2, a.b3, a.b4,
-                            a.c1, a.c2, a.c3, a.c4, a.d1, a.d2, a.d3, a.d4};
-  std::copy(std::begin(values), std::end(values), t.m.begin());
-  return t;
-}
 
 // Accumulates the welded control mesh while walking the Assimp node hierarchy.
 class Welder {
@@ -323,7 +311,7 @@ void ControlMesh::validate(const std::string& where) const {
   if (face_vertices.size() != corners)
     fail(fmt::format("{} face vertices for {} corners", face_vertices.size(), corners));
   for (size_t i = 0; i < positions.size(); ++i)
-    if (!finite(positions[i])) fail(fmt::format("position {} is not finite", i));
+    if (!is_finite(positions[i])) fail(fmt::format("position {} is not finite", i));
   for (int v : face_vertices)
     if (v < 0 || size_t(v) >= positions.size()) fail(fmt::format("face vertex index {} out of range", v));
   size_t first = 0;
@@ -344,7 +332,7 @@ void ControlMesh::validate(const std::string& where) const {
   }
   if (!colours.empty() && colours.size() != positions.size()) fail("colours and positions differ in count");
   for (size_t i = 0; i < colours.size(); ++i)
-    if (!finite(colours[i])) fail(fmt::format("colour {} is not finite", i));
+    if (!is_finite(colours[i])) fail(fmt::format("colour {} is not finite", i));
   if (crease_edges.size() != crease_sharpness.size()) fail("crease edges and sharpness differ in count");
   for (size_t i = 0; i < crease_edges.size(); ++i) {
     const auto [a, b] = crease_edges[i];

@@ -11,12 +11,6 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-void add_vertex(Mesh& mesh, const Vec3& p, const Vec3& n, const Vec2& uv) {
-  mesh.positions.push_back(p);
-  mesh.normals.push_back(n);
-  mesh.uvs.push_back(uv);
-}
-
 // Two counter-clockwise triangles over the quad a, b, c, d (in that order around it).
 void add_quad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
@@ -59,8 +53,8 @@ Mesh make_groove_plate(const GroovePlate& plate) {
     const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
     for (int i = 0; i <= tiles; ++i) {  // vertex pairs across the facet, tile boundary i
       const float u = static_cast<float>(double(i) / tiles);
-      add_vertex(mesh, {xs[i], a.x, a.y}, n, {u, va});
-      add_vertex(mesh, {xs[i], b.x, b.y}, n, {u, vb});
+      mesh.add_vertex({xs[i], a.x, a.y}, n, {u, va});
+      mesh.add_vertex({xs[i], b.x, b.y}, n, {u, vb});
     }
     for (uint32_t i = 0; i < static_cast<uint32_t>(tiles); ++i) {
       const uint32_t k = base + 2 * i;  // a at x_i, b at x_i, a at x_i+1, b at x_i+1
@@ -84,8 +78,8 @@ Mesh revolve(const std::vector<Vec2>& profile, int segments, float height, const
       const int k = i % segments;  // the seam's vertices repeat column 0's bits
       const double phi = 2.0 * std::numbers::pi * k / segments;
       const float c = static_cast<float>(std::cos(phi)), s = static_cast<float>(std::sin(phi));
-      add_vertex(mesh, {point.x * c, point.x * s, point.y}, {normal_rz.x * c, normal_rz.x * s, normal_rz.y},
-                 {float(i) / segments, v});
+      mesh.add_vertex({point.x * c, point.x * s, point.y}, {normal_rz.x * c, normal_rz.x * s, normal_rz.y},
+                      {float(i) / segments, v});
     }
   };
   const uint32_t row = segments + 1;

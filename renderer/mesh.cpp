@@ -12,13 +12,6 @@ namespace ochre {
 
 namespace {
 
-bool is_finite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-bool is_finite(const Vec2& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y);
-}
-
 template <typename T>
 void check_attribute(const std::vector<T>& values, size_t vertex_count, const char* what,
                      const std::string& where) {

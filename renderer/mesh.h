@@ -26,6 +26,14 @@ struct Mesh {
   std::array<Vec3, 3> object_axes{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
 
   size_t triangle_count() const { return indices.size() / 3; }
+  // Builders of generated meshes (procedural shapes, groove plates): a vertex with normal and uv, a
+  // counter-clockwise triangle of vertex indices.
+  void add_vertex(const Vec3& p, const Vec3& n, const Vec2& uv) {
+    positions.push_back(p);
+    normals.push_back(n);
+    uvs.push_back(uv);
+  }
+  void add_triangle(uint32_t a, uint32_t b, uint32_t c) { indices.insert(indices.end(), {a, b, c}); }
   size_t vertex_count() const { return positions.size(); }
   float triangle_area(size_t triangle) const;
   // Sum of the triangle areas.

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/ProgressHandler.hpp>
@@ -139,6 +140,15 @@ const aiScene* read_mesh_file(Assimp::Importer& importer, const std::filesystem:
   if (scene == nullptr)
     throw InputError(fmt::format("{}: cannot import mesh: {}", where, importer.GetErrorString()));
   return scene;
+}
+
+Transform to_transform(const aiMatrix4x4& a) {
+  // Assimp matrices are row-major with column vectors (a4, b4, c4 = translation), as ours.
+  Transform t;
+  const float values[16] = {a.a1, a.a2, a.a3, a.a4, a.b1, a.b2, a.b3, a.b4,
+                            a.c1, a.c2, a.c3, a.c4, a.d1, a.d2, a.d3, a.d4};
+  std::copy(std::begin(values), std::end(values), t.m.begin());
+  return t;
 }
 
 }  // namespace ochre

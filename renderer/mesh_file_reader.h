@@ -12,6 +12,8 @@
 #include <assimp/Importer.hpp>
 #include <filesystem>
 
+#include "renderer/transform.h"
+
 namespace ochre {
 
 inline constexpr double kMaxTriangulatedPolygon = 30000;
@@ -20,5 +22,8 @@ inline constexpr double kMaxTriangulatedPolygon = 30000;
 // `importer`. Throws InputError starting with the file path when the file (or one it names) is not an
 // acceptable input, its polygons are too large to triangulate, or Assimp cannot import it.
 const aiScene* read_mesh_file(Assimp::Importer& importer, const std::filesystem::path& file, unsigned flags);
+
+// A node's transformation in the scene Assimp read, as ours.
+Transform to_transform(const aiMatrix4x4& a);
 
 }  // namespace ochre

@@ -46,15 +46,6 @@ VertexColourEncoding ply_colour_encoding(const std::filesystem::path& file) {
   return VertexColourEncoding::Linear;
 }
 
-Transform to_transform(const aiMatrix4x4& a) {
-  // Assimp matrices are row-major with column vectors (a4, b4, c4 = translation), as ours.
-  Transform t;
-  const float values[16] = {a.a1, a.a2, a.a3, a.a4, a.b1, a.b2, a.b3, a.b4,
-                            a.c1, a.c2, a.c3, a.c4, a.d1, a.d2, a.d3, a.d4};
-  std::copy(std::begin(values), std::end(values), t.m.begin());
-  return t;
-}
-
 // One Assimp mesh in its own coordinates, triangles only.
 Mesh convert_mesh(const aiMesh& in, VertexColourEncoding encoding) {
   Mesh out;

@@ -40,7 +40,7 @@ struct Parameter {
   bool used = false;
 };
 
-[[noreturn]] void fail(const MitsubaElement& element, const std::string& message) {
+[[noreturn]] void fail_at_element(const MitsubaElement& element, const std::string& message) {
   throw InputError(fmt::format("{}: {}", element.where(), message));
 }
 
@@ -55,12 +55,13 @@ void check_attributes(const MitsubaElement& element, std::initializer_list<std::
       std::string list;
       for (std::string_view a : allowed)
         list += (list.empty() ? "" : ", ") + std::string(a.front() == '!' ? a.substr(1) : a);
-      fail(element, fmt::format("unexpected attribute \"{}\" (<{}> takes: {})", name, element.tag, list));
+      fail_at_element(element,
+                      fmt::format("unexpected attribute \"{}\" (<{}> takes: {})", name, element.tag, list));
     }
   }
   for (std::string_view a : allowed)
     if (a.front() == '!' && !element.has(a.substr(1)))
-      fail(element, fmt::format("missing attribute \"{}\"", a.substr(1)));
+      fail_at_element(element, fmt::format("missing attribute \"{}\"", a.substr(1)));
 }
 
 class XmlReader {
@@ -79,7 +80,7 @@ class XmlReader {
     main_display_dir_ = file.parent_path();
     const SourceFile& source = load(file, file.string());
     root = element_of(document_root(source), source);
-    if (root.tag != "scene") fail(root, "the root element of a Mitsuba scene must be <scene>");
+    if (root.tag != "scene") fail_at_element(root, "the root element of a Mitsuba scene must be <scene>");
     check_version(root);
     check_attributes(root, {"!version"});
     root_ = &root;
@@ -154,11 +155,12 @@ class XmlReader {
         size_t end = i + 1;
         while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
           ++end;
-        fail(element,
-             fmt::format("undefined parameter \"${}\" (define it with <default name=\"{}\" value=\"...\"/> "
-                         "before its use, or give it from outside: ochre render -D {}=...)",
-                         text.substr(i + 1, end - i - 1), text.substr(i + 1, end - i - 1),
-                         text.substr(i + 1, end - i - 1)));
+        fail_at_element(
+            element,
+            fmt::format("undefined parameter \"${}\" (define it with <default name=\"{}\" value=\"...\"/> "
+                        "before its use, or give it from outside: ochre render -D {}=...)",
+                        text.substr(i + 1, end - i - 1), text.substr(i + 1, end - i - 1),
+                        text.substr(i + 1, end - i - 1)));
       }
       match->used = true;
       result += match->value;
@@ -181,17 +183,19 @@ class XmlReader {
   void check_version(const MitsubaElement& root) {
     const std::string* version = root.attribute("version");
     if (!version)
-      fail(root, "missing attribute \"version\" (Mitsuba 3 scenes start <scene version=\"3.0.0\">)");
+      fail_at_element(root,
+                      "missing attribute \"version\" (Mitsuba 3 scenes start <scene version=\"3.0.0\">)");
     int major = -1, minor = -1, patch = -1;
     char tail = 0;
     if (std::sscanf(version->c_str(), "%d.%d.%d%c", &major, &minor, &patch, &tail) != 3 || major < 0 ||
         minor < 0 || patch < 0)
-      fail(root, fmt::format("version \"{}\" is not a version number x.y.z", *version));
+      fail_at_element(root, fmt::format("version \"{}\" is not a version number x.y.z", *version));
     if (major < 2 || major > 3)
-      fail(root,
-           fmt::format("version {}: ochre reads Mitsuba 2.x and 3.x scenes (Mitsuba 0.x scenes name their "
-                       "parameters differently: convert them with Mitsuba 3 first)",
-                       *version));
+      fail_at_element(
+          root,
+          fmt::format("version {}: ochre reads Mitsuba 2.x and 3.x scenes (Mitsuba 0.x scenes name their "
+                      "parameters differently: convert them with Mitsuba 3 first)",
+                      *version));
   }
 
   void read_children(pugi::xml_node node, const SourceFile& source, MitsubaElement& parent, int depth) {
@@ -201,12 +205,12 @@ class XmlReader {
       ~Level() { --n; }
     } level(nesting_);
     if (nesting_ > kMaxNesting)
-      fail(parent, fmt::format("elements are nested more than {} deep", kMaxNesting));
+      fail_at_element(parent, fmt::format("elements are nested more than {} deep", kMaxNesting));
     for (pugi::xml_node child : node.children()) {
       if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
         MitsubaElement where = parent;
         where.line = source.line_of(child.offset_debug());
-        fail(where, fmt::format("unexpected text \"{}\" inside <{}>", child.value(), parent.tag));
+        fail_at_element(where, fmt::format("unexpected text \"{}\" inside <{}>", child.value(), parent.tag));
       }
       if (child.type() != pugi::node_element) continue;  // comments, declarations, processing instructions
       MitsubaElement e = element_of(child, source);
@@ -214,16 +218,16 @@ class XmlReader {
         include(e, parent, depth);
       } else if (e.tag == "default") {
         check_attributes(e, {"!name", "!value"});
-        if (e.name().empty()) fail(e, "the name of a <default> must not be empty");
+        if (e.name().empty()) fail_at_element(e, "the name of a <default> must not be empty");
         if (!find(e.name())) parameters_.push_back({e.name(), *e.attribute("value"), false, false});
       } else if (e.tag == "path") {
         check_attributes(e, {"!value"});
-        if (&parent != root_) fail(e, "<path> may only appear directly inside the root <scene>");
+        if (&parent != root_) fail_at_element(e, "<path> may only appear directly inside the root <scene>");
         std::filesystem::path dir = *e.attribute("value");
         if (dir.is_relative()) dir = e.directory / dir;
         std::error_code error;
         if (!std::filesystem::is_directory(dir, error))
-          fail(e, fmt::format("\"{}\" is not a directory", dir.string()));
+          fail_at_element(e, fmt::format("\"{}\" is not a directory", dir.string()));
         document_.search_dirs.insert(document_.search_dirs.begin(), dir);
       } else {
         read_children(child, source, e, depth);
@@ -236,10 +240,11 @@ class XmlReader {
     check_attributes(e, {"!filename", "name"});
     const std::filesystem::path path = resolve_mitsuba_file(document_, e, *e.attribute("filename"));
     if (depth + 1 > kMaxIncludeDepth)
-      fail(e, fmt::format("includes are nested more than {} deep", kMaxIncludeDepth));
+      fail_at_element(e, fmt::format("includes are nested more than {} deep", kMaxIncludeDepth));
     const std::filesystem::path canonical = std::filesystem::weakly_canonical(path);
     if (std::find(include_stack_.begin(), include_stack_.end(), canonical) != include_stack_.end())
-      fail(e, fmt::format("\"{}\" includes itself (through the files that include it)", path.string()));
+      fail_at_element(
+          e, fmt::format("\"{}\" includes itself (through the files that include it)", path.string()));
     // Named like the scene file: the path the user gave for it, followed into the include.
     const std::filesystem::path relative = path.lexically_relative(document_.main_directory);
     const std::string display =
@@ -248,7 +253,7 @@ class XmlReader {
     try {
       source = &load(path, display);
     } catch (const InputError& error) {
-      fail(e, error.what());
+      fail_at_element(e, error.what());
     }
     include_stack_.push_back(canonical);
     const pugi::xml_node root_node = document_root(*source);
@@ -284,7 +289,8 @@ void register_ids(const MitsubaElement& element, MitsubaDocument& document) {
     const std::string* id = child.attribute("id");
     if (id && child.tag != "ref" && child.tag != "alias") {
       const auto [it, inserted] = document.ids.emplace(*id, &child);
-      if (!inserted) fail(child, fmt::format("duplicate id \"{}\" (first at {})", *id, it->second->where()));
+      if (!inserted)
+        fail_at_element(child, fmt::format("duplicate id \"{}\" (first at {})", *id, it->second->where()));
     }
     register_ids(child, document);
   }
@@ -296,11 +302,11 @@ void register_aliases(const MitsubaElement& element, MitsubaDocument& document) 
       check_attributes(child, {"!id", "!as"});
       const auto source = document.ids.find(*child.attribute("id"));
       if (source == document.ids.end())
-        fail(child, fmt::format("no element has id \"{}\"", *child.attribute("id")));
+        fail_at_element(child, fmt::format("no element has id \"{}\"", *child.attribute("id")));
       const auto [it, inserted] = document.ids.emplace(*child.attribute("as"), source->second);
       if (!inserted)
-        fail(child,
-             fmt::format("duplicate id \"{}\" (first at {})", *child.attribute("as"), it->second->where()));
+        fail_at_element(child, fmt::format("duplicate id \"{}\" (first at {})", *child.attribute("as"),
+                                           it->second->where()));
     }
     register_aliases(child, document);
   }
@@ -340,7 +346,7 @@ std::unique_ptr<MitsubaDocument> read_mitsuba_xml(
 std::filesystem::path resolve_mitsuba_file(const MitsubaDocument& document, const MitsubaElement& element,
                                            const std::string& name) {
   const std::filesystem::path given(name);
-  if (name.empty()) fail(element, "the file name is empty");
+  if (name.empty()) fail_at_element(element, "the file name is empty");
   std::vector<std::filesystem::path> candidates;
   if (given.is_absolute()) {
     candidates.push_back(given);
@@ -354,7 +360,7 @@ std::filesystem::path resolve_mitsuba_file(const MitsubaDocument& document, cons
     if (std::filesystem::exists(c, error)) return c.lexically_normal();
   std::string looked;
   for (const auto& c : candidates) looked += (looked.empty() ? "" : ", ") + c.lexically_normal().string();
-  fail(element, fmt::format("file \"{}\" not found (looked for {})", name, looked));
+  fail_at_element(element, fmt::format("file \"{}\" not found (looked for {})", name, looked));
 }
 
 std::string mitsuba_file_for_json(const MitsubaDocument& document, const MitsubaElement& element,

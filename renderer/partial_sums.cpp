@@ -51,7 +51,7 @@ std::optional<T> parse_integer(std::string_view text, int base = 10) {
   return value;
 }
 
-[[noreturn]] void fail(const std::string& file, const std::string& field, const std::string& why) {
+[[noreturn]] void fail_field(const std::string& file, const std::string& field, const std::string& why) {
   throw InputError(fmt::format("{}: {}: {}", file, field, why));
 }
 
@@ -117,7 +117,7 @@ std::optional<std::pair<float, float>> parse_float_pair(std::string_view text) {
 void parse_identity_fields(const std::string& file, PartialSumsHeader& header) {
   for (const std::string& name : identity_field_names())
     if (!identity_field(header.identity, name))
-      fail(file, name, "missing (not written by this version of ochre?)");
+      fail_field(file, name, "missing (not written by this version of ochre?)");
   const auto field = [&](const char* name) {
     return std::string_view(*identity_field(header.identity, name));
   };
@@ -126,27 +126,28 @@ void parse_identity_fields(const std::string& file, PartialSumsHeader& header) {
   const auto width = parse_integer<int>(resolution.substr(0, x == std::string_view::npos ? 0 : x));
   const auto height = parse_integer<int>(x == std::string_view::npos ? "" : resolution.substr(x + 1));
   if (!width || !height || *width < 1 || *height < 1)
-    fail(file, "ochre.resolution", fmt::format("expected WxH with positive integers, got '{}'", resolution));
+    fail_field(file, "ochre.resolution",
+               fmt::format("expected WxH with positive integers, got '{}'", resolution));
   header.image_width = *width;
   header.image_height = *height;
   const auto spp = parse_integer<uint32_t>(field("ochre.spp"));
   if (!spp || *spp < 1)
-    fail(file, "ochre.spp", fmt::format("expected a positive integer, got '{}'", field("ochre.spp")));
+    fail_field(file, "ochre.spp", fmt::format("expected a positive integer, got '{}'", field("ochre.spp")));
   header.spp = *spp;
   for (const char* flag : {"ochre.aovs", "ochre.stokes"})
     if (field(flag) != "0" && field(flag) != "1")
-      fail(file, flag, fmt::format("expected 0 or 1, got '{}'", field(flag)));
+      fail_field(file, flag, fmt::format("expected 0 or 1, got '{}'", field(flag)));
   header.layers.aovs = field("ochre.aovs") == "1";
   header.layers.stokes = field("ochre.stokes") == "1";
   const auto bins = parse_integer<int>(field("ochre.spectralBins"));
   if (!bins || *bins < 0 || *bins > 471)
-    fail(file, "ochre.spectralBins",
-         fmt::format("expected an integer in [0, 471], got '{}'", field("ochre.spectralBins")));
+    fail_field(file, "ochre.spectralBins",
+               fmt::format("expected an integer in [0, 471], got '{}'", field("ochre.spectralBins")));
   header.layers.spectral_bins = *bins;
   const auto range = parse_float_pair(field("ochre.spectralRange"));
   if (!range)
-    fail(file, "ochre.spectralRange",
-         fmt::format("expected MIN-MAX in nm, got '{}'", field("ochre.spectralRange")));
+    fail_field(file, "ochre.spectralRange",
+               fmt::format("expected MIN-MAX in nm, got '{}'", field("ochre.spectralRange")));
   header.layers.spectral_min = range->first;
   header.layers.spectral_max = range->second;
 }
@@ -159,8 +160,8 @@ void write_partial_sums(AtomicOutput& output, const PartialSumsHeader& header, c
   Imf::Header exr(Imath::Box2i({0, 0}, {header.image_width - 1, header.image_height - 1}),
                   Imath::Box2i({rect.x0, rect.y0}, {rect.x1 - 1, rect.y1 - 1}));
   // RLE: the high words of the sums are nearly all 0 (or all ones) and compress to nothing, the low words
-  // are noise that nothing compresses. Measured on a 1024x1024 part: RLE writes in a quarter of ZIP's time and
-  // reads in half, for files 15 % larger (docs/distributed.md, Figures).
+  // are noise that nothing compresses. Measured on a 1024x1024 part: RLE writes in a quarter of ZIP's time
+  // and reads in half, for files 15 % larger (docs/distributed.md, Figures).
   exr.compression() = Imf::RLE_COMPRESSION;
   const std::vector<std::string> accumulators = film.accumulator_names();
   for (const char* c : {"R", "G", "B"}) exr.channels().insert(c, Imf::Channel(Imf::FLOAT));
@@ -271,40 +272,41 @@ PartialSumsFile::PartialSumsFile(const fs::path& path) : impl_(std::make_unique<
         "--checkpoint and ochre merge --sums write them)",
         file));
   if (version->second != kFormatVersion)
-    fail(file, "ochre.partialSums",
-         fmt::format("format version '{}' is not supported (this ochre reads {})", version->second,
-                     kFormatVersion));
+    fail_field(file, "ochre.partialSums",
+               fmt::format("format version '{}' is not supported (this ochre reads {})", version->second,
+                           kFormatVersion));
   for (const std::string& name : identity_field_names())
     if (const auto it = attributes.find(name); it != attributes.end())
       h.identity.emplace_back(name, it->second);
   parse_identity_fields(file, h);
   if (display.min.x != 0 || display.min.y != 0 || display.max.x != h.image_width - 1 ||
       display.max.y != h.image_height - 1)
-    fail(file, "displayWindow", fmt::format("must be the whole {}x{} image", h.image_width, h.image_height));
+    fail_field(file, "displayWindow",
+               fmt::format("must be the whole {}x{} image", h.image_width, h.image_height));
   h.rect = {data.min.x, data.min.y, data.max.x + 1, data.max.y + 1};
   if (h.rect.empty() || !PixelRect{0, 0, h.image_width, h.image_height}.contains(h.rect))
-    fail(file, "dataWindow", "must lie inside the image");
+    fail_field(file, "dataWindow", "must lie inside the image");
   const auto coverage = parse_coverage(attributes["ochre.coverage"]);
   if (!coverage)
-    fail(file, "ochre.coverage",
-         fmt::format("expected x0,y0,x1,y1:A:B;..., got '{}'", attributes["ochre.coverage"]));
+    fail_field(file, "ochre.coverage",
+               fmt::format("expected x0,y0,x1,y1:A:B;..., got '{}'", attributes["ochre.coverage"]));
   for (const CoveragePiece& piece : *coverage)
     if (!h.rect.contains(piece.rect) || piece.samples.end > h.spp)
-      fail(file, "ochre.coverage",
-           fmt::format("piece {}:{} lies outside the file's pixels {} or samples 0:{}",
-                       format_pixel_rect(piece.rect), format_sample_range(piece.samples),
-                       format_pixel_rect(h.rect), h.spp));
+      fail_field(file, "ochre.coverage",
+                 fmt::format("piece {}:{} lies outside the file's pixels {} or samples 0:{}",
+                             format_pixel_rect(piece.rect), format_sample_range(piece.samples),
+                             format_pixel_rect(h.rect), h.spp));
   h.coverage = *coverage;
   for (auto [name, value] : {std::pair{"ochre.discardedSamples", &h.discarded_samples},
                              std::pair{"ochre.nonFiniteShadingValues", &h.nonfinite_values}}) {
     const auto parsed = parse_integer<uint64_t>(attributes[name]);
-    if (!parsed) fail(file, name, fmt::format("expected a count, got '{}'", attributes[name]));
+    if (!parsed) fail_field(file, name, fmt::format("expected a count, got '{}'", attributes[name]));
     *value = *parsed;
   }
   impl_->checksum = attributes["ochre.sumsChecksum"];
   if (!parse_integer<uint64_t>(impl_->checksum, 16) || impl_->checksum.size() != 16)
-    fail(file, "ochre.sumsChecksum",
-         fmt::format("expected 16 hexadecimal digits, got '{}'", impl_->checksum));
+    fail_field(file, "ochre.sumsChecksum",
+               fmt::format("expected 16 hexadecimal digits, got '{}'", impl_->checksum));
   const Film probe(1, 1, h.layers);
   for (const std::string& a : probe.accumulator_names())
     for (int w = 0; w < kWords; ++w) {
@@ -312,8 +314,9 @@ PartialSumsFile::PartialSumsFile(const fs::path& path) : impl_(std::make_unique<
       const auto it =
           std::find_if(channels.begin(), channels.end(), [&](const auto& c) { return c.first == name; });
       if (it == channels.end())
-        fail(file, name, "missing channel (the file's layers are " + film_description(1, 1, h.layers) + ")");
-      if (it->second != Imf::UINT) fail(file, name, "must be a UINT channel");
+        fail_field(file, name,
+                   "missing channel (the file's layers are " + film_description(1, 1, h.layers) + ")");
+      if (it->second != Imf::UINT) fail_field(file, name, "must be a UINT channel");
     }
   for (const auto& [name, value] : attributes)
     if (name.rfind("ochre.", 0) == 0 && !identity_field(h.identity, name)) h.notes[name] = value;
@@ -373,10 +376,10 @@ void PartialSumsFile::add_to(Film& film, int x0, int y0) const {
             const auto value = static_cast<__int128>(bits);
             add_value_to_checksum(checksum, value);
             if (a == count_index && value != static_cast<__int128>(expected.at(rect.x0 + x, rect.y0 + y)))
-              fail(file, "sums.count",
-                   fmt::format("pixel ({}, {}) holds {} samples, but ochre.coverage says {}", rect.x0 + x,
-                               rect.y0 + y, static_cast<uint64_t>(value),
-                               expected.at(rect.x0 + x, rect.y0 + y)));
+              fail_field(file, "sums.count",
+                         fmt::format("pixel ({}, {}) holds {} samples, but ochre.coverage says {}",
+                                     rect.x0 + x, rect.y0 + y, static_cast<uint64_t>(value),
+                                     expected.at(rect.x0 + x, rect.y0 + y)));
             const size_t pixel = static_cast<size_t>(y0 + y) * film.width() + (x0 + x);
             film.set_accumulator(a, pixel, film.accumulator(a, pixel) + value);
           }
@@ -388,7 +391,7 @@ void PartialSumsFile::add_to(Film& film, int x0, int y0) const {
     throw InputError(fmt::format("{}: cannot read the sums: {}", file, e.what()));
   }
   if (fmt::format("{:016x}", checksum.value()) != impl_->checksum)
-    fail(file, "ochre.sumsChecksum", "does not match the sums: the file is damaged or was edited");
+    fail_field(file, "ochre.sumsChecksum", "does not match the sums: the file is damaged or was edited");
 }
 
 Film PartialSumsFile::read_film() const {

@@ -22,16 +22,6 @@ void require_at_least(int value, int minimum, const char* shape, const char* par
     throw InputError(fmt::format("{}: {} must be at least {}, got {}", shape, parameter, minimum, value));
 }
 
-void add_vertex(Mesh& mesh, Vec3 p, Vec3 n, Vec2 uv) {
-  mesh.positions.push_back(p);
-  mesh.normals.push_back(n);
-  mesh.uvs.push_back(uv);
-}
-
-void add_triangle(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c) {
-  mesh.indices.insert(mesh.indices.end(), {a, b, c});
-}
-
 }  // namespace
 
 Mesh make_plane(Vec2 size) {
@@ -41,12 +31,12 @@ Mesh make_plane(Vec2 size) {
   mesh.name = "plane";
   const float hx = 0.5f * size.x, hy = 0.5f * size.y;
   const Vec3 n{0, 0, 1};
-  add_vertex(mesh, {-hx, -hy, 0}, n, {0, 0});
-  add_vertex(mesh, {hx, -hy, 0}, n, {1, 0});
-  add_vertex(mesh, {hx, hy, 0}, n, {1, 1});
-  add_vertex(mesh, {-hx, hy, 0}, n, {0, 1});
-  add_triangle(mesh, 0, 1, 2);
-  add_triangle(mesh, 0, 2, 3);
+  mesh.add_vertex({-hx, -hy, 0}, n, {0, 0});
+  mesh.add_vertex({hx, -hy, 0}, n, {1, 0});
+  mesh.add_vertex({hx, hy, 0}, n, {1, 1});
+  mesh.add_vertex({-hx, hy, 0}, n, {0, 1});
+  mesh.add_triangle(0, 1, 2);
+  mesh.add_triangle(0, 2, 3);
   mesh.reserve_vertex_padding();
   return mesh;
 }
@@ -58,14 +48,14 @@ Mesh make_disk(float radius, int segments) {
   mesh.name = "disk";
   mesh.positions.reserve(segments + 2);
   const Vec3 n{0, 0, 1};
-  add_vertex(mesh, {0, 0, 0}, n, {0.5f, 0.5f});
+  mesh.add_vertex({0, 0, 0}, n, {0.5f, 0.5f});
   for (int i = 0; i < segments; ++i) {
     const double phi = 2.0 * M_PI * i / segments;
     const float c = static_cast<float>(std::cos(phi)), s = static_cast<float>(std::sin(phi));
-    add_vertex(mesh, {radius * c, radius * s, 0}, n, {0.5f * (c + 1), 0.5f * (s + 1)});
+    mesh.add_vertex({radius * c, radius * s, 0}, n, {0.5f * (c + 1), 0.5f * (s + 1)});
   }
   for (int i = 0; i < segments; ++i) {
-    add_triangle(mesh, 0, 1 + i, 1 + (i + 1) % segments);
+    mesh.add_triangle(0, 1 + i, 1 + (i + 1) % segments);
   }
   return mesh;
 }
@@ -92,11 +82,11 @@ Mesh make_cube(Vec3 size) {
     const Vec3 n{kNormals[face][0], kNormals[face][1], kNormals[face][2]};
     for (int corner = 0; corner < 4; ++corner) {
       const float* c = kCorners[face][corner];
-      add_vertex(mesh, {c[0] * half.x, c[1] * half.y, c[2] * half.z}, n, kUv[corner]);
+      mesh.add_vertex({c[0] * half.x, c[1] * half.y, c[2] * half.z}, n, kUv[corner]);
     }
     const auto base = static_cast<uint32_t>(4 * face);
-    add_triangle(mesh, base, base + 1, base + 2);
-    add_triangle(mesh, base + 3, base, base + 2);
+    mesh.add_triangle(base, base + 1, base + 2);
+    mesh.add_triangle(base + 3, base, base + 2);
   }
   mesh.reserve_vertex_padding();
   return mesh;
@@ -139,7 +129,7 @@ Mesh make_sphere(float radius, int subdivisions) {
       const Vec3 n{static_cast<float>(ring * std::cos(phi)), static_cast<float>(ring * std::sin(phi)),
                    static_cast<float>(z)};
       const Vec2 uv{static_cast<float>(column) / columns, static_cast<float>(row) / rows};
-      add_vertex(mesh, n * radius, normalize(n), uv);
+      mesh.add_vertex(n * radius, normalize(n), uv);
     }
   }
   auto vertex = [&](int row, int column) { return static_cast<uint32_t>(row * (columns + 1) + column); };
@@ -148,8 +138,8 @@ Mesh make_sphere(float radius, int subdivisions) {
       const uint32_t a = vertex(row, column), b = vertex(row, column + 1);
       const uint32_t c = vertex(row + 1, column + 1), d = vertex(row + 1, column);
       // Counter-clockwise seen from outside: u grows eastwards (+phi), v grows northwards (+z).
-      if (row != 0) add_triangle(mesh, a, b, c);         // skip the degenerate triangle at the south pole
-      if (row != rows - 1) add_triangle(mesh, a, c, d);  // and at the north pole
+      if (row != 0) mesh.add_triangle(a, b, c);         // skip the degenerate triangle at the south pole
+      if (row != rows - 1) mesh.add_triangle(a, c, d);  // and at the north pole
     }
   }
   return mesh;

@@ -34,10 +34,6 @@ void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWave
                       first.hit ? first.depth : 0.0f);
 }
 
-bool is_finite(const XYZ& c) {
-  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
-}
-
 // Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
 // The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
 XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {

@@ -155,7 +155,8 @@ float Transform::determinant3() const {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& where, const std::string& what, const nlohmann::json& value) {
+[[noreturn]] void fail_with_value(const std::string& where, const std::string& what,
+                                  const nlohmann::json& value) {
   throw InputError(fmt::format("{}: {}, got {}", where, what, json_excerpt(value)));
 }
 
@@ -165,38 +166,41 @@ float parse_finite(const nlohmann::json& value, const std::string& where) {
 
 Transform parse_matrix(const nlohmann::json& value, const std::string& where) {
   if (!value.is_array() || value.size() != 16)
-    fail(where, "expected an array of 16 numbers (row-major 4x4 matrix)", value);
+    fail_with_value(where, "expected an array of 16 numbers (row-major 4x4 matrix)", value);
   Transform t;
   for (int i = 0; i < 16; ++i) t.m[i] = parse_finite(value[i], fmt::format("{}[{}]", where, i));
   if (t.m[12] != 0 || t.m[13] != 0 || t.m[14] != 0 || t.m[15] != 1) {
-    fail(where, "the bottom row of an affine matrix must be [0, 0, 0, 1]", value);
+    fail_with_value(where, "the bottom row of an affine matrix must be [0, 0, 0, 1]", value);
   }
   return t;
 }
 
 const nlohmann::json& member(const nlohmann::json& object, const char* key, const std::string& where) {
   const auto it = object.find(key);
-  if (it == object.end()) fail(where, fmt::format("missing \"{}\"", key), object);
+  if (it == object.end()) fail_with_value(where, fmt::format("missing \"{}\"", key), object);
   return *it;
 }
 
 Transform parse_rotate(const nlohmann::json& value, const std::string& where) {
-  if (!value.is_object()) fail(where, "expected {\"axis\": [x, y, z], \"angle\": degrees}", value);
+  if (!value.is_object()) fail_with_value(where, "expected {\"axis\": [x, y, z], \"angle\": degrees}", value);
   for (const auto& [key, unused] : value.items()) {
-    if (key != "axis" && key != "angle") fail(where, fmt::format("unknown key \"{}\"", key), value);
+    if (key != "axis" && key != "angle")
+      fail_with_value(where, fmt::format("unknown key \"{}\"", key), value);
   }
   const Vec3 axis = json_vec3(member(value, "axis", where), where + ".axis");
   // The length is squared on the way: [1e-30, 0, 0] is zero and [1e30, 0, 0] infinite in single precision.
   if (!(length(axis) > 0.0f) || !std::isfinite(length(axis)))
-    fail(where + ".axis", "the rotation axis must be non-zero with a finite length", value["axis"]);
+    fail_with_value(where + ".axis", "the rotation axis must be non-zero with a finite length",
+                    value["axis"]);
   return Transform::rotate(parse_finite(member(value, "angle", where), where + ".angle"), axis);
 }
 
 Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
-  if (!value.is_object()) fail(where, "expected {\"eye\": [..], \"target\": [..], \"up\": [..]}", value);
+  if (!value.is_object())
+    fail_with_value(where, "expected {\"eye\": [..], \"target\": [..], \"up\": [..]}", value);
   for (const auto& [key, unused] : value.items()) {
     if (key != "eye" && key != "target" && key != "up")
-      fail(where, fmt::format("unknown key \"{}\"", key), value);
+      fail_with_value(where, fmt::format("unknown key \"{}\"", key), value);
   }
   const Vec3 eye = json_vec3(member(value, "eye", where), where + ".eye");
   const Vec3 target = json_vec3(member(value, "target", where), where + ".target");
@@ -204,7 +208,7 @@ Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
   try {
     return Transform::look_at(eye, target, up);
   } catch (const std::invalid_argument& e) {
-    fail(where, e.what(), value);
+    fail_with_value(where, e.what(), value);
   }
 }
 
@@ -212,13 +216,14 @@ Transform parse_scale(const nlohmann::json& value, const std::string& where) {
   const Vec3 factors =
       value.is_number() ? Vec3(1, 1, 1) * parse_finite(value, where) : json_vec3(value, where);
   if (factors.x == 0 || factors.y == 0 || factors.z == 0)
-    fail(where, "scale factors must not be zero", value);
+    fail_with_value(where, "scale factors must not be zero", value);
   return Transform::scale(factors);
 }
 
 Transform parse_operation(const nlohmann::json& op, const std::string& where) {
   if (!op.is_object() || op.size() != 1) {
-    fail(where, "expected an object with one key: translate, scale, rotate, matrix or look_at", op);
+    fail_with_value(where, "expected an object with one key: translate, scale, rotate, matrix or look_at",
+                    op);
   }
   const std::string key = op.begin().key();
   const nlohmann::json& value = op.begin().value();
@@ -228,9 +233,10 @@ Transform parse_operation(const nlohmann::json& op, const std::string& where) {
   if (key == "rotate") return parse_rotate(value, at);
   if (key == "matrix") return parse_matrix(value, at);
   if (key == "look_at") return parse_look_at(value, at);
-  fail(where,
-       fmt::format("unknown operation \"{}\" (expected translate, scale, rotate, matrix or look_at)", key),
-       op);
+  fail_with_value(
+      where,
+      fmt::format("unknown operation \"{}\" (expected translate, scale, rotate, matrix or look_at)", key),
+      op);
 }
 
 }  // namespace
@@ -246,11 +252,13 @@ Transform parse_transform(const nlohmann::json& value, const std::string& where)
       result = parse_operation(value[i], fmt::format("{}[{}]", where, i)) * result;
     }
   } else {
-    fail(where, "expected a 16-number matrix, an operation object or an array of operations", value);
+    fail_with_value(where, "expected a 16-number matrix, an operation object or an array of operations",
+                    value);
   }
   const float det = result.determinant3();
   if (!(std::fabs(det) > 0.0f) || !std::isfinite(det))
-    fail(where, "the transform is singular (or its scale over- or underflows single precision)", value);
+    fail_with_value(where, "the transform is singular (or its scale over- or underflows single precision)",
+                    value);
   return result;
 }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/core/pi.h"
+
 namespace ochre {
 
 struct Vec3 {
@@ -47,6 +49,13 @@ struct Vec2 {
   float x = 0, y = 0;
 };
 
+inline bool is_finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+inline bool is_finite(const Vec2& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y);
+}
+
 constexpr float dot(const Vec3& a, const Vec3& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
@@ -78,8 +87,5 @@ inline Vec3 max(const Vec3& a, const Vec3& b) {
 inline Vec3 face_forward(const Vec3& v, const Vec3& n) {
   return dot(v, n) < 0.0f ? -v : v;
 }
-
-inline constexpr float kPi = 3.14159265358979323846f;
-inline constexpr float kInvPi = 0.31830988618379067154f;
 
 }  // namespace ochre

@@ -13,23 +13,23 @@ namespace ochre {
 namespace {
 
 // Uniform nodes over x = sqrt(mu) and s = sqrt(1 - c) in [0, 1] (first use: ~0.1 s).
-constexpr int kXNodes = 65;
-constexpr int kSNodes = 33;
+constexpr int kHXNodes = 65;
+constexpr int kHSNodes = 33;
 
 struct HTable {
-  std::vector<float> h;  // [s * kXNodes + x]
-  HTable() : h(kXNodes * kSNodes) {
-    for (int s = 0; s < kSNodes; ++s) {
-      const double sv = double(s) / (kSNodes - 1), c = 1.0 - sv * sv;
-      for (int x = 0; x < kXNodes; ++x) {
-        const double xv = double(x) / (kXNodes - 1);
-        h[s * kXNodes + x] = float(isotropic_h_exact(xv * xv, c));
+  std::vector<float> h;  // [s * kHXNodes + x]
+  HTable() : h(kHXNodes * kHSNodes) {
+    for (int s = 0; s < kHSNodes; ++s) {
+      const double sv = double(s) / (kHSNodes - 1), c = 1.0 - sv * sv;
+      for (int x = 0; x < kHXNodes; ++x) {
+        const double xv = double(x) / (kHXNodes - 1);
+        h[s * kHXNodes + x] = float(isotropic_h_exact(xv * xv, c));
       }
     }
   }
 };
 
-const HTable& table() {
+const HTable& h_table() {
   static const HTable t;
   return t;
 }
@@ -39,19 +39,19 @@ const HTable& table() {
 ChandrasekharConstants chandrasekhar_constants(float c) {
   ChandrasekharConstants k;
   k.c = nan_safe_clamp(c, 0.0f, 1.0f);  // NaN -> 0: c gives the index
-  const float f = std::sqrt(1.0f - k.c) * float(kSNodes - 1);
-  k.s_index = std::min(int(f), kSNodes - 2);
+  const float f = std::sqrt(1.0f - k.c) * float(kHSNodes - 1);
+  k.s_index = std::min(int(f), kHSNodes - 2);
   k.s_weight = std::clamp(f - float(k.s_index), 0.0f, 1.0f);
   return k;
 }
 
 float chandrasekhar_h(const ChandrasekharConstants& k, float mu) {
-  const std::vector<float>& h = table().h;
-  const float f = std::sqrt(nan_safe_clamp(mu, 0.0f, 1.0f)) * float(kXNodes - 1);
-  const int x = std::min(int(f), kXNodes - 2);
+  const std::vector<float>& h = h_table().h;
+  const float f = std::sqrt(nan_safe_clamp(mu, 0.0f, 1.0f)) * float(kHXNodes - 1);
+  const int x = std::min(int(f), kHXNodes - 2);
   const float t = f - float(x);
-  const float* lo = &h[k.s_index * kXNodes + x];
-  const float* hi = lo + kXNodes;
+  const float* lo = &h[k.s_index * kHXNodes + x];
+  const float* hi = lo + kHXNodes;
   return (1.0f - k.s_weight) * ((1.0f - t) * lo[0] + t * lo[1]) +
          k.s_weight * ((1.0f - t) * hi[0] + t * hi[1]);
 }
@@ -62,7 +62,7 @@ float chandrasekhar_brdf(const ChandrasekharConstants& k, float mu_i, float mu_o
 }
 
 size_t chandrasekhar_table_bytes() {
-  return table().h.size() * sizeof(float);
+  return h_table().h.size() * sizeof(float);
 }
 
 ChandrasekharLobe::ChandrasekharLobe(const SampledSpectrum& albedo) {

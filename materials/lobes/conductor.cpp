@@ -21,12 +21,6 @@ Vec3 mirror(const Vec3& wo) {
   return {-wo.x, -wo.y, wo.z};
 }
 
-// A delta lobe has no density and an invalid configuration no value: a zero response, with frames
-// perpendicular to their beams as MuellerResponse requires.
-MuellerResponse zero_response(const Vec3& wo, const Vec3& wi) {
-  return depolarizing_response(SampledSpectrum(0.0f), wo, wi);
-}
-
 }  // namespace
 
 std::optional<LobeSample> SmoothConductorLobe::sample(const Vec3& wo, float, const Vec2&,

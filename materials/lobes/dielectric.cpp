@@ -19,16 +19,6 @@ std::optional<Vec3> refract_through_z(const Vec3& wo, float eta) {
   return -wo / etap + n * (cos_o / etap - cos_t);
 }
 
-namespace {
-
-// A delta lobe has no density and an invalid configuration no value: a zero response, with frames
-// perpendicular to their beams as MuellerResponse requires.
-MuellerResponse zero_response(const Vec3& wo, const Vec3& wi) {
-  return depolarizing_response(SampledSpectrum(0.0f), wo, wi);
-}
-
-}  // namespace
-
 // The Fresnel functions take a signed incidence cosine whose sign says on which side the light is
 // (fresnel.h), so the inverted index inside needs no special case.
 LobeSample SmoothDielectricLobe::reflection(const Vec3& wo, float probability) const {

@@ -14,4 +14,8 @@ MuellerResponse depolarizing_response(const SampledSpectrum& f, const Vec3& wo, 
   return r;
 }
 
+MuellerResponse zero_response(const Vec3& wo, const Vec3& wi) {
+  return depolarizing_response(SampledSpectrum(0.0f), wo, wi);
+}
+
 }  // namespace ochre

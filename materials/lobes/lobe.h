@@ -52,6 +52,9 @@ struct MuellerResponse {
 // Ideal depolarizer response: only M00 = f; the axes are any perpendiculars (irrelevant to a
 // depolarizer, but kept valid so frame rotations stay well defined).
 MuellerResponse depolarizing_response(const SampledSpectrum& f, const Vec3& wo, const Vec3& wi);
+// A delta lobe has no density and an invalid configuration no value: a zero response, with frames
+// perpendicular to their beams as MuellerResponse requires.
+MuellerResponse zero_response(const Vec3& wo, const Vec3& wi);
 
 struct LobeSample {
   Vec3 wi;  // sampled direction toward the light, local frame

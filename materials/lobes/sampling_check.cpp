@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "materials/core/pcg32.h"
+#include "materials/core/pi.h"
 
 namespace ochre {
 
@@ -14,7 +15,6 @@ namespace {
 
 constexpr double kMinExpected = 5.0;  // pool cells expecting fewer samples (the usual chi-square rule)
 constexpr double kRelativeTolerance = 1e-4;
-constexpr double kTwoPi = 6.283185307179586;
 
 double relative_error(double value, double reference) {
   return std::abs(value - reference) / std::max(std::abs(reference), 1e-12);
@@ -111,7 +111,7 @@ double sidak_significance(double alpha, int tests) {
 Chi2Result chi2_test(const Lobe& lobe, const Vec3& wo, const SampledWavelengths& lambda, int theta_bins,
                      int phi_bins, int samples, uint64_t seed) {
   Chi2Result r;
-  const double dz = 2.0 / theta_bins, dphi = kTwoPi / phi_bins;
+  const double dz = 2.0 / theta_bins, dphi = kTwoPiD / phi_bins;
   std::vector<Cell> cells(static_cast<size_t>(theta_bins) * phi_bins);
 
   Pcg32 rng(seed);
@@ -130,7 +130,7 @@ Chi2Result chi2_test(const Lobe& lobe, const Vec3& wo, const SampledWavelengths&
     check_sample(lobe, wo, *s, lambda, r);
     const double z = std::clamp(static_cast<double>(s->wi.z), -1.0, 1.0);
     double phi = std::atan2(s->wi.y, s->wi.x);
-    if (phi < 0.0) phi += kTwoPi;
+    if (phi < 0.0) phi += kTwoPiD;
     const int ti = std::min(static_cast<int>((z + 1.0) / dz), theta_bins - 1);
     const int pj = std::min(static_cast<int>(phi / dphi), phi_bins - 1);
     cells[static_cast<size_t>(ti) * phi_bins + pj].observed += 1.0;

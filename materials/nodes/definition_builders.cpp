@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "spectra/named_spectra.h"
+
 namespace ochre {
 
 SocketDef float_input(const char* name, SocketType type, float fallback, std::optional<float> min,
@@ -13,6 +15,17 @@ SocketDef float_input(const char* name, SocketType type, float fallback, std::op
   s.min = min;
   s.max = max;
   s.clamped = min.has_value() || max.has_value();
+  s.doc = doc;
+  return s;
+}
+
+SocketDef named_spectrum_input(const char* name, const char* spectrum_name, const char* doc) {
+  SocketDef s;
+  s.name = name;
+  s.type = SocketType::kSpectrum;
+  s.default_value = NodeValue::of_spectrum(named_spectrum(spectrum_name));
+  s.role = SpectralRole::kNone;
+  s.min = 0.0f;
   s.doc = doc;
   return s;
 }

@@ -14,6 +14,8 @@ namespace ochre {
 // to [min, max] at run time and constants outside it an error.
 SocketDef float_input(const char* name, SocketType type, float fallback, std::optional<float> min,
                       std::optional<float> max, const char* doc);
+// A spectrum input >= 0 whose default is the named spectrum `spectrum_name` (spectra/named_spectra.h).
+SocketDef named_spectrum_input(const char* name, const char* spectrum_name, const char* doc);
 // An input that, when not given, is linked to a hidden node of type `default_node` ("uv", "position").
 SocketDef context_input(const char* name, SocketType type, const char* default_node, const char* doc);
 // A constant number parameter in [min, max].

@@ -2,10 +2,11 @@
 
 #include <cmath>
 
+#include "materials/core/pi.h"
+
 namespace ochre {
 
 GaussLegendreRule gauss_legendre_rule(int n) {
-  constexpr double kPiD = 3.14159265358979323846;
   GaussLegendreRule r;
   r.nodes.resize(n);
   r.weights.resize(n);

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/core/pi.h"
 #include "materials/numerics/gauss_legendre.h"
 
 namespace ochre {
 
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 // J_k(t) = int_0^1 x^(2k) / (1 + t^2 x^2) dx for k = 0..2.
 std::array<double, 3> moments(double t) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
 #include "materials/numerics/gauss_legendre.h"
 
@@ -11,7 +12,6 @@ namespace ochre {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 // The first layer keeps single scattering only: its missing O(tau0) double scattering acts like an
 // absorption 1 - c ~ tau0 that leaves an albedo deficit ~ sqrt(tau0) at c = 1.
 constexpr int kInitialLayerExponent = 40;

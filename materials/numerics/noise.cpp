@@ -46,7 +46,8 @@ float fade(float t) {
   return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f);
 }
 
-float lerp(float a, float b, float t) {
+// Linear interpolation (OSL's name for it).
+float mix(float a, float b, float t) {
   return a + t * (b - a);
 }
 
@@ -78,11 +79,9 @@ float gradient_noise(const Vec3& p, uint32_t seed) {
     return gradient_dot(hash_cell(ix + dx, iy + dy, iz + dz, seed), fx - float(dx), fy - float(dy),
                         fz - float(dz));
   };
-  const float x00 = lerp(corner(0, 0, 0), corner(1, 0, 0), u),
-              x10 = lerp(corner(0, 1, 0), corner(1, 1, 0), u);
-  const float x01 = lerp(corner(0, 0, 1), corner(1, 0, 1), u),
-              x11 = lerp(corner(0, 1, 1), corner(1, 1, 1), u);
-  return lerp(lerp(x00, x10, v), lerp(x01, x11, v), w);
+  const float x00 = mix(corner(0, 0, 0), corner(1, 0, 0), u), x10 = mix(corner(0, 1, 0), corner(1, 1, 0), u);
+  const float x01 = mix(corner(0, 0, 1), corner(1, 0, 1), u), x11 = mix(corner(0, 1, 1), corner(1, 1, 1), u);
+  return mix(mix(x00, x10, v), mix(x01, x11, v), w);
 }
 
 float fractal_noise(const Vec3& p, const FractalNoise& fractal, uint32_t seed) {

@@ -16,8 +16,6 @@
 namespace ochre::halfspace::test::halfspace_mc_test {
 namespace {
 
-using ochre::test::kPiD;
-
 constexpr double kSigmas = 4.0;
 
 Direction at(double mu, double phi_deg) {

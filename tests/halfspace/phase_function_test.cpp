@@ -14,8 +14,6 @@
 namespace ochre::halfspace::test::phase_function_test {
 namespace {
 
-using ochre::test::kPiD;
-
 // Composite Simpson's rule.
 template <typename F>
 double integrate(F f, double a, double b, int intervals = 2000) {

@@ -2,14 +2,13 @@
 
 #include <cmath>
 
+#include "materials/core/pi.h"
 #include "materials/numerics/gauss_legendre.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
 
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 // Quadrature sizes for the albedo integrals (converged to ~1e-6 for the LS models, see the tests).
 constexpr int kMuNodes = 24;

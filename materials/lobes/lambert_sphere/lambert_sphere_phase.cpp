@@ -4,13 +4,12 @@
 #include <array>
 #include <cmath>
 
+#include "materials/core/pi.h"
 #include "materials/numerics/gauss_legendre.h"
 
 namespace ochre {
 
 namespace {
-
-constexpr double kPiD = 3.14159265358979323846;
 
 // Legendre polynomial P_k(x) by the three-term recurrence.
 double legendre(int k, double x) {

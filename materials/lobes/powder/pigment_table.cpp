@@ -5,6 +5,7 @@
 #include <map>
 #include <mutex>
 
+#include "materials/core/pi.h"
 #include "materials/numerics/mie.h"
 #include "spectra/named_spectra.h"
 #include "spectra/non_finite.h"
@@ -16,10 +17,10 @@ namespace {
 // The radius axis is the size parameter x = 2 pi b / lambda: at a fixed x the albedo changes with the
 // wavelength only through the (smooth) index, so the Mie resonances of weakly absorbing grains line up
 // along the wavelength axis and bilinear interpolation follows them.
-constexpr double kTwoPi = 6.283185307179586;
-const float kLogXMin = float(std::log(kTwoPi * PigmentTable::kRadiusMin / (PigmentTable::kLambdaMax * 1e-3)));
+const float kLogXMin =
+    float(std::log(kTwoPiD * PigmentTable::kRadiusMin / (PigmentTable::kLambdaMax * 1e-3)));
 const float kLogXStep =
-    float((std::log(kTwoPi * PigmentTable::kRadiusMax / (PigmentTable::kLambdaMin * 1e-3)) - kLogXMin) /
+    float((std::log(kTwoPiD * PigmentTable::kRadiusMax / (PigmentTable::kLambdaMin * 1e-3)) - kLogXMin) /
           (PigmentTable::kSizes - 1));
 
 // Position of x on a uniform grid of `count` knots: the lower knot and the weight of the upper one, clamped
@@ -53,7 +54,7 @@ PigmentTable::PigmentTable(const Spectrum& n, const Spectrum& k, PowderTau tau) 
 
 float PigmentTable::albedo(float lambda_nm, float radius_um) const {
   const GridPosition l = grid_position((lambda_nm - kLambdaMin) / kLambdaStep, lambdas_);
-  const float log_x = std::log(std::max(float(kTwoPi) * radius_um / (lambda_nm * 1e-3f), 1e-30f));
+  const float log_x = std::log(std::max(float(kTwoPiD) * radius_um / (lambda_nm * 1e-3f), 1e-30f));
   const GridPosition r = grid_position((log_x - kLogXMin) / kLogXStep, kSizes);
   const float* row0 = &rho_[size_t(l.index) * kSizes + r.index];
   const float* row1 = row0 + kSizes;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "materials/lobes/conductor.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 #include "spectra/named_spectra.h"
 #include "spectra/non_finite.h"
@@ -52,17 +53,6 @@ ClosureTraits conductor_traits(std::span<const InputView> in, const void*) {
   return {base | (in[2].value->f > 0.0f ? kLobeGlossy : kLobeDelta), false};
 }
 
-SocketDef spectrum_input(const char* name, const char* metal_column, const char* doc) {
-  SocketDef s;
-  s.name = name;
-  s.type = SocketType::kSpectrum;
-  s.default_value = NodeValue::of_spectrum(named_spectrum(metal_column));
-  s.role = SpectralRole::kNone;
-  s.min = 0.0f;
-  s.doc = doc;
-  return s;
-}
-
 }  // namespace
 
 NodeDefinition conductor_node() {
@@ -78,8 +68,8 @@ NodeDefinition conductor_node() {
   roughness.clamped = true;
   roughness.doc =
       "GGX alpha (not squared); 0 = perfect mirror (delta lobe); a linked value is clamped to [0, 1]";
-  d.inputs = {spectrum_input("eta", "metal-Cu-eta", "real part n of the index (default: copper)"),
-              spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (default: copper)"),
+  d.inputs = {named_spectrum_input("eta", "metal-Cu-eta", "real part n of the index (default: copper)"),
+              named_spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (default: copper)"),
               roughness};
   ParamDef metal;
   metal.name = "metal";

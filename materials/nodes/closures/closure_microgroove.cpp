@@ -16,7 +16,7 @@ namespace ochre {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr GrooveInputs kInputs{0, 1, 2, 3};
+constexpr GrooveInputs kMicrogrooveInputs{0, 1, 2, 3};
 
 struct MicrogrooveSettings {
   GrooveFacetSettings facet;
@@ -58,10 +58,10 @@ void emit_microgroove(const NodeArgs& a) {
   const SampledSpectrum w = a.weight();
   if (w.is_black()) return;
   const MicrogrooveSettings& s = a.data<MicrogrooveSettings>();
-  const Vec3 axis = groove_local_axis(a, s.facet, kInputs);
+  const Vec3 axis = groove_local_axis(a, s.facet, kMicrogrooveInputs);
   const MicrogrooveShape shape{s.profile.get(), s.alpha_min, s.alpha_max};
-  a.add_lobe(a.arena.make<MicrogrooveLobe>(shape, axis, groove_facet(a, s.facet, kInputs), s.facet.model,
-                                           s.facet.reflection_limit),
+  a.add_lobe(a.arena.make<MicrogrooveLobe>(shape, axis, groove_facet(a, s.facet, kMicrogrooveInputs),
+                                           s.facet.model, s.facet.reflection_limit),
              w);
 }
 

@@ -14,8 +14,8 @@ namespace ochre {
 
 namespace {
 
-constexpr float kMinAlphaDegrees = 0.1f;     // a ray can need 1800 reflections there
-constexpr GrooveInputs kInputs{1, 2, 3, 4};  // after alpha
+constexpr float kMinAlphaDegrees = 0.1f;            // a ray can need 1800 reflections there
+constexpr GrooveInputs kVGrooveInputs{1, 2, 3, 4};  // after alpha
 
 Prepared prepare_vgroove(const PrepareArgs& args) {
   Prepared p;
@@ -27,10 +27,10 @@ void emit_vgroove(const NodeArgs& a) {
   const SampledSpectrum w = a.weight();
   if (w.is_black()) return;
   const GrooveFacetSettings& s = a.data<GrooveFacetSettings>();
-  const Vec3 axis = groove_local_axis(a, s, kInputs);
+  const Vec3 axis = groove_local_axis(a, s, kVGrooveInputs);
   const float alpha_degrees = std::clamp(a.in_float(0), kMinAlphaDegrees, 180.0f);
   a.add_lobe(a.arena.make<VGrooveLobe>(alpha_degrees * (std::numbers::pi / 180.0), axis,
-                                       groove_facet(a, s, kInputs), s.model, s.reflection_limit),
+                                       groove_facet(a, s, kVGrooveInputs), s.model, s.reflection_limit),
              w);
 }
 

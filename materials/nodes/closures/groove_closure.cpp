@@ -83,34 +83,19 @@ ClosureTraits groove_traits(const GrooveFacetSettings& s) {
   return {kLobeReflection | kLobeDelta | (groove_model_polarizes(s.model) ? kLobePolarizing : 0u), false};
 }
 
-namespace {
-
-SocketDef spectrum_input(const char* name, const char* named_default, const char* doc) {
-  SocketDef s;
-  s.name = name;
-  s.type = SocketType::kSpectrum;
-  s.default_value = NodeValue::of_spectrum(named_spectrum(named_default));
-  s.role = SpectralRole::kNone;
-  s.min = 0.0f;
-  s.doc = doc;
-  return s;
-}
-
-}  // namespace
-
 std::vector<SocketDef> groove_facet_and_direction_inputs() {
   SocketDef direction;
   direction.name = "direction";
   direction.type = SocketType::kVector;
   direction.default_value = NodeValue::of_vector({1.0f, 0.0f, 0.0f});
   direction.doc = "reference groove direction in object or world space (see direction_space); ignored for uv";
-  return {
-      spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
-      spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
-      float_input("angle", SocketType::kFloat, 0.0f, std::nullopt, std::nullopt,
-                  "groove direction: degrees from the reference direction, counter-clockwise about "
-                  "the normal (may be textured)"),
-      direction};
+  return {named_spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
+          named_spectrum_input("k", "metal-Cu-k",
+                               "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
+          float_input("angle", SocketType::kFloat, 0.0f, std::nullopt, std::nullopt,
+                      "groove direction: degrees from the reference direction, counter-clockwise about "
+                      "the normal (may be textured)"),
+          direction};
 }
 
 std::vector<ParamDef> groove_common_params() {

@@ -1,0 +1,14 @@
+#pragma once
+// pi in the precisions the code uses: float for the rendering math, double for the numerical models
+// (tables, quadratures) that are computed once.
+
+#include <numbers>
+
+namespace ochre {
+
+inline constexpr float kPi = std::numbers::pi_v<float>;
+inline constexpr float kInvPi = std::numbers::inv_pi_v<float>;
+inline constexpr double kPiD = std::numbers::pi;
+inline constexpr double kTwoPiD = 2.0 * std::numbers::pi;
+
+}  // namespace ochre
