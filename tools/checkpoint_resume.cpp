@@ -20,7 +20,7 @@ std::string absolute_or_empty(const std::string& path) {
 }
 
 // The note `name` of the checkpoint; InputError naming the file and the note when it is missing.
-const std::string& note(const PartialSumsFile& checkpoint, const std::string& name) {
+const std::string& required_note(const PartialSumsFile& checkpoint, const std::string& name) {
   const auto& notes = checkpoint.header().notes;
   const auto it = notes.find(name);
   if (it == notes.end())
@@ -58,11 +58,11 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   const PartialSumsHeader& h = checkpoint.header();
   const std::string file = checkpoint.path().string();
   RenderCommand r = given;
-  const auto target = parse_sample_range(note(checkpoint, "ochre.checkpoint.target"));
+  const auto target = parse_sample_range(required_note(checkpoint, "ochre.checkpoint.target"));
   if (!target)
     throw InputError(fmt::format("{}: ochre.checkpoint.target: expected A:B, got '{}'", file,
-                                 note(checkpoint, "ochre.checkpoint.target")));
-  if (r.scene.empty()) r.scene = note(checkpoint, "ochre.scene");
+                                 required_note(checkpoint, "ochre.checkpoint.target")));
+  if (r.scene.empty()) r.scene = required_note(checkpoint, "ochre.scene");
   r.overrides.spp = h.spp;
   r.overrides.seed = number<uint64_t>(checkpoint, "ochre.seed");
   r.overrides.width = h.image_width;
@@ -73,19 +73,20 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.stokes = h.layers.stokes;
   r.spectral_bins = h.layers.spectral_bins;
   r.colorspace = field(checkpoint, "ochre.colorspace");
-  if (r.exr.empty()) r.exr = note(checkpoint, "ochre.checkpoint.exr");
-  if (r.png.empty()) r.png = note(checkpoint, "ochre.checkpoint.png");
-  if (r.polarization_png.empty()) r.polarization_png = note(checkpoint, "ochre.checkpoint.polarizationPng");
-  if (!r.ocio_config) r.ocio_config = note(checkpoint, "ochre.display.ocioConfig");
-  if (!r.display) r.display = note(checkpoint, "ochre.display.display");
-  if (!r.view) r.view = note(checkpoint, "ochre.display.view");
+  if (r.exr.empty()) r.exr = required_note(checkpoint, "ochre.checkpoint.exr");
+  if (r.png.empty()) r.png = required_note(checkpoint, "ochre.checkpoint.png");
+  if (r.polarization_png.empty())
+    r.polarization_png = required_note(checkpoint, "ochre.checkpoint.polarizationPng");
+  if (!r.ocio_config) r.ocio_config = required_note(checkpoint, "ochre.display.ocioConfig");
+  if (!r.display) r.display = required_note(checkpoint, "ochre.display.display");
+  if (!r.view) r.view = required_note(checkpoint, "ochre.display.view");
   if (!r.exposure) {
-    const std::string& stops = note(checkpoint, "ochre.display.exposure");
+    const std::string& stops = required_note(checkpoint, "ochre.display.exposure");
     float exposure = 0.0f;
     std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
     r.exposure = exposure;
   }
-  if (note(checkpoint, "ochre.checkpoint.partialSums") == "1") {
+  if (required_note(checkpoint, "ochre.checkpoint.partialSums") == "1") {
     r.sample_range = *target;
     if (h.rect != PixelRect{0, 0, h.image_width, h.image_height}) r.region = h.rect;
   }

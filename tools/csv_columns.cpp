@@ -107,4 +107,8 @@ CsvColumns read_csv_columns(const std::filesystem::path& file, std::span<const c
   return table;
 }
 
+std::string table_number(double x) {
+  return fmt::format("{:.9g}", x);
+}
+
 }  // namespace ochre

@@ -31,4 +31,8 @@ CsvColumns read_csv_columns(const std::filesystem::path& file, std::span<const c
 // The number `text` spells (as std::stod reads it, up to its last character), when it is finite.
 std::optional<double> finite_number(const std::string& text);
 
+// `x` as the tools write numbers in their tables (CSV and text): nine significant digits, enough for a
+// float to read back exactly.
+std::string table_number(double x);
+
 }  // namespace ochre

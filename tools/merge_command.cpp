@@ -4,12 +4,12 @@
 
 #include <array>
 #include <charconv>
-#include <cmath>
-#include <optional>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <optional>
 
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
@@ -69,7 +69,7 @@ CoverageReport check_parts_cover(const std::vector<PartialSumsFile>& parts, bool
   throw InputError(message);
 }
 
-std::string note(const PartialSumsHeader& h, const std::string& name) {
+std::string note_or_empty(const PartialSumsHeader& h, const std::string& name) {
   const auto it = h.notes.find(name);
   return it == h.notes.end() ? "" : it->second;
 }
@@ -78,7 +78,7 @@ std::string note(const PartialSumsHeader& h, const std::string& name) {
 // note is absent. Throws InputError naming the file when there are not N finite numbers.
 template <size_t N>
 std::optional<std::array<double, N>> note_numbers(const PartialSumsHeader& h, const std::string& name) {
-  const std::string text = note(h, name);
+  const std::string text = note_or_empty(h, name);
   if (text.empty()) return std::nullopt;
   std::array<double, N> values{};
   const char* p = text.data();
@@ -105,11 +105,11 @@ OutputSettings merged_outputs(const MergeCommand& command, const PartialSumsHead
   out.spectral_bins = h.layers.spectral_bins;
   out.spectral_min = h.layers.spectral_min;
   out.spectral_max = h.layers.spectral_max;
-  out.ocio_config = command.ocio_config.value_or(note(h, "ochre.display.ocioConfig"));
-  out.display = command.display.value_or(note(h, "ochre.display.display"));
-  out.view = command.view.value_or(note(h, "ochre.display.view"));
+  out.ocio_config = command.ocio_config.value_or(note_or_empty(h, "ochre.display.ocioConfig"));
+  out.display = command.display.value_or(note_or_empty(h, "ochre.display.display"));
+  out.view = command.view.value_or(note_or_empty(h, "ochre.display.view"));
   float exposure = 0.0f;
-  const std::string stops = note(h, "ochre.display.exposure");
+  const std::string stops = note_or_empty(h, "ochre.display.exposure");
   std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
   out.exposure = command.exposure.value_or(exposure);
   // A camera sensor's film (docs/cameras.md): its name and output mode are part of the identity.
@@ -199,8 +199,8 @@ int merge(const MergeCommand& command) {
                                   seconds_since(write_start)));
   }
   if (final_image)
-    for (const std::string& line :
-         add_outputs(transaction, film, out, merged_settings(first), stats, note(first, "ochre.scene")))
+    for (const std::string& line : add_outputs(transaction, film, out, merged_settings(first), stats,
+                                               note_or_empty(first, "ochre.scene")))
       written.push_back(line);
   transaction.commit();
   if (!command.quiet) {

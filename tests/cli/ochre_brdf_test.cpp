@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
-#include "support/angles.h"
+#include "materials/core/pi.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::ochre_brdf_test {

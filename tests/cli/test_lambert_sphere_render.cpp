@@ -11,7 +11,7 @@
 #include <string>
 
 #include "cli/render_probe.h"
-#include "support/angles.h"
+#include "materials/core/pi.h"
 
 namespace ochre::test::test_lambert_sphere_render {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli/cli_runner.h"
+#include "materials/core/pi.h"
 #include "renderer/exr_reader.h"
-#include "support/angles.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_polarization_render {

@@ -10,13 +10,13 @@
 
 #include "cli/cli_runner.h"
 #include "cli/render_probe.h"
+#include "materials/core/pi.h"
 #include "materials/core/vec3d.h"
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_model.h"
 #include "materials/numerics/gauss_legendre.h"
 #include "renderer/exr_reader.h"
 #include "spectra/cie.h"
-#include "support/angles.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_powder_render {

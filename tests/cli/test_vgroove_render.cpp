@@ -13,8 +13,8 @@
 #include <string>
 
 #include "cli/render_probe.h"
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "support/angles.h"
 
 namespace ochre::test::test_vgroove_render {
 namespace {

@@ -3,9 +3,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "spectra/named_spectra.h"
-#include "support/angles.h"
 
 namespace ochre::test {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "chandrasekhar_h.h"
-#include "support/angles.h"
+#include "materials/core/pi.h"
 #include "tools/halfspace/gauss_legendre.h"
 
 namespace ochre::halfspace::test::halfspace_mc_test {

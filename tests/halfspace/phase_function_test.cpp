@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "chi_square.h"
-#include "support/angles.h"
+#include "materials/core/pi.h"
 
 namespace ochre::halfspace::test::phase_function_test {
 namespace {

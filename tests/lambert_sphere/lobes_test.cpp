@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/chandrasekhar_halfspace.h"
 #include "materials/lobes/lambert.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
@@ -14,7 +15,6 @@
 #include "materials/lobes/oren_nayar.h"
 #include "materials/lobes/sampling_check.h"
 #include "materials/numerics/h_function.h"
-#include "support/angles.h"
 #include "support/spectrum_lanes.h"
 
 namespace ochre::test::lobes_test {

@@ -10,11 +10,11 @@
 #include <random>
 #include <vector>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/numerics/h_function.h"
 #include "materials/numerics/halfspace_doubling.h"
-#include "support/angles.h"
 
 namespace ochre::test::model_test {
 namespace {

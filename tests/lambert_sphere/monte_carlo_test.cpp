@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <vector>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
-#include "support/angles.h"
 #include "tools/halfspace/halfspace_mc.h"
 
 namespace ochre::test::monte_carlo_test {

@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
 #include "materials/lobes/sampling_check.h"
-#include "support/angles.h"
 
 namespace ochre::test::phase_function_test {
 namespace {

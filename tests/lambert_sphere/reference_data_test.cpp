@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
-#include "support/angles.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::reference_data_test {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "support/angles.h"
+#include "materials/core/pi.h"
 
 namespace ochre::test::fresnel_test {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "support/angles.h"
+#include "materials/core/pi.h"
 #include "support/spectrum_lanes.h"
 
 namespace ochre::test::mueller_test {

@@ -11,10 +11,10 @@
 #include <numbers>
 #include <random>
 
+#include "materials/core/pi.h"
 #include "materials/core/vec3d.h"
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/numerics/gauss_legendre.h"
-#include "support/angles.h"
 
 namespace ochre::test::powder_model_test {
 namespace {

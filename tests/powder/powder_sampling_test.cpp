@@ -8,10 +8,10 @@
 #include <numbers>
 #include <random>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/powder/powder_lobe.h"
 #include "materials/lobes/sampling_check.h"
 #include "materials/numerics/gauss_legendre.h"
-#include "support/angles.h"
 
 namespace ochre::test::powder_sampling_test {
 namespace {

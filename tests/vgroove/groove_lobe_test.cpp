@@ -8,10 +8,10 @@
 #include <numbers>
 #include <random>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/microgroove_lobe.h"
 #include "materials/lobes/vgroove/vgroove_lobe.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "support/angles.h"
 
 namespace ochre::test::groove_lobe_test {
 namespace {

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <random>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "support/angles.h"
 
 namespace ochre::test::vgroove_geometry_test {
 namespace {

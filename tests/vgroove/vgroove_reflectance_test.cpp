@@ -9,11 +9,11 @@
 #include <numbers>
 #include <random>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/fresnel.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "materials/numerics/gauss_legendre.h"
 #include "spectra/named_spectra.h"
-#include "support/angles.h"
 
 namespace ochre::test::vgroove_reflectance_test {
 namespace {

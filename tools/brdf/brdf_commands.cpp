@@ -18,6 +18,7 @@
 #include "tools/brdf/direction_pairs.h"
 #include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
+#include "tools/csv_columns.h"
 #include "tools/python_script.h"
 
 namespace ochre {
@@ -27,10 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-
-std::string number(double x) {
-  return fmt::format("{:.9g}", x);
-}
 
 // Direction at polar angle theta and azimuth phi (degrees) in the local frame.
 Vec3 direction_deg(double theta_deg, double phi_deg) {
@@ -72,7 +69,7 @@ std::string plot_table(MaterialProbe& probe, const PlotArgs& args) {
     for (int theta = 0; theta <= 89; ++theta)
       for (int phi = 0; phi <= 360; phi += 5) {
         const double f = closure.eval(direction_deg(theta, phi), wi, probe.wavelengths())[0];
-        csv += fmt::format("{},{},{},{}\n", number(incidence), theta, phi, number(f));
+        csv += fmt::format("{},{},{},{}\n", table_number(incidence), theta, phi, table_number(f));
       }
   }
   return csv;
@@ -97,7 +94,7 @@ int run_eval(const EvalArgs& args) {
       throw InputError(fmt::format("{}: line {}: column lambda_nm: {}", args.input, row.line, e.what()));
     }
     for (const std::string& field : row.fields) csv += field + ",";
-    csv += number(f) + "\n";
+    csv += table_number(f) + "\n";
   }
   write_output(args.output, csv, inputs);
   return 0;
@@ -115,8 +112,9 @@ int run_albedo(const AlbedoArgs& args) {
   for (double theta : args.angles_deg) {
     const AlbedoEstimate a =
         directional_albedo(closure, direction_deg(theta, 0.0), probe.wavelengths(), args.samples, args.seed);
-    csv += fmt::format("{},{},{},{},{},{}\n", number(theta), number(args.lambda_nm), number(a.monte_carlo),
-                       number(a.monte_carlo_se), number(a.quadrature), number(a.quadrature_error));
+    csv += fmt::format("{},{},{},{},{},{}\n", table_number(theta), table_number(args.lambda_nm),
+                       table_number(a.monte_carlo), table_number(a.monte_carlo_se),
+                       table_number(a.quadrature), table_number(a.quadrature_error));
   }
   write_output(args.output, csv, inputs);
   return 0;
@@ -140,7 +138,7 @@ int run_plot(const PlotArgs& args) {
   AtomicOutput values_only(args.output + ".values.csv");  // never committed: removed when done
   AtomicOutput& values = args.csv.empty() ? values_only : transaction.add(args.csv);
   write_text_file(values, csv);
-  const std::string title = fmt::format("{} ({} nm)", probe.name(), number(args.lambda_nm));
+  const std::string title = fmt::format("{} ({} nm)", probe.name(), table_number(args.lambda_nm));
   const fs::path script = tool_script("plot_brdf.py");
   if (!run_python(script, {values.temp_path().string(), png.temp_path().string(), title})) {
     std::cerr << fmt::format("ochre-brdf: error: plot {} not written ({} failed; is matplotlib installed?)\n",
@@ -172,10 +170,10 @@ int run_chi2(const Chi2Args& args) {
     const bool pass = r.p_value > significance && r.weight_mismatches == 0 && r.pdf_mismatches == 0 &&
                       r.samples_in_empty_cells == 0;
     all_pass = all_pass && pass;
-    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", number(args.incidence_deg[i]),
-                       number(r.statistic), r.degrees_of_freedom, number(r.p_value), number(significance),
-                       r.samples_histogrammed, r.samples_failed, r.samples_delta, r.samples_in_empty_cells,
-                       r.weight_mismatches, r.pdf_mismatches, pass ? "yes" : "no");
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", table_number(args.incidence_deg[i]),
+                       table_number(r.statistic), r.degrees_of_freedom, table_number(r.p_value),
+                       table_number(significance), r.samples_histogrammed, r.samples_failed, r.samples_delta,
+                       r.samples_in_empty_cells, r.weight_mismatches, r.pdf_mismatches, pass ? "yes" : "no");
   }
   write_output(args.output, csv, inputs);
   std::cerr << fmt::format("ochre-brdf chi2: {}: {}\n", probe.name(), all_pass ? "PASS" : "FAIL");

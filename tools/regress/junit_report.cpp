@@ -78,7 +78,7 @@ void XMLCALL end_element(void* data, const XML_Char* name) {
   if (std::strcmp(name, "testcase") == 0) parse.open_testcase = nullptr;
 }
 
-std::string format_seconds(double seconds) {
+std::string junit_seconds(double seconds) {
   return fmt::format("{:.3f}", seconds);
 }
 
@@ -137,12 +137,12 @@ std::string junit_xml(const RunRecord& run) {
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   xml +=
       fmt::format("<testsuite name=\"ochre-regress\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{}\"",
-                  run.scenes.size(), failures, format_seconds(total));
+                  run.scenes.size(), failures, junit_seconds(total));
   if (!run.timestamp.empty()) xml += fmt::format(" timestamp=\"{}\"", xml_escape(run.timestamp));
   xml += ">\n";
   for (const SceneRecord& scene : run.scenes) {
     xml += fmt::format("  <testcase classname=\"ochre-regress\" name=\"{}\"", xml_escape(scene.name));
-    if (scene.seconds) xml += fmt::format(" time=\"{}\"", format_seconds(*scene.seconds));
+    if (scene.seconds) xml += fmt::format(" time=\"{}\"", junit_seconds(*scene.seconds));
     if (scene.passed && !scene.skipped) {
       xml += "/>\n";
     } else if (scene.skipped) {

@@ -7,8 +7,10 @@
 #include <map>
 #include <numbers>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "renderer/input_error.h"
+#include "tools/csv_columns.h"
 #include "tools/vgroove/vgroove_inputs.h"
 #include "tools/vgroove/vgroove_material.h"
 #include "tools/vgroove/vgroove_spectral.h"
@@ -18,12 +20,6 @@
 namespace ochre {
 
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-std::string number(double x) {
-  return fmt::format("{:.9g}", x);
-}
 
 void check_quadrature(const char* option, int n) {
   if (n < 2 || n > 1024) throw InputError(fmt::format("{}: {} points is outside [2, 1024]", option, n));
@@ -49,7 +45,7 @@ TextTable tables_csv(const std::vector<TableValue>& values) {
   TextTable t{{"table", "row", "alpha_deg", "ours", "printed", "difference"}, {}};
   for (const TableValue& v : values) {
     const int d = printed_decimals(v.table);
-    t.rows.push_back({std::to_string(v.table), v.row, number(v.alpha_deg),
+    t.rows.push_back({std::to_string(v.table), v.row, table_number(v.alpha_deg),
                       fmt::format("{:.{}f}", v.ours, d + 1), fmt::format("{:.{}f}", v.printed, d),
                       fmt::format("{:+.{}f}", v.ours - v.printed, d + 1)});
   }
@@ -68,7 +64,7 @@ std::string tables_text(int table, const std::string& title, const std::vector<T
     cells[{v.row, v.alpha_deg}] = &v;
   }
   TextTable t{{"", ""}, {}};
-  for (double a : alphas) t.header.push_back(number(a));
+  for (double a : alphas) t.header.push_back(table_number(a));
   const int d = printed_decimals(table);
   for (const std::string& row : rows) {
     std::vector<std::string> ours{row, "ours"}, printed{"", "printed"}, difference{"", "difference"};
@@ -101,11 +97,11 @@ int run_bihemispherical(const BihemisphericalArgs& args) {
   TextTable t{{"material", "alpha_deg", "model", "wavelength_nm", "R"}, {}};
   for (double alpha : alphas)
     for (ChainModel model : models) {
-      const std::vector<double> r = bihemispherical_reflectance(VGroove(alpha * kDeg), model, facets,
+      const std::vector<double> r = bihemispherical_reflectance(VGroove(alpha * kDegD), model, facets,
                                                                 args.max_reflections, args.quadrature);
       for (size_t i = 0; i < wavelengths.size(); ++i)
-        t.rows.push_back({material.label(), number(alpha), std::string(model_name(model)),
-                          number(wavelengths[i]), fmt::format("{:.6f}", r[i])});
+        t.rows.push_back({material.label(), table_number(alpha), std::string(model_name(model)),
+                          table_number(wavelengths[i]), fmt::format("{:.6f}", r[i])});
     }
   print(t, args.csv);
   return 0;
@@ -123,14 +119,14 @@ int run_directional(const DirectionalArgs& args) {
   const std::vector<ChainModel> models = parse_models("--model", args.model);
   if (models.size() != 1) throw InputError(fmt::format("--model: give one model, not '{}'", args.model));
   check_reflection_limit("--max-reflections", args.max_reflections);
-  const VGroove groove(alpha * kDeg);
+  const VGroove groove(alpha * kDegD);
   const std::vector<FacetIndex> facets{material.at(wavelength)};
   TextTable t{{"theta_deg", "phi_deg", "R", "max_reflections"}, {}};
   for (double theta : thetas)
     for (double phi : phis) {
       const DirectionalReflectance r = directional_reflectance(
-          groove, groove_direction(theta * kDeg, phi * kDeg), models[0], facets, args.max_reflections);
-      t.rows.push_back({number(theta), number(phi), fmt::format("{:.6f}", r.reflectance[0]),
+          groove, groove_direction(theta * kDegD, phi * kDegD), models[0], facets, args.max_reflections);
+      t.rows.push_back({table_number(theta), table_number(phi), fmt::format("{:.6f}", r.reflectance[0]),
                         std::to_string(r.max_reflections)});
     }
   print(t, args.csv);

@@ -15,11 +15,13 @@
 #include <numbers>
 #include <optional>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
 #include "renderer/render.h"
 #include "renderer/scene_loader.h"
+#include "tools/csv_columns.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_compare_scene.h"
 #include "tools/vgroove/vgroove_inputs.h"
@@ -33,7 +35,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 // The facets' index is each material's at this wavelength, used at every wavelength: a spectrally flat
 // surface, whose image relative to the environment's is R exactly whatever wavelengths are sampled.
 constexpr double kWavelength = 550.0;
@@ -89,18 +90,14 @@ struct Row {
   Estimate estimates[3];  // in kSurfaces order
 };
 
-std::string number(double x) {
-  return fmt::format("{:.9g}", x);
-}
-
 // Seven significant digits: a glass groove at normal incidence reflects 1e-6.
 std::string reflectance(double r) {
   return fmt::format("{:.7g}", r);
 }
 
 std::vector<std::string> row_fields(const Row& r) {
-  std::vector<std::string> fields{r.material, number(r.alpha_deg), number(r.theta_deg), number(r.phi_deg),
-                                  reflectance(r.exact)};
+  std::vector<std::string> fields{r.material, table_number(r.alpha_deg), table_number(r.theta_deg),
+                                  table_number(r.phi_deg), reflectance(r.exact)};
   for (const Estimate& e : r.estimates) {
     fields.push_back(reflectance(e.value));
     fields.push_back(fmt::format("{:.3e}", e.standard_error));
@@ -143,8 +140,8 @@ std::string summary(const std::vector<Row>& rows) {
     }
     text += fmt::format(
         "  {:<12} max |diff|/SE {:6.2f} ({} alpha {} theta {} phi {}), max |diff| {:.2e}, {:.2f} s\n",
-        kSurfaces[s].name, worst, where->material, number(where->alpha_deg), number(where->theta_deg),
-        number(where->phi_deg), worst_diff, seconds[s]);
+        kSurfaces[s].name, worst, where->material, table_number(where->alpha_deg),
+        table_number(where->theta_deg), table_number(where->phi_deg), worst_diff, seconds[s]);
   }
   double ratio_sum = 0;
   for (const Row& r : rows) ratio_sum += r.estimates[0].seconds / r.estimates[1].seconds;
@@ -237,18 +234,19 @@ int run_compare(const CompareArgs& args) {
           view.theta_deg = theta;
           view.phi_deg = phi;
           const std::vector<FacetIndex> facets{view.facet};
-          Row row{material.label(),
-                  alpha,
-                  theta,
-                  phi,
-                  directional_reflectance(VGroove(alpha * kDeg), groove_direction(theta * kDeg, phi * kDeg),
-                                          ChainModel::kRigorous, facets)
-                      .reflectance[0],
-                  {}};
+          Row row{
+              material.label(),
+              alpha,
+              theta,
+              phi,
+              directional_reflectance(VGroove(alpha * kDegD), groove_direction(theta * kDegD, phi * kDegD),
+                                      ChainModel::kRigorous, facets)
+                  .reflectance[0],
+              {}};
           for (size_t s = 0; s < 3; ++s) {
             const std::string name =
-                fmt::format("{}_alpha{}_theta{}_phi{}_{}", material.label(), number(alpha), number(theta),
-                            number(phi), kSurfaces[s].name);
+                fmt::format("{}_alpha{}_theta{}_phi{}_{}", material.label(), table_number(alpha),
+                            table_number(theta), table_number(phi), kSurfaces[s].name);
             const fs::path file = write_scene(dir, name, compare_scene_json(kSurfaces[s].kind, view));
             row.estimates[s] = relative_to_environment(render_scene_file(file), environment_mean);
           }

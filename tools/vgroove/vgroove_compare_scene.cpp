@@ -6,26 +6,27 @@
 #include <cmath>
 #include <numbers>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 
 namespace ochre {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kFrame = 1.0;            // the orthographic camera's size: the frame is 1 x 1
 constexpr double kCameraDistance = 10.0;  // from the target (any distance outside the grooves will do)
 
-std::string number(double x) {
+// 17 significant digits: a double reads back exactly.
+std::string exact_text(double x) {
   return fmt::format("{:.17g}", x);
 }
 
 std::string json(const Vec3d& v) {
-  return fmt::format("[{}, {}, {}]", number(v.x), number(v.y), number(v.z));
+  return fmt::format("[{}, {}, {}]", exact_text(v.x), exact_text(v.y), exact_text(v.z));
 }
 
 Vec3d view_direction(const CompareView& v) {
-  return groove_direction(v.theta_deg * kDeg, v.phi_deg * kDeg);
+  return groove_direction(v.theta_deg * kDegD, v.phi_deg * kDegD);
 }
 
 // Straight down, the world's z cannot be the image's up.
@@ -60,7 +61,7 @@ double groove_pitch(const CompareView& v) {
 }
 
 double groove_depth(double pitch, double alpha_deg) {
-  return 0.5 * pitch / std::tan(0.5 * alpha_deg * kDeg);
+  return 0.5 * pitch / std::tan(0.5 * alpha_deg * kDegD);
 }
 
 // The plate's extent, centred on the target: the frame's footprint, plus room for a ray to run along a
@@ -84,7 +85,7 @@ PlateSize plate_size(const CompareView& v, double pitch) {
 
 std::string facet_fields(const FacetIndex& f) {
   return f.mirror ? R"("metal": "mirror")"
-                  : fmt::format(R"("eta": {}, "k": {})", number(f.eta.real()), number(-f.eta.imag()));
+                  : fmt::format(R"("eta": {}, "k": {})", exact_text(f.eta.real()), exact_text(-f.eta.imag()));
 }
 
 std::string material_json(GrooveSurface surface, const CompareView& v) {
@@ -93,11 +94,11 @@ std::string material_json(GrooveSurface surface, const CompareView& v) {
       return v.facet.mirror ? R"({"type": "vgroove", "alpha": 180, "metal": "mirror"})"
                             : fmt::format(R"({{"type": "conductor", {}}})", facet_fields(v.facet));
     case GrooveSurface::kAnalytic:
-      return fmt::format(R"({{"type": "vgroove", "alpha": {}, {}}})", number(v.alpha_deg),
+      return fmt::format(R"({{"type": "vgroove", "alpha": {}, {}}})", exact_text(v.alpha_deg),
                          facet_fields(v.facet));
     case GrooveSurface::kMicrogroove:
-      return fmt::format(R"({{"type": "microgroove", "profile": "v", "alpha": {}, {}}})", number(v.alpha_deg),
-                         facet_fields(v.facet));
+      return fmt::format(R"({{"type": "microgroove", "profile": "v", "alpha": {}, {}}})",
+                         exact_text(v.alpha_deg), facet_fields(v.facet));
   }
   return {};
 }
@@ -106,14 +107,14 @@ std::string shape_json(GrooveSurface surface, const CompareView& v) {
   const double pitch = groove_pitch(v);
   const PlateSize size = plate_size(v, pitch);
   if (surface != GrooveSurface::kExplicit)  // the plane's size is [x, y]
-    return fmt::format(R"({{"type": "plane", "size": [{}, {}], "material": "surface"}})", number(size.along),
-                       number(size.across));
+    return fmt::format(R"({{"type": "plane", "size": [{}, {}], "material": "surface"}})",
+                       exact_text(size.along), exact_text(size.across));
   // One plate; its facets are cut into tiles 8 pitches long (the shape's default), which keeps the
   // ray-spawning bias of long facets small (docs/materials/vgroove.md).
   const int count = static_cast<int>(std::ceil(size.across / pitch));
   return fmt::format(
       R"({{"type": "groove_plate", "alpha": {}, "pitch": {}, "count": {}, "length": {}, "material": "surface"}})",
-      number(v.alpha_deg), number(pitch), count, number(size.along));
+      exact_text(v.alpha_deg), exact_text(pitch), count, exact_text(size.along));
 }
 
 std::string settings_json(const CompareView& v, int max_depth) {
@@ -139,7 +140,7 @@ std::string compare_scene_json(GrooveSurface surface, const CompareView& v) {
   {}]
 }}
 )",
-                     number(kFrame), json(eye), json(camera_up(v)),
+                     exact_text(kFrame), json(eye), json(camera_up(v)),
                      settings_json(v, compare_max_depth(v.alpha_deg)), material_json(surface, v),
                      shape_json(surface, v));
 }
@@ -153,7 +154,7 @@ std::string environment_scene_json(const CompareView& v) {
   "shapes": []
 }}
 )",
-                     number(kFrame), settings_json(v, compare_max_depth(v.alpha_deg)));
+                     exact_text(kFrame), settings_json(v, compare_max_depth(v.alpha_deg)));
 }
 
 }  // namespace ochre

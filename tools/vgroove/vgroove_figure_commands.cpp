@@ -11,6 +11,7 @@
 #include "renderer/output_files.h"
 #include "renderer/output_transaction.h"
 #include "renderer/signal_cleanup.h"
+#include "tools/csv_columns.h"
 #include "tools/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_inputs.h"
@@ -27,10 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string number(double x) {
-  return fmt::format("{:.9g}", x);
-}
-
 double single_alpha(const std::string& text) {
   const std::vector<double> alphas = parse_number_list("--alpha", text);
   if (alphas.size() != 1) throw InputError(fmt::format("--alpha: give one dihedral angle, not '{}'", text));
@@ -45,7 +42,7 @@ struct Panel {
 };
 
 std::string panel_title(const Panel& p) {
-  return fmt::format("{}, alpha {} deg, {} model", p.material->label(), number(p.alpha_deg),
+  return fmt::format("{}, alpha {} deg, {} model", p.material->label(), table_number(p.alpha_deg),
                      model_name(p.model));
 }
 
@@ -67,7 +64,7 @@ int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
     const fs::path counts = scratch.path() / fmt::format("counts_{}.png", i);
     write_map_png(colour, args.size, maps.colour, panel_title(p));
     write_map_png(counts, args.size, maps.counts, panel_title(p) + ": reflection counts");
-    manifest.rows.push_back({p.material->label(), number(p.alpha_deg), std::string(model_name(p.model)),
+    manifest.rows.push_back({p.material->label(), table_number(p.alpha_deg), std::string(model_name(p.model)),
                              colour.string(), counts.string()});
   }
   const fs::path manifest_path = scratch.path() / "panels.csv";
@@ -126,7 +123,7 @@ int run_profile(const ProfileArgs& args) {
 
   TextTable csv{{"phi_deg", "theta_deg", "model", "L"}, {}};
   for (const ProfilePoint& p : lightness_profiles(material, alpha, models, args.step))
-    csv.rows.push_back({number(p.phi_deg), number(p.theta_deg), std::string(model_name(p.model)),
+    csv.rows.push_back({table_number(p.phi_deg), table_number(p.theta_deg), std::string(model_name(p.model)),
                         fmt::format("{:.4f}", p.lightness)});
   // The CSV and the plot are written together: when the plot fails, neither is.
   OutputTransaction outputs;
@@ -134,7 +131,7 @@ int run_profile(const ProfileArgs& args) {
   write_text_file(csv_output, csv.csv());
   if (!args.png.empty()) {
     const fs::path script = tool_script("plot_vgroove.py");
-    const std::string title = fmt::format("{}, alpha = {} deg", material.label(), number(alpha));
+    const std::string title = fmt::format("{}, alpha = {} deg", material.label(), table_number(alpha));
     if (!run_python(script, {"profile", csv_output.temp_path().string(),
                              outputs.add(args.png).temp_path().string(), title})) {
       std::cerr << fmt::format(
