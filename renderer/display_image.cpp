@@ -48,15 +48,20 @@ std::vector<std::uint8_t> quantize(const std::vector<float>& encoded) {
 }
 
 const char* format_for_extension(const std::filesystem::path& path) {
-  const std::string extension = lower_extension(path);
-  if (extension == ".png") return "png";
-  if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
+  if (const char* format = display_image_format(path)) return format;
   throw ImageError(
       fmt::format("cannot write {}: unknown display image extension '{}' (expected .png, .jpg or .jpeg)",
-                  path.string(), extension));
+                  path.string(), lower_extension(path)));
 }
 
 }  // namespace
+
+const char* display_image_format(const std::filesystem::path& path) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".png") return "png";
+  if (extension == ".jpg" || extension == ".jpeg") return "jpeg";
+  return nullptr;
+}
 
 void write_rgb8(const std::filesystem::path& path, const char* format, int width, int height,
                 const std::vector<std::uint8_t>& pixels, const std::string& description) {

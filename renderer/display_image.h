@@ -58,6 +58,10 @@ DisplayTransformReport write_display_png(const std::filesystem::path& path, int 
 DisplayTransformReport write_display_png(AtomicOutput& output, int width, int height,
                                          const std::vector<float>& rgb, const DisplayOptions& options);
 
+// The display image format a path's extension names (case-insensitive): "png" for .png, "jpeg" for .jpg and
+// .jpeg; nullptr for any other.
+const char* display_image_format(const std::filesystem::path& path);
+
 // Writes a PNG or a JPEG (quality 95) chosen by the extension (.png, .jpg, .jpeg); throws ImageError
 // for any other extension.
 DisplayTransformReport write_display_image(const std::filesystem::path& path, int width, int height,

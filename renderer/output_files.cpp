@@ -5,8 +5,8 @@
 
 #include <optional>
 
-#include "renderer/ascii_case.h"
 #include "renderer/atomic_file.h"
+#include "renderer/display_image.h"
 #include "renderer/image_error.h"
 #include "renderer/image_library.h"
 #include "renderer/input_error.h"
@@ -38,11 +38,6 @@ struct Output {
   std::optional<FileIdentity> identity;
 };
 
-bool is_display_image(const fs::path& path) {
-  const std::string extension = lower_extension(path);
-  return extension == ".png" || extension == ".jpg" || extension == ".jpeg";
-}
-
 bool same_file(const Output& output, const fs::path& other_resolved, std::optional<FileIdentity> other) {
   return output.resolved == other_resolved || (output.identity && other && *output.identity == *other);
 }
@@ -72,7 +67,7 @@ void check_output_files(const std::vector<fs::path>& outputs, const InputFileLog
   // Display images are written through the image library module: load it now, so that a broken
   // installation stops the command before any work, not after the render.
   for (const fs::path& path : outputs)
-    if (is_display_image(path)) (void)image_library();
+    if (display_image_format(path)) (void)image_library();
 }
 
 }  // namespace ochre
