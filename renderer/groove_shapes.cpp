@@ -5,11 +5,11 @@
 #include <numbers>
 #include <vector>
 
+#include "materials/core/pi.h"
+
 namespace ochre {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Two counter-clockwise triangles over the quad a, b, c, d (in that order around it).
 void add_quad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
@@ -18,7 +18,7 @@ void add_quad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
 
 // The depth of a V-groove of the given width and dihedral angle.
 double groove_depth(double pitch, double alpha_degrees) {
-  return 0.5 * pitch / std::tan(0.5 * alpha_degrees * kDegree);
+  return 0.5 * pitch / std::tan(0.5 * alpha_degrees * kDegD);
 }
 
 }  // namespace

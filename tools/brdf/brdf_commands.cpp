@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <numbers>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/sampling_check.h"
 #include "renderer/atomic_file.h"
 #include "renderer/input_error.h"
@@ -27,11 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kDegree = std::numbers::pi / 180.0;
-
 // Direction at polar angle theta and azimuth phi (degrees) in the local frame.
 Vec3 direction_deg(double theta_deg, double phi_deg) {
-  const double t = theta_deg * kDegree, p = phi_deg * kDegree;
+  const double t = theta_deg * kDegD, p = phi_deg * kDegD;
   return {static_cast<float>(std::sin(t) * std::cos(p)), static_cast<float>(std::sin(t) * std::sin(p)),
           static_cast<float>(std::cos(t))};
 }

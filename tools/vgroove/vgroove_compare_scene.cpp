@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"

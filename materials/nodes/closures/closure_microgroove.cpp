@@ -4,9 +4,9 @@
 // microgroove_lobe.h). The groove axis: groove_closure.h.
 
 #include <memory>
-#include <numbers>
 #include <string>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/microgroove_lobe.h"
 #include "materials/nodes/closures/groove_closure.h"
 #include "materials/nodes/definition_builders.h"
@@ -15,7 +15,6 @@ namespace ochre {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr GrooveInputs kMicrogrooveInputs{0, 1, 2, 3};
 
 struct MicrogrooveSettings {
@@ -25,7 +24,7 @@ struct MicrogrooveSettings {
 };
 
 double degrees_param(const PrepareArgs& args, const char* name, double fallback) {
-  return (args.params.contains(name) ? args.params.at(name).get<double>() : fallback) * kDegree;
+  return (args.params.contains(name) ? args.params.at(name).get<double>() : fallback) * kDegD;
 }
 
 Prepared prepare_microgroove(const PrepareArgs& args) {

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <memory>
-#include <numbers>
 
+#include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_lobe.h"
 #include "materials/nodes/closures/groove_closure.h"
 #include "materials/nodes/definition_builders.h"
@@ -29,8 +29,8 @@ void emit_vgroove(const NodeArgs& a) {
   const GrooveFacetSettings& s = a.data<GrooveFacetSettings>();
   const Vec3 axis = groove_local_axis(a, s, kVGrooveInputs);
   const float alpha_degrees = std::clamp(a.in_float(0), kMinAlphaDegrees, 180.0f);
-  a.add_lobe(a.arena.make<VGrooveLobe>(alpha_degrees * (std::numbers::pi / 180.0), axis,
-                                       groove_facet(a, s, kVGrooveInputs), s.model, s.reflection_limit),
+  a.add_lobe(a.arena.make<VGrooveLobe>(alpha_degrees * kDegD, axis, groove_facet(a, s, kVGrooveInputs),
+                                       s.model, s.reflection_limit),
              w);
 }
 
