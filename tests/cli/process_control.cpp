@@ -17,6 +17,10 @@ pid_t start_tool(const std::filesystem::path& dir, const std::string& tool, cons
   const std::string command = "exec '" + (bin_dir() / tool).string() + "' " + args + " >/dev/null 2>&1";
   const pid_t pid = ::fork();
   if (pid == 0) {
+    // A shell running the suite as a background job (or under nohup) ignores SIGINT / SIGHUP, and an
+    // ignored disposition survives exec: the tool would then rightly leave them ignored, and the tests that
+    // signal it would see it finish instead. The tool starts here as from an interactive shell.
+    for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::signal(signal_number, SIG_DFL);
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
     ::setenv("OCHRE_PROGRESS", "none", 1);
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
