@@ -16,12 +16,11 @@ void add_quad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   mesh.indices.insert(mesh.indices.end(), {a, b, c, a, c, d});
 }
 
-// The depth of a V-groove of the given width and dihedral angle.
+}  // namespace
+
 double groove_depth(double pitch, double alpha_degrees) {
   return 0.5 * pitch / std::tan(0.5 * alpha_degrees * kDegD);
 }
-
-}  // namespace
 
 double groove_plate_tiles(const GroovePlate& plate) {
   if (plate.tile_pitches <= 0) return 1.0;

@@ -13,6 +13,9 @@
 
 namespace ochre {
 
+// The depth of a V-groove of the given width and dihedral angle: (pitch / 2) / tan(alpha / 2).
+double groove_depth(double pitch, double alpha_degrees);
+
 struct GroovePlate {
   float alpha_degrees = 90;  // dihedral angle, (0, 180)
   float pitch = 1;           // groove width across

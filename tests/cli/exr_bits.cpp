@@ -28,4 +28,12 @@ namespace ochre::test {
   return ::testing::AssertionSuccess() << x.channels.size() << " channels identical";
 }
 
+bool same_rgb_values(const ExrImage& a, const ExrImage& b) {
+  for (const char* c : {"R", "G", "B"}) {
+    const std::vector<float>*x = a.find_channel(c), *y = b.find_channel(c);
+    if (!x || !y || *x != *y) return false;
+  }
+  return true;
+}
+
 }  // namespace ochre::test

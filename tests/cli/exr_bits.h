@@ -1,15 +1,22 @@
 #pragma once
-// Bit-for-bit comparison of two EXR files' pixels (every channel, float bits compared with memcmp so that
-// -0 and +0 or two NaNs are told apart), for the split, merge and checkpoint tests.
+// Comparing rendered images: two EXR files' pixels bit for bit (every channel, float bits compared with
+// memcmp so that -0 and +0 or two NaNs are told apart), for the split, merge and checkpoint tests; two
+// images' R, G, B values, for the determinism and frame-sequence tests.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+
+#include "renderer/exr_writer.h"
 
 namespace ochre::test {
 
 // Success when both files have the same channels, size and pixel bits; the failure names the first
 // channel and pixel that differ.
 ::testing::AssertionResult same_exr_pixels(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// True when two images read back have equal R, G and B values (compared as floats), false when a value
+// differs or an image lacks one of them.
+bool same_rgb_values(const ExrImage& a, const ExrImage& b);
 
 }  // namespace ochre::test

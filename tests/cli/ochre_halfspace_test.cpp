@@ -9,23 +9,17 @@
 
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test::ochre_halfspace_test {
 namespace {
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(OchreHalfspace, WritesTheGridWithItsCommand) {
   const auto dir = scratch_dir();
   const std::string args = "--c 0.5,0.9 --mu 0.3,1 --phi 0,90,180 --paths 3000 --seed 4";
   CommandResult r = run_tool("ochre-halfspace", args + " --output one.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string text = read_file(dir / "one.csv");
+  const std::string text = read_file_contents(dir / "one.csv");
   EXPECT_NE(
       text.find("# regenerate (from the repository root, after building): build/bin/ochre-halfspace " + args),
       std::string::npos)
@@ -46,7 +40,7 @@ TEST(OchreHalfspace, WritesTheGridWithItsCommand) {
   EXPECT_EQ(rows, 2 * 2 * 2 * 3);
   r = run_tool("ochre-halfspace", args + " --threads 2 --output two.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string two = read_file(dir / "two.csv");
+  const std::string two = read_file_contents(dir / "two.csv");
   EXPECT_EQ(text.substr(text.find("\n# c=")), two.substr(two.find("\n# c=")))
       << "the numbers do not depend on the thread count";
 }

@@ -45,7 +45,7 @@ void copy_suite_scene(const std::string& name, const fs::path& suite) {
 fs::path perturbed_suite(const fs::path& dir) {
   const fs::path suite = dir / "suite";
   copy_suite_scene("lambert_environment", suite);
-  std::string scene = read_text_file(suite / "lambert_environment.json");
+  std::string scene = read_file_contents(suite / "lambert_environment.json");
   const std::string from = "\"color\": 0.5";
   const size_t at = scene.find(from);
   EXPECT_NE(at, std::string::npos);

@@ -23,6 +23,7 @@
 #include "cli/cli_runner.h"
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test::test_ochre_fit {
 namespace {
@@ -42,11 +43,6 @@ std::string truth_params() {
   return items;
 }
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // Runs ochre-fit with progress lines on (OCHRE_PROGRESS=plain; run_tool turns them off): stdout and stderr
 // apart.
 struct SplitResult {
@@ -57,7 +53,7 @@ SplitResult run_fit_with_progress(const std::string& args, const fs::path& dir) 
   const std::string command = fmt::format("cd '{}' && OCHRE_PROGRESS=plain '{}' {} 2> stderr.txt",
                                           dir.string(), (bin_dir() / kTool).string(), args);
   const CommandResult r = run_shell(command);
-  return {r.exit_code, r.output, read_file(dir / "stderr.txt")};
+  return {r.exit_code, r.output, read_file_contents(dir / "stderr.txt")};
 }
 
 struct Estimate {
@@ -121,8 +117,8 @@ TEST(OchreFit, RecoversKnownParametersFromOnePercentNoiseWithinTheirReportedUnce
       << r.err;
   // The outputs: the material, a PNG, a row per measurement.
   EXPECT_TRUE(fs::exists(dir / "fit.json"));
-  EXPECT_EQ(read_file(dir / "fit.png").substr(1, 3), "PNG");
-  std::istringstream table(read_file(dir / "fit.csv"));
+  EXPECT_EQ(read_file_contents(dir / "fit.png").substr(1, 3), "PNG");
+  std::istringstream table(read_file_contents(dir / "fit.csv"));
   std::string header;
   std::getline(table, header);
   EXPECT_EQ(header, "theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf,fit,residual,used");
@@ -143,7 +139,7 @@ TEST(OchreFit, RecoversNoiseFreeDataFromAStartAwayFromTheTruthTightly) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "local runs (from --start")) << r.output;
   const nlohmann::json material =
-      nlohmann::json::parse(read_file(dir / "fit.json"))["materials"]["powder_fit"];
+      nlohmann::json::parse(read_file_contents(dir / "fit.json"))["materials"]["powder_fit"];
   for (size_t p = 0; p < kParams.size(); ++p)
     EXPECT_NEAR(material[kParams[p]].get<double>(), kTruth[p], 1e-6 * kTruth[p]) << kParams[p] << "\n"
                                                                                  << r.output;
@@ -160,7 +156,7 @@ TEST(OchreFit, WrittenMaterialRendersAndHoldsTheFittedParameters) {
       kTool, fmt::format("powder --data data.csv {} -o fit.json --csv fit.csv", kFixNonlinear), dir, true);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::map<std::string, Estimate> printed = parse_summary(r.output);
-  const nlohmann::json scene = nlohmann::json::parse(read_file(dir / "fit.json"));
+  const nlohmann::json scene = nlohmann::json::parse(read_file_contents(dir / "fit.json"));
   const nlohmann::json& material = scene["materials"]["powder_fit"];
   EXPECT_EQ(material["type"], "powder");
   EXPECT_EQ(material["pigment"], "hematite");
@@ -177,7 +173,7 @@ TEST(OchreFit, WrittenMaterialRendersAndHoldsTheFittedParameters) {
 
   // The renderer's closure is the fitted BRDF: ochre-brdf evaluates the file at the measurements' geometry
   // to the fit (the renderer interpolates the grains' albedo from a table, within 2e-4).
-  std::istringstream fitted(read_file(dir / "fit.csv"));
+  std::istringstream fitted(read_file_contents(dir / "fit.csv"));
   std::string line;
   std::getline(fitted, line);
   std::string pairs = "wi_x,wi_y,wi_z,wo_x,wo_y,wo_z,lambda_nm\n";
@@ -199,7 +195,7 @@ TEST(OchreFit, WrittenMaterialRendersAndHoldsTheFittedParameters) {
   const CommandResult eval =
       run_tool("ochre-brdf", "eval --material fit.json --input pairs.csv --output values.csv", dir);
   ASSERT_EQ(eval.exit_code, 0) << eval.output;
-  std::istringstream values(read_file(dir / "values.csv"));
+  std::istringstream values(read_file_contents(dir / "values.csv"));
   std::getline(values, line);
   for (double want : expected) {
     ASSERT_TRUE(std::getline(values, line));
@@ -218,7 +214,7 @@ TEST(OchreFit, PigmentFileIsWrittenRelativeToTheMaterial) {
       kTool, fmt::format("powder --data data.csv --pigment-file nk.csv {} -o out/fit.json -q", kFixNonlinear),
       dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const nlohmann::json scene = nlohmann::json::parse(read_file(dir / "out/fit.json"));
+  const nlohmann::json scene = nlohmann::json::parse(read_file_contents(dir / "out/fit.json"));
   EXPECT_EQ(scene["materials"]["powder_fit"]["pigment_file"], "../nk.csv");
   EXPECT_FALSE(scene["materials"]["powder_fit"].contains("pigment"));
   const CommandResult render =
@@ -248,7 +244,7 @@ TEST(OchreFit, SynthesizeIsDeterministicPerSeed) {
     const CommandResult r = run_tool(kTool, "powder --synthesize " + out + " " + args, dir);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(r.output, "wrote 948 measurements to " + out + "\n");
-    return read_file(dir / out);
+    return read_file_contents(dir / out);
   };
   const std::string a = make("a.csv", "--seed 7"), b = make("b.csv", "--seed 7"),
                     c = make("c.csv", "--seed 8");
@@ -260,7 +256,7 @@ TEST(OchreFit, SynthesizeIsDeterministicPerSeed) {
              "brdf,lambda_nm,theta_i,phi_i,theta_o,phi_o\n1,500,10,0,30,180\n1,600,45,90,5,0\n");
   const CommandResult r = run_tool(kTool, "powder --synthesize d.csv --geometry mine.csv --noise 0", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string d = read_file(dir / "d.csv");
+  const std::string d = read_file_contents(dir / "d.csv");
   EXPECT_TRUE(contains(d, "\n10,0,30,180,500,")) << d;
   EXPECT_TRUE(contains(d, "\n45,90,5,0,600,")) << d;
 }

@@ -20,6 +20,7 @@
 #include "renderer/display_image.h"
 #include "spectra/cie.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test::test_ochre_vgroove {
 namespace {
@@ -54,11 +55,6 @@ Csv run_csv(const std::string& args, const std::filesystem::path& dir = {}) {
   const CommandResult r = run_tool(kTool, args, dir, /*stdout_only=*/true);
   EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.output;
   return parse_csv(r.output);
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 bool have_matplotlib() {
@@ -354,7 +350,7 @@ TEST(OchreVGroove, MapsGridFigureOfSeveralAnglesLeavesNoScratchFiles) {
       kTool, "maps --material glass,Au --alpha 60,180 --size 16 -o grid.png --counts grid_counts.png", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* name : {"grid.png", "grid_counts.png"}) {
-    const std::string png = read_file(dir / name);
+    const std::string png = read_file_contents(dir / name);
     ASSERT_GT(png.size(), 8u) << name;
     EXPECT_EQ(png.substr(1, 3), "PNG") << name;
   }
@@ -372,7 +368,7 @@ TEST(OchreVGroove, ProfileHasTheBrewsterDipAlongTheGroovesInTheRigorousModelOnly
   const auto dir = scratch_dir();
   const CommandResult r = run_tool(kTool, "profile --material Si --alpha 45 -o profile.csv", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Csv csv = parse_csv(read_file(dir / "profile.csv"));
+  const Csv csv = parse_csv(read_file_contents(dir / "profile.csv"));
   EXPECT_EQ(csv.header, "phi_deg,theta_deg,model,L");
   // theta = 0, 0.5, ..., 89.5 for phi = 0 and 90 and three models.
   ASSERT_EQ(csv.rows.size(), 2u * 3u * 180u);
@@ -401,8 +397,8 @@ TEST(OchreVGroove, ProfilePlot) {
   const CommandResult r = run_tool(
       kTool, "profile --material Si --alpha 45 --model rigorous,sp --step 5 -o p.csv --png p.png", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(parse_csv(read_file(dir / "p.csv")).rows.size(), 2u * 2u * 18u);
-  EXPECT_EQ(read_file(dir / "p.png").substr(1, 3), "PNG");
+  EXPECT_EQ(parse_csv(read_file_contents(dir / "p.csv")).rows.size(), 2u * 2u * 18u);
+  EXPECT_EQ(read_file_contents(dir / "p.png").substr(1, 3), "PNG");
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -495,14 +491,15 @@ TEST(OchreVGroove, CompareKeepsItsScenesInTheSceneDir) {
                        "Si_alpha40_theta20_phi10_analytic.json", "Si_alpha40_theta20_phi10_explicit.json",
                        "Si_alpha40_theta20_phi10_microgroove.json", "environment.json"}));
   // No Russian roulette, and room for the ceil(180 / 40) = 5 reflections.
-  const std::string plate = read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_explicit.json");
+  const std::string plate = read_file_contents(dir / "scenes" / "Si_alpha40_theta20_phi10_explicit.json");
   for (const char* expected :
        {R"("type": "groove_plate", "alpha": 40)", R"("max_depth": 7, "rr_depth": 7)",
         R"("type": "conductor", "eta": 4.07)", R"("resolution": [4, 4])", R"("spp": 2)"})
     EXPECT_NE(plate.find(expected), std::string::npos) << expected << "\n" << plate;
-  EXPECT_NE(read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_analytic.json").find(R"("type": "vgroove")"),
+  EXPECT_NE(read_file_contents(dir / "scenes" / "Si_alpha40_theta20_phi10_analytic.json")
+                .find(R"("type": "vgroove")"),
             std::string::npos);
-  EXPECT_NE(read_file(dir / "scenes" / "Si_alpha40_theta20_phi10_microgroove.json")
+  EXPECT_NE(read_file_contents(dir / "scenes" / "Si_alpha40_theta20_phi10_microgroove.json")
                 .find(R"("type": "microgroove")"),
             std::string::npos);
   // The kept scene renders with ochre itself.

@@ -92,7 +92,7 @@ TEST(OchreRegressHtml, ReportOfAFailingSuite) {
                            "scene-spot_light.html"})
     EXPECT_TRUE(fs::is_regular_file(report / file)) << file;
 
-  const std::string index = read_text_file(report / "index.html");
+  const std::string index = read_file_contents(report / "index.html");
   EXPECT_NE(index.find("1 of 2 scenes failed"), std::string::npos) << index;
   // Pass and fail as words, not only colours.
   const std::regex fail_row(
@@ -109,17 +109,17 @@ TEST(OchreRegressHtml, ReportOfAFailingSuite) {
   ASSERT_TRUE(
       std::regex_search(r.output, worst, std::regex(R"(worst p = \S+ at (x=\d+ y=\d+) \(z = (-?[\d.]+)\))")))
       << r.output;
-  const std::string page = read_text_file(report / "scene-lambert_environment.html");
+  const std::string page = read_file_contents(report / "scene-lambert_environment.html");
   EXPECT_NE(page.find(worst[1].str() + " (z = " + worst[2].str() + ")"), std::string::npos) << page;
   EXPECT_NE(page.find("<script src=\"scene-lambert_environment.data.js\"></script>"), std::string::npos);
 
   // Every file a page links to is in the report.
   for (const fs::path& file : report_files(report)) {
     if (file.extension() != ".html") continue;
-    for (const std::string& linked : linked_files(read_text_file(file)))
+    for (const std::string& linked : linked_files(read_file_contents(file)))
       EXPECT_TRUE(fs::is_regular_file(report / linked)) << file.filename() << " links to missing " << linked;
   }
-  const std::string junit = read_text_file(report / "junit.xml");
+  const std::string junit = read_file_contents(report / "junit.xml");
   EXPECT_NE(junit.find("tests=\"2\" failures=\"1\""), std::string::npos) << junit;
   EXPECT_TRUE(no_temporaries_beside(report));
 }
@@ -132,7 +132,7 @@ TEST(OchreRegressHtml, ReportHoldsNoExternalReference) {
   for (const fs::path& file : report_files(dir / "report")) {
     if (!has_extension(file, {".html", ".js", ".css"})) continue;
     ++scanned;
-    for (const std::string& reference : external_references(read_text_file(file)))
+    for (const std::string& reference : external_references(read_file_contents(file)))
       ADD_FAILURE() << file.filename() << ": external reference " << reference;
   }
   EXPECT_EQ(scanned, 7u);  // index.html, report.css, report.js, and a page and a data script per scene
@@ -147,7 +147,7 @@ TEST(OchreRegressHtml, HistoryFromEarlierReportsAndJUnitFiles) {
              "<testcase name=\"spot_light\" time=\"0.25\"><failure message=\"&lt;broken&gt;\"/></testcase>"
              "</testsuite></testsuites>\n");
   ASSERT_EQ(run_regress("suite --html first --history old.xml", dir).exit_code, 1);
-  const std::string first = read_text_file(dir / "first" / "index.html");
+  const std::string first = read_file_contents(dir / "first" / "index.html");
   EXPECT_NE(first.find("2024-01-02T03:04:05Z: PASS, 1.50 s"), std::string::npos) << first;
   EXPECT_NE(first.find("2024-01-02T03:04:05Z: FAIL, 0.25 s"), std::string::npos) << first;
   EXPECT_NE(first.find("this run: FAIL"), std::string::npos) << first;
@@ -155,29 +155,30 @@ TEST(OchreRegressHtml, HistoryFromEarlierReportsAndJUnitFiles) {
 
   // A report given as history brings its own history and its run.
   ASSERT_EQ(run_regress("suite --html second --history first", dir).exit_code, 1);
-  const std::string second = read_text_file(dir / "second" / "index.html");
+  const std::string second = read_file_contents(dir / "second" / "index.html");
   EXPECT_NE(second.find("2024-01-02T03:04:05Z: FAIL, 0.25 s"), std::string::npos) << second;
   EXPECT_TRUE(fs::exists(dir / "second" / "history-02.xml"));
   EXPECT_FALSE(fs::exists(dir / "second" / "history-03.xml"));
-  EXPECT_EQ(read_text_file(dir / "second" / "history-02.xml"), read_text_file(dir / "first" / "junit.xml"));
+  EXPECT_EQ(read_file_contents(dir / "second" / "history-02.xml"),
+            read_file_contents(dir / "first" / "junit.xml"));
   // A scene missing from an earlier run shows as not run.
   write_text(dir / "runs" / "a.xml", "<testsuite><testcase name=\"spot_light\" time=\"0.1\"/></testsuite>");
   ASSERT_EQ(run_regress("suite --html third --history runs", dir).exit_code, 1);
-  EXPECT_NE(read_text_file(dir / "third" / "index.html").find("run 1: not run"), std::string::npos);
+  EXPECT_NE(read_file_contents(dir / "third" / "index.html").find("run 1: not run"), std::string::npos);
 }
 
 TEST(OchreRegressHtml, ReplacesAnEarlierReportOnlyWhenComplete) {
   const auto dir = scratch_dir();
   failing_suite(dir);
   ASSERT_EQ(run_regress("suite --html report --scene spot_light", dir).exit_code, 0);
-  const std::string before = read_text_file(dir / "report" / "index.html");
+  const std::string before = read_file_contents(dir / "report" / "index.html");
   ASSERT_EQ(before.find("lambert_environment"), std::string::npos);
 
   // A run that ends in bad input (a scene without reference) leaves the earlier report as it was.
   fs::copy_file(suite_dir() / "mix_add_closures.json", dir / "suite" / "mix_add_closures.json");
   CommandResult r = run_regress("suite --html report", dir);
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_EQ(read_text_file(dir / "report" / "index.html"), before);
+  EXPECT_EQ(read_file_contents(dir / "report" / "index.html"), before);
   EXPECT_FALSE(fs::exists(dir / "report" / "scene-lambert_environment.html"));
   EXPECT_TRUE(no_temporaries_beside(dir / "report"));
 
@@ -186,7 +187,7 @@ TEST(OchreRegressHtml, ReplacesAnEarlierReportOnlyWhenComplete) {
   write_text(dir / "report" / "stale.txt", "from an earlier report");
   r = run_regress("suite --html report/", dir);
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(read_text_file(dir / "report" / "index.html").find("lambert_environment"), std::string::npos);
+  EXPECT_NE(read_file_contents(dir / "report" / "index.html").find("lambert_environment"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "report" / "stale.txt"));
   EXPECT_TRUE(no_temporaries_beside(dir / "report"));
 }
@@ -212,8 +213,8 @@ TEST_P(HtmlDestination, IsRefusedAndNothingIsTouched) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("scene "), std::string::npos) << "rendered before refusing: " << r.output;
-  EXPECT_EQ(read_text_file(dir / "notes" / "keep.txt"), "mine");
-  EXPECT_EQ(read_text_file(dir / "a-file"), "mine");
+  EXPECT_EQ(read_file_contents(dir / "notes" / "keep.txt"), "mine");
+  EXPECT_EQ(read_file_contents(dir / "a-file"), "mine");
   EXPECT_FALSE(fs::exists(dir / "regress-output"));
   EXPECT_TRUE(fs::is_empty(dir / "report"));
   EXPECT_TRUE(no_temporaries_beside(dir / "notes"));

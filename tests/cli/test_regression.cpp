@@ -63,7 +63,7 @@ TEST(OchreRegress, PerturbedAlbedoFailsAndWritesPValueImage) {
   EXPECT_LT(*std::min_element(p->begin(), p->end()), level);
   // Brighter albedo: the failing pixels are brighter than the reference (positive z).
   EXPECT_GT(*std::max_element(z->begin(), z->end()), 4.0);
-  const std::string xml = read_text_file(dir / "report.xml");
+  const std::string xml = read_file_contents(dir / "report.xml");
   EXPECT_NE(xml.find("<failure message="), std::string::npos) << xml;
 
   // The unperturbed scene passes against the same reference.
@@ -104,7 +104,7 @@ TEST(OchreRegress, JUnitReportListsEveryScene) {
   const auto dir = scratch_dir();
   const CommandResult r = run_regress(quoted(suite_dir()) + " --junit report.xml", dir);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const std::string xml = read_text_file(dir / "report.xml");
+  const std::string xml = read_file_contents(dir / "report.xml");
   bool well_formed = false;
   const std::vector<std::string> elements = xml_elements(xml, well_formed);
   EXPECT_TRUE(well_formed) << xml;

@@ -96,7 +96,7 @@ void write_tool_folder(const fs::path& bin) {
 }
 
 TEST(Tutorial, EveryCommandOfTheCavePaintingGuideRuns) {
-  const std::string guide = read_text_file(source_dir() / "docs/guide/cave-painting.md");
+  const std::string guide = read_file_contents(source_dir() / "docs/guide/cave-painting.md");
   const std::vector<Block> blocks = fenced_blocks(guide);
   std::set<std::string> outputs;
   const std::string script = tutorial_script(blocks, outputs);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "materials/core/pi.h"
+#include "polarization_test_support.h"
 
 namespace ochre::test::fresnel_test {
 namespace {
@@ -21,11 +22,6 @@ Mueller make(std::initializer_list<std::initializer_list<float>> rows) {
     ++r;
   }
   return m;
-}
-
-void expect_mueller(const Mueller& got, const Mueller& want, float tol) {
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got(r, c), want(r, c), tol) << "entry " << r << "," << c;
 }
 
 TEST(Fresnel, ScalarDielectricValuesOfTheNote) {

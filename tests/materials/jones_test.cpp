@@ -6,14 +6,10 @@
 #include <gtest/gtest.h>
 
 #include "materials/lobes/fresnel.h"
+#include "polarization_test_support.h"
 
 namespace ochre::test::jones_test {
 namespace {
-
-void expect_mueller(const Mueller& got, const Mueller& want, float tol) {
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got(r, c), want(r, c), tol) << "entry " << r << "," << c;
-}
 
 TEST(Jones, DiagonalFresnelAmplitudesGiveTheFresnelMuellerMatrix) {
   for (double cos_i : {1.0, 0.8, 0.3, 0.05}) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "materials/core/pi.h"
+#include "polarization_test_support.h"
 #include "support/spectrum_lanes.h"
 
 namespace ochre::test::mueller_test {
@@ -15,11 +16,6 @@ namespace {
 
 void expect_stokes(const Stokes& got, const Stokes& want, float tol = 1e-6f) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(got[i], want[i], tol) << "component " << i;
-}
-
-void expect_mueller(const Mueller& got, const Mueller& want, float tol = 1e-6f) {
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got(r, c), want(r, c), tol) << "entry " << r << "," << c;
 }
 
 Vec3 rotate_about(const Vec3& v, const Vec3& axis, float angle) {  // Rodrigues

@@ -27,6 +27,12 @@ inline Vec3 polarization_direction(const Stokes& s, const Vec3& d, const Vec3& x
   return x * std::cos(psi) + cross(d, x) * std::sin(psi);
 }
 
+// Every entry of a Mueller matrix within tol of the expected one.
+inline void expect_mueller(const Mueller& got, const Mueller& want, float tol = 1e-6f) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got(r, c), want(r, c), tol) << "entry " << r << "," << c;
+}
+
 inline bool all_finite(const Mueller& m) {
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c)

@@ -24,7 +24,7 @@ TEST(AtomicDirectory, AppearsOnlyOnCommit) {
     EXPECT_FALSE(fs::exists(dir / "report"));
     out.commit();
   }
-  EXPECT_EQ(read_text_file(dir / "report" / "a.txt"), "new");
+  EXPECT_EQ(read_file_contents(dir / "report" / "a.txt"), "new");
   EXPECT_EQ(entries(dir), 1u);  // no scratch directory left
 }
 
@@ -37,7 +37,7 @@ TEST(AtomicDirectory, ReplacesAnExistingDirectoryWhole) {
     write_text(out.temp_path() / "a.txt", "new");
     out.commit();
   }
-  EXPECT_EQ(read_text_file(dir / "report" / "a.txt"), "new");
+  EXPECT_EQ(read_file_contents(dir / "report" / "a.txt"), "new");
   EXPECT_FALSE(fs::exists(dir / "report" / "old.txt"));
   EXPECT_EQ(entries(dir), 1u);
 }
@@ -49,7 +49,7 @@ TEST(AtomicDirectory, WithoutCommitNothingChanges) {
     AtomicDirectory out(dir / "report");
     write_text(out.temp_path() / "a.txt", "new");
   }
-  EXPECT_EQ(read_text_file(dir / "report" / "a.txt"), "old");
+  EXPECT_EQ(read_file_contents(dir / "report" / "a.txt"), "old");
   EXPECT_EQ(entries(dir), 1u);
 }
 

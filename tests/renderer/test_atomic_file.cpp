@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::read_text_file;
+using test::read_file_contents;
 using test::write_text;
 
 size_t count_entries(const fs::path& dir) {
@@ -41,7 +41,7 @@ TEST(AtomicOutput, CommitMovesTheTempFileToTheFinalName) {
   write_text(output.temp_path(), "new");
   EXPECT_FALSE(fs::exists(final_path));
   output.commit();
-  EXPECT_EQ(read_text_file(final_path), "new");
+  EXPECT_EQ(read_file_contents(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
@@ -51,9 +51,9 @@ TEST(AtomicOutput, CommitReplacesAnExistingFile) {
   write_text(final_path, "old");
   AtomicOutput output(final_path);
   write_text(output.temp_path(), "new");
-  EXPECT_EQ(read_text_file(final_path), "old");  // untouched until the new file is complete
+  EXPECT_EQ(read_file_contents(final_path), "old");  // untouched until the new file is complete
   output.commit();
-  EXPECT_EQ(read_text_file(final_path), "new");
+  EXPECT_EQ(read_file_contents(final_path), "new");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
@@ -68,7 +68,7 @@ TEST(AtomicOutput, FailureBeforeCommitKeepsTheOldFileAndRemovesTheTemp) {
         throw std::runtime_error("simulated crash of the writer");
       },
       std::runtime_error);
-  EXPECT_EQ(read_text_file(final_path), "old");
+  EXPECT_EQ(read_file_contents(final_path), "old");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 

@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::read_text_file;
+using test::read_file_contents;
 using test::write_text;
 
 std::vector<std::string> entries(const fs::path& dir) {
@@ -34,11 +34,11 @@ TEST(OutputTransaction, NothingIsReplacedBeforeCommit) {
     OutputTransaction outputs;
     write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
     write_text(outputs.add(dir / "b.txt").temp_path(), "new b");
-    EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
+    EXPECT_EQ(read_file_contents(dir / "a.txt"), "old a");
     outputs.commit();
   }
-  EXPECT_EQ(read_text_file(dir / "a.txt"), "new a");
-  EXPECT_EQ(read_text_file(dir / "b.txt"), "new b");
+  EXPECT_EQ(read_file_contents(dir / "a.txt"), "new a");
+  EXPECT_EQ(read_file_contents(dir / "b.txt"), "new b");
   EXPECT_EQ(entries(dir), (std::vector<std::string>{"a.txt", "b.txt"}));
 }
 
@@ -56,8 +56,8 @@ TEST(OutputTransaction, AFailingWriterLeavesEveryExistingFileAsItWas) {
     throw std::runtime_error("the third writer fails");  // before commit
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
-  EXPECT_EQ(read_text_file(dir / "c.txt"), "old c");
+  EXPECT_EQ(read_file_contents(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file_contents(dir / "c.txt"), "old c");
   struct stat after {};
   ASSERT_EQ(::stat((dir / "a.txt").c_str(), &after), 0);
   EXPECT_EQ(after.st_ino, before.st_ino);
@@ -72,7 +72,7 @@ TEST(OutputTransaction, AMissingTemporaryFailsTheCommitBeforeAnyRename) {
   write_text(outputs.add(dir / "a.txt").temp_path(), "new a");
   outputs.add(dir / "b.txt");  // its writer produced nothing
   EXPECT_THROW(outputs.commit(), ImageError);
-  EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file_contents(dir / "a.txt"), "old a");
 }
 
 TEST(OutputTransaction, AFailedRenamePutsBackTheFilesAlreadyReplaced) {
@@ -88,7 +88,7 @@ TEST(OutputTransaction, AFailedRenamePutsBackTheFilesAlreadyReplaced) {
     write_text(dir / "c" / "inside", "x");
     EXPECT_THROW(outputs.commit(), ImageError);
   }
-  EXPECT_EQ(read_text_file(dir / "a.txt"), "old a");
+  EXPECT_EQ(read_file_contents(dir / "a.txt"), "old a");
   EXPECT_FALSE(fs::exists(dir / "new.txt")) << "an output that did not exist before is removed again";
   EXPECT_EQ(entries(dir), (std::vector<std::string>{"a.txt", "c"})) << "no temporary or backup left";
 }

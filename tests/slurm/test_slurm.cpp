@@ -140,7 +140,7 @@ TEST_F(Slurm, ACancelledTaskIsReportedByTheMergeAndResubmittedAlone) {
   EXPECT_EQ(state(ids["merge"]), "CANCELLED");
   std::string report;
   for (const auto& entry : fs::directory_iterator(work / "job/logs"))
-    if (entry.path().filename().string().rfind("report-", 0) == 0) report = read_text_file(entry.path());
+    if (entry.path().filename().string().rfind("report-", 0) == 0) report = read_file_contents(entry.path());
   EXPECT_TRUE(report.find("missing: samples 0:8 of region 32,0,64,48") != std::string::npos) << report;
   EXPECT_TRUE(report.find("parts without a file: 2 (of 4)") != std::string::npos) << report;
   EXPECT_TRUE(report.find("ochre-slurm --resubmit") != std::string::npos) << report;

@@ -1,5 +1,5 @@
 #pragma once
-// Small text files for tests: write one, read one back whole.
+// Small files for tests: write a text file, read any file back whole.
 
 #include <filesystem>
 #include <fstream>
@@ -15,8 +15,9 @@ inline void write_text(const std::filesystem::path& path, const std::string& tex
   std::ofstream(path) << text;
 }
 
-inline std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
+// The whole file as bytes (a PNG's signature, a CSV, a scene); empty when it cannot be opened.
+inline std::string read_file_contents(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();

@@ -7,6 +7,7 @@
 
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
+#include "renderer/groove_shapes.h"
 
 namespace ochre {
 
@@ -57,10 +58,6 @@ Footprint footprint(const CompareView& v) {
 double groove_pitch(const CompareView& v) {
   const Footprint f = footprint(v);
   return std::max(std::abs(f.right.y), std::abs(f.up.y)) * kFrame / v.resolution;
-}
-
-double groove_depth(double pitch, double alpha_deg) {
-  return 0.5 * pitch / std::tan(0.5 * alpha_deg * kDegD);
 }
 
 // The plate's extent, centred on the target: the frame's footprint, plus room for a ray to run along a
