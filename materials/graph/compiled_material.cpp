@@ -35,7 +35,8 @@ void CompiledMaterial::evaluate(const ShadingContext& ctx, LobeArena& arena, Clo
     const uint16_t* in = operands + ins.first_operand;
     return NodeArgs{ctx, frame, in, in + ins.input_count, ins.payload, ins.outputs_used, arena, out};
   };
-  for (const Instruction& ins : program_.values) ins.fn(args(ins));
+  for (const Instruction& ins : program_.values)
+    if (ins.gate == kUngated || frame[ins.gate] != 0.0f) ins.fn(args(ins));
   for (const Instruction& ins : program_.closures) {
     const NodeArgs a = args(ins);
     if (!a.weight().is_black()) ins.fn(a);  // a closure nobody gives weight to adds nothing
@@ -55,7 +56,9 @@ std::string CompiledMaterial::listing() const {
       append_registers(text, &program_.operands[ins.first_operand], ins.input_count);
       text += "] out[";
       append_registers(text, &program_.operands[ins.first_operand + ins.input_count], ins.output_count);
-      text += "]\n";
+      text += "]";
+      if (ins.gate != kUngated) text += " skipped while [" + std::to_string(ins.gate) + "] = 0";
+      text += "\n";
     }
   };
   list(program_.values, program_.value_labels);

@@ -15,6 +15,9 @@ namespace ochre {
 // Largest frame a material may use (floats; the frame lives on the stack during evaluation).
 inline constexpr int kMaxFrameFloats = 4096;
 
+// Instruction::gate of an instruction that always runs.
+inline constexpr uint16_t kUngated = 0xffff;
+
 struct Instruction {
   NodeFn fn = nullptr;
   const void* payload = nullptr;
@@ -22,6 +25,10 @@ struct Instruction {
   uint16_t input_count = 0;
   uint16_t output_count = 0;
   uint32_t outputs_used = 0;
+  // A value instruction whose every result is multiplied by one float (program_builder.cpp, find_gates) is
+  // skipped while that float's register holds 0: its outputs keep their initial 0 and the products are 0, as
+  // they would have been (every value is finite, node_args.h). kUngated: always run.
+  uint16_t gate = kUngated;
 };
 
 struct Program {

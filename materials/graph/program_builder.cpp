@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "materials/graph/frame_layout.h"
@@ -30,6 +31,7 @@ class Builder {
     const uint16_t output_weight = registers_[output.source.node][output.source.output];
     for (int k = 0; k < kSpectrumSamples; ++k) p_.initial_frame[output_weight + k] = 1.0f;
 
+    find_gates();
     for (int n : t_.order)
       if (live_[n]) emit_node(n);
     // Closure weights flow from the output to the leaves: consumers before producers.
@@ -49,6 +51,48 @@ class Builder {
       if (!op.constant) mark_live(op.source);
   }
 
+  // Gated value nodes: a value node whose every use is as a factor of a value `multiply` whose other factor
+  // is one and the same float, computed before it, need not run while that float is 0: the products are 0
+  // whatever it computes (all values are finite). A texture mask times the `inside` of its projection is the
+  // case that pays: most of a painted cave lies outside its panel, where its five mask lookups took about 10
+  // % of the render time (docs/performance.md, cave-painting scene).
+  void find_gates() {
+    std::vector<int> position(g_.nodes.size(), -1);
+    for (size_t i = 0; i < t_.order.size(); ++i) position[t_.order[i]] = static_cast<int>(i);
+    std::vector<std::optional<OutputRef>> gate(g_.nodes.size());
+    std::vector<bool> gateable(g_.nodes.size(), true);
+    for (int n : t_.order) {
+      if (!live_[n]) continue;
+      for (size_t i = 0; i < f_.inputs[n].size(); ++i) {
+        const Operand& op = f_.inputs[n][i];
+        if (op.constant) continue;
+        const int v = op.source.node;
+        const std::optional<OutputRef> factor = other_float_factor(n, i);
+        if (!factor || factor->node == v || position[factor->node] > position[v] ||
+            (gate[v] && *gate[v] != *factor))
+          gateable[v] = false;
+        else
+          gate[v] = factor;
+      }
+    }
+    for (size_t v = 0; v < g_.nodes.size(); ++v)
+      if (live_[v] && gateable[v] && gate[v] && t_.types[v].outputs[0] != SocketType::kClosure)
+        gate_register_[v] = registers_[gate[v]->node][gate[v]->output];
+  }
+
+  // When node n is a value `multiply` whose input i reads its source unconverted and whose other input is a
+  // non-constant float (converted or not): that float's source.
+  std::optional<OutputRef> other_float_factor(int n, size_t i) const {
+    const std::vector<Operand>& in = f_.inputs[n];
+    if (g_.nodes[n].def->name != "multiply" || t_.types[n].outputs[0] == SocketType::kClosure ||
+        in.size() != 2)
+      return std::nullopt;
+    const Operand &self = in[i], &other = in[1 - i];
+    if (self.source_type != self.type || other.constant || other.source_type != SocketType::kFloat)
+      return std::nullopt;
+    return other.source;
+  }
+
   uint16_t allocate(SocketType type) {
     const size_t at = p_.initial_frame.size();
     const size_t size = at + register_floats(type);
@@ -66,8 +110,9 @@ class Builder {
   }
 
   void emit(bool closure, NodeFn fn, const void* payload, const std::vector<uint16_t>& in,
-            const std::vector<uint16_t>& out, uint32_t used, std::string label) {
+            const std::vector<uint16_t>& out, uint32_t used, std::string label, uint16_t gate = kUngated) {
     Instruction ins;
+    ins.gate = gate;
     ins.fn = fn;
     ins.payload = payload;
     ins.first_operand = static_cast<uint32_t>(p_.operands.size());
@@ -101,7 +146,8 @@ class Builder {
     if (node.prepared.payload) p_.payloads.push_back(node.prepared.payload);
     const bool closure = t_.types[n].outputs[0] == SocketType::kClosure;
     emit(closure, runtime_function(*node.def, t_.types[n]), node.prepared.payload.get(), in, registers_[n],
-         used_[n], node.def->name + " '" + node.name + "'");
+         used_[n], node.def->name + " '" + node.name + "'",
+         gate_register_.count(n) ? gate_register_.at(n) : kUngated);
   }
 
   uint16_t operand_register(const Operand& op) {
@@ -183,6 +229,7 @@ class Builder {
   std::vector<std::vector<uint16_t>> registers_;  // per node and output
   std::vector<bool> varying_;                     // per frame float: a spectrum that varies with lambda
   std::map<const Spectrum*, uint16_t> sampled_;
+  std::map<int, uint16_t> gate_register_;  // per gated value node (find_gates)
   std::map<std::tuple<uint16_t, SocketType, SpectralRole>, uint16_t> converted_;
   Program p_;
   MaterialFacts facts_;

@@ -165,6 +165,83 @@ TEST(Facts, TexturesAndVertexColours) {
   EXPECT_TRUE(u.uniform_over_surface) << "the uv node is dead";
 }
 
+// Gated value instructions (docs/nodes.md, "Program"): skipped while the one float every use multiplies
+// them by is 0. True when the listing's line of `label` says so.
+bool gated(const CompiledMaterial& m, const std::string& label) {
+  const std::string text = m.listing();
+  const size_t at = text.find(label + "  in[");
+  if (at == std::string::npos) ADD_FAILURE() << "no instruction " << label << " in\n" << text;
+  const std::string line = at == std::string::npos ? "" : text.substr(at, text.find('\n', at) - at);
+  return line.find("skipped while") != std::string::npos;
+}
+
+std::string mask_material(const std::string& extra_nodes, const std::string& factor) {
+  return R"({"nodes": {
+      "f": {"type": "projection", "origin": [0, 0, 0], "u_axis": [1, 0, 0], "v_axis": [0, 1, 0]},
+      "t": {"type": "texture", "file": "mask.png", "uv": {"link": "f.uv"}},
+      "cover": {"type": "multiply", "a": {"link": "t.value"}, "b": )" +
+         factor + R"(},)" + extra_nodes + R"(
+      "d": {"type": "lambert", "color": {"link": "cover"}}}, "output": "d"})";
+}
+
+TEST(Gates, AValueOnlyMultipliedByOneComputedFloatIsGatedByIt) {
+  StubResolver resolver;
+  resolver.add_texture("mask.png", 1);
+  const auto mask = compile(mask_material("", R"({"link": "f.inside"})"), resolver);
+  EXPECT_TRUE(gated(*mask, "texture 't'")) << mask->listing();
+  EXPECT_TRUE(lists(*mask, "skipped while [6] = 0")) << "by the projection's inside: " << mask->listing();
+  // A colour times the float (the float converted to a colour for the product) is gated too.
+  const auto colour = compile(R"({"nodes": {
+      "f": {"type": "projection", "origin": [0, 0, 0], "u_axis": [1, 0, 0], "v_axis": [0, 1, 0]},
+      "t": {"type": "texture", "file": "mask.png", "uv": {"link": "f.uv"}},
+      "tint": {"type": "multiply", "a": {"link": "t.color"}, "b": {"link": "f.inside"}},
+      "d": {"type": "lambert", "color": {"link": "tint"}}}, "output": "d"})",
+                              resolver);
+  EXPECT_TRUE(gated(*colour, "texture 't'")) << colour->listing();
+}
+
+TEST(Gates, NotGatedWhenAnotherUseNeedsTheValue) {
+  StubResolver resolver;
+  resolver.add_texture("mask.png", 1);
+  // The texture also feeds a lambert directly.
+  const auto shared = compile(R"({"nodes": {
+      "f": {"type": "projection", "origin": [0, 0, 0], "u_axis": [1, 0, 0], "v_axis": [0, 1, 0]},
+      "t": {"type": "texture", "file": "mask.png", "uv": {"link": "f.uv"}},
+      "cover": {"type": "multiply", "a": {"link": "t.value"}, "b": {"link": "f.inside"}},
+      "d": {"type": "lambert", "color": {"link": "cover"}},
+      "e": {"type": "lambert", "color": {"link": "t.value"}},
+      "out": {"type": "add", "a": {"link": "d"}, "b": {"link": "e"}}}, "output": "out"})",
+                              resolver);
+  EXPECT_FALSE(gated(*shared, "texture 't'")) << shared->listing();
+  // Multiplied by two different floats.
+  const auto two = compile(R"({"nodes": {
+      "f": {"type": "projection", "origin": [0, 0, 0], "u_axis": [1, 0, 0], "v_axis": [0, 1, 0]},
+      "g": {"type": "projection", "origin": [0, 0, 0], "u_axis": [2, 0, 0], "v_axis": [0, 2, 0]},
+      "t": {"type": "texture", "file": "mask.png", "uv": {"link": "f.uv"}},
+      "a": {"type": "multiply", "a": {"link": "t.value"}, "b": {"link": "f.inside"}},
+      "b": {"type": "multiply", "a": {"link": "t.value"}, "b": {"link": "g.inside"}},
+      "s": {"type": "add", "a": {"link": "a"}, "b": {"link": "b"}},
+      "d": {"type": "lambert", "color": {"link": "s"}}}, "output": "d"})",
+                           resolver);
+  EXPECT_FALSE(gated(*two, "texture 't'")) << two->listing();
+  // ... while g, whose one used output is multiplied by the texture's value computed before it, is.
+  EXPECT_TRUE(gated(*two, "projection 'g'")) << two->listing();
+  // The factor is computed from the value itself, so it is not known before it.
+  const auto self = compile(mask_material(R"(
+      "twice": {"type": "multiply", "a": {"link": "t.value"}, "b": 2},)",
+                                          R"({"link": "twice"})"),
+                            resolver);
+  EXPECT_FALSE(gated(*self, "texture 't'")) << self->listing();
+  EXPECT_TRUE(gated(*self, "multiply 'twice'")) << "its one use is a product with the texture's value";
+  // A float scaling a closure: the closure's weight is known only after every value instruction.
+  const auto scale = compile(R"({"nodes": {
+      "t": {"type": "texture", "file": "mask.png"},
+      "d": {"type": "lambert", "color": 0.5},
+      "s": {"type": "multiply", "a": {"link": "d"}, "b": {"link": "t.value"}}}, "output": "s"})",
+                             resolver);
+  EXPECT_FALSE(gated(*scale, "texture 't'")) << scale->listing();
+}
+
 // A closure added through the registry changes the facts through its lobe flags alone.
 NodeRegistry registry_with_polarizer() {
   NodeRegistry r;

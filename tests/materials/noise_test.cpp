@@ -152,6 +152,31 @@ TEST_F(PositionNodes, ProjectionMapsTheFrameToUnitSquareAndMasksOutside) {
   EXPECT_FLOAT_EQ(textures.last_uv.x, 1.25f);
 }
 
+// A mask multiplied by its projection's `inside` is not looked up outside the frame (its instruction is
+// gated, docs/nodes.md): the result is the same as if it had been, 0.
+TEST_F(PositionNodes, ProjectedMaskIsLookedUpOnlyInsideItsFrame) {
+  resolver.add_texture("mask.png", 1);
+  const auto m = compile(R"({"nodes": {
+      "f": {"type": "projection", "origin": [1, 0, -2], "u_axis": [2, 0, 0], "v_axis": [0, 4, 0], "depth": 0.5},
+      "t": {"type": "texture", "file": "mask.png", "uv": {"link": "f.uv"}},
+      "cover": {"type": "multiply", "a": {"link": "t.value"}, "b": {"link": "f.inside"}},
+      "rock": {"type": "lambert", "color": 0.5},
+      "paint": {"type": "lambert", "color": 0.1},
+      "out": {"type": "mix", "a": {"link": "rock"}, "b": {"link": "paint"}, "factor": {"link": "cover"}}},
+      "output": "out"})",
+                         resolver);
+  ctx.p = {2.0f, 1.0f, -2.3f};  // inside: u = 0.5, so the stub mask's value is 0.5
+  const Closure& inside = evaluate(*m);
+  EXPECT_EQ(textures.lookups, 1);
+  ASSERT_EQ(inside.lobe_count(), 2);
+  EXPECT_FLOAT_EQ(inside.lobe(0).weight[0] + inside.lobe(1).weight[0], 0.5f * 0.5f + 0.5f * 0.1f);
+  ctx.p = {3.5f, 1.0f, -2.0f};  // u = 1.25: outside the frame
+  const Closure& outside = evaluate(*m);
+  EXPECT_EQ(textures.lookups, 1) << "no lookup outside the frame";
+  ASSERT_EQ(outside.lobe_count(), 1);
+  EXPECT_EQ(outside.lobe(0).weight[0], 0.5f);
+}
+
 TEST_F(PositionNodes, ProjectionRejectsParallelAxes) {
   EXPECT_THROW(
       compile(
