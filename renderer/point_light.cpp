@@ -7,7 +7,9 @@
 namespace ochre {
 
 PointLight::PointLight(const Vec3& position, SpectrumPtr intensity)
-    : position_(position), intensity_(std::move(intensity)), luminance_(spectrum_to_xyz(*intensity_).y) {}
+    : position_(position),
+      intensity_(std::move(intensity)),
+      luminance_(spectrum_to_xyz(*intensity_.spectrum()).y) {}
 
 std::optional<LightSample> sample_point_source(const Vec3& position, const Vec3& ref) {
   const Vec3 d = position - ref;
@@ -25,7 +27,7 @@ std::optional<LightSample> sample_point_source(const Vec3& position, const Vec3&
 std::optional<LightSample> PointLight::sample(const Vec3& ref, const Vec2&,
                                               const SampledWavelengths& lambda) const {
   auto s = sample_point_source(position_, ref);
-  if (s) s->radiance *= intensity_->sample(lambda);
+  if (s) s->radiance *= intensity_.sample(lambda);
   return s;
 }
 

@@ -2,7 +2,7 @@
 // Point light: isotropic radiant intensity I(lambda) (W sr^-1 nm^-1) at a position.
 
 #include "renderer/light.h"
-#include "spectra/spectrum.h"
+#include "spectra/memoized_spectrum.h"
 
 namespace ochre {
 
@@ -21,7 +21,7 @@ class PointLight final : public Light {
 
  private:
   Vec3 position_;
-  SpectrumPtr intensity_;
+  MemoizedSpectrum intensity_;
   float luminance_;  // of the intensity
 };
 

@@ -13,12 +13,12 @@ SphereLight::SphereLight(const Vec3& center, float radius, SpectrumPtr intensity
     : center_(center),
       radius_(radius),
       intensity_(std::move(intensity)),
-      luminance_(spectrum_to_xyz(*intensity_).y) {}
+      luminance_(spectrum_to_xyz(*intensity_.spectrum()).y) {}
 
 void SphereLight::set_state(const Vec3& center, SpectrumPtr intensity) {
   center_ = center;
-  intensity_ = std::move(intensity);
-  luminance_ = spectrum_to_xyz(*intensity_).y;
+  intensity_ = MemoizedSpectrum(std::move(intensity));
+  luminance_ = spectrum_to_xyz(*intensity_.spectrum()).y;
 }
 
 std::optional<LightSample> SphereLight::sample(const Vec3& ref, const Vec2& u,
@@ -30,7 +30,7 @@ std::optional<LightSample> SphereLight::sample(const Vec3& ref, const Vec2& u,
     // Inside (or on) the sphere: a point light at the centre no closer than the radius.
     auto s = sample_point_source(center_, ref);
     if (!s) return std::nullopt;
-    s->radiance = intensity_->sample(lambda) * (1.0f / std::max(dist2, r2));
+    s->radiance = intensity_.sample(lambda) * (1.0f / std::max(dist2, r2));
     return s;
   }
   const float dist = std::sqrt(dist2);
@@ -49,7 +49,7 @@ std::optional<LightSample> SphereLight::sample(const Vec3& ref, const Vec2& u,
   const float b = dist * cos_theta;
   s.distance = std::max(0.0f, b - std::sqrt(std::max(0.0f, r2 - dist2 + b * b)));
   s.pdf = 1.0f / (2.0f * kPi * one_minus_cos_max);
-  s.radiance = intensity_->sample(lambda) * (1.0f / (kPi * r2));
+  s.radiance = intensity_.sample(lambda) * (1.0f / (kPi * r2));
   s.only_by_light_sampling = true;
   return s;
 }

@@ -11,7 +11,7 @@
 // there is bounded by I / r^2.
 
 #include "renderer/light.h"
-#include "spectra/spectrum.h"
+#include "spectra/memoized_spectrum.h"
 
 namespace ochre {
 
@@ -27,12 +27,12 @@ class SphereLight final : public Light {
   void set_state(const Vec3& center, SpectrumPtr intensity);
   const Vec3& center() const { return center_; }
   float radius() const { return radius_; }
-  const SpectrumPtr& intensity() const { return intensity_; }
+  const SpectrumPtr& intensity() const { return intensity_.spectrum(); }
 
  private:
   Vec3 center_;
   float radius_;
-  SpectrumPtr intensity_;
+  MemoizedSpectrum intensity_;
   float luminance_;  // of the intensity
 };
 

@@ -18,7 +18,7 @@ SpotLight::SpotLight(const Vec3& position, const Vec3& direction, float cone_ang
       falloff_start_(falloff_start_deg * kPi / 180.0f),
       falloff_(falloff),
       intensity_(std::move(intensity)),
-      luminance_(spectrum_to_xyz(*intensity_).y) {}
+      luminance_(spectrum_to_xyz(*intensity_.spectrum()).y) {}
 
 float SpotLight::profile(const Vec3& direction) const {
   const float c = dot(direction_, direction);
@@ -35,7 +35,7 @@ std::optional<LightSample> SpotLight::sample(const Vec3& ref, const Vec2&,
   if (!s) return std::nullopt;
   const float k = profile(-s->wi);
   if (k <= 0.0f) return std::nullopt;
-  s->radiance *= intensity_->sample(lambda) * k;
+  s->radiance *= intensity_.sample(lambda) * k;
   return s;
 }
 

@@ -5,7 +5,7 @@
 // spot emitter).
 
 #include "renderer/light.h"
-#include "spectra/spectrum.h"
+#include "spectra/memoized_spectrum.h"
 
 namespace ochre {
 
@@ -30,7 +30,7 @@ class SpotLight final : public Light {
   float cos_cone_, cos_falloff_;
   float cone_, falloff_start_;  // radians
   Falloff falloff_;
-  SpectrumPtr intensity_;
+  MemoizedSpectrum intensity_;
   float luminance_;  // of the intensity on the axis
 };
 

@@ -9,6 +9,7 @@
 #include "renderer/flame_light.h"
 #include "renderer/flicker_process.h"
 #include "renderer/light_presets.h"
+#include "renderer/sphere_light.h"
 
 namespace ochre::test_flicker_process {
 namespace {
@@ -109,6 +110,20 @@ TEST(FlameLight, StateFollowsTheProcessAndStaysPositive) {
   EXPECT_EQ(still.intensity_cd, 5.0f);
   EXPECT_EQ(still.cct_k, 1700.0f);
   EXPECT_EQ(still.position.y, 2.0f);
+}
+
+// A light's intensity is memoized per thread for a path's wavelengths (spectra/memoized_spectrum.h): a flame
+// given its next frame's spectrum must not read the previous frame's values at the same wavelengths.
+TEST(FlameLight, NewIntensityIsSampledAfterAStateChange) {
+  SphereLight light({0, 0, 0}, 0.05f, flame_spectrum(1700.0f, 5.0f));
+  const SampledWavelengths lambda = SampledWavelengths::sample_visible(0.3f);
+  const Vec3 wall{0, 0, -1};
+  const SampledSpectrum before = light.sample(wall, {0.5f, 0.5f}, lambda)->radiance;
+  EXPECT_EQ(light.sample(wall, {0.5f, 0.5f}, lambda)->radiance[0], before[0]) << "the same, from the memo";
+  light.set_state({0, 0, 0}, flame_spectrum(1700.0f, 10.0f));
+  const SampledSpectrum after = light.sample(wall, {0.5f, 0.5f}, lambda)->radiance;
+  for (int i = 0; i < kSpectrumSamples; ++i)
+    EXPECT_FLOAT_EQ(after[i], 2.0f * before[i]) << "twice the candelas at " << lambda[i] << " nm";
 }
 
 TEST(LightPresets, KnownNamesAndValues) {
