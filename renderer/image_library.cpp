@@ -68,8 +68,10 @@ const ImageLibrary* load_image_library() {
       tried += fmt::format("\n  {}: not found", candidate.string());
       continue;
     }
-    // RTLD_LOCAL: OpenImageIO's symbols stay out of the global namespace of the process.
-    void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    // RTLD_LOCAL: OpenImageIO's symbols stay out of the global namespace of the process. RTLD_LAZY: of the
+    // ~240 libraries OpenImageIO pulls in, only the functions called get bound, on first call; binding them
+    // all at load (RTLD_NOW) cost ~0.3 s per process (docs/performance.md, process start-up).
+    void* module = dlopen(candidate.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (module == nullptr) {
       tried += fmt::format("\n  {}: {}", candidate.string(), dlerror());
       continue;
