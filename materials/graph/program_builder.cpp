@@ -21,7 +21,8 @@ class Builder {
         f_(f),
         live_(g.nodes.size(), false),
         used_(g.nodes.size(), 0),
-        registers_(g.nodes.size()) {}
+        registers_(g.nodes.size()),
+        gate_register_(g.nodes.size(), kUngated) {}
 
   BuiltProgram run() {
     const Operand& output = f_.outputs[g_.output.node][g_.output.output];
@@ -146,8 +147,7 @@ class Builder {
     if (node.prepared.payload) p_.payloads.push_back(node.prepared.payload);
     const bool closure = t_.types[n].outputs[0] == SocketType::kClosure;
     emit(closure, runtime_function(*node.def, t_.types[n]), node.prepared.payload.get(), in, registers_[n],
-         used_[n], node.def->name + " '" + node.name + "'",
-         gate_register_.count(n) ? gate_register_.at(n) : kUngated);
+         used_[n], node.def->name + " '" + node.name + "'", gate_register_[n]);
   }
 
   uint16_t operand_register(const Operand& op) {
@@ -227,9 +227,9 @@ class Builder {
   std::vector<bool> live_;
   std::vector<uint32_t> used_;
   std::vector<std::vector<uint16_t>> registers_;  // per node and output
+  std::vector<uint16_t> gate_register_;           // per node: its gate (find_gates), or kUngated
   std::vector<bool> varying_;                     // per frame float: a spectrum that varies with lambda
   std::map<const Spectrum*, uint16_t> sampled_;
-  std::map<int, uint16_t> gate_register_;  // per gated value node (find_gates)
   std::map<std::tuple<uint16_t, SocketType, SpectralRole>, uint16_t> converted_;
   Program p_;
   MaterialFacts facts_;
