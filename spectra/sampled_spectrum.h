@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 
 namespace ochre {
 
@@ -22,6 +23,9 @@ class SampledSpectrum {
 
   constexpr float& operator[](int i) { return v_[i]; }
   constexpr float operator[](int i) const { return v_[i]; }
+  // The lanes as one array, for functions of spans of floats.
+  constexpr std::span<const float, kSpectrumSamples> lanes() const { return v_; }
+  constexpr std::span<float, kSpectrumSamples> lanes() { return v_; }
 
 #define OCHRE_SPECTRUM_OP(op)                                                                 \
   constexpr SampledSpectrum& operator op##=(const SampledSpectrum& o) {                       \

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -259,6 +260,28 @@ TEST(LambertSphereModel, KdMappingReproducesTheBondAlbedo) {
   RecordProperty("eq46_error_percent", std::to_string(100 * worst46));
   EXPECT_LT(worst, 0.005);
   EXPECT_GT(worst46, 0.02) << "Eq 46 is not the inverse of the model's bond albedo";
+}
+
+// The closure maps all of a path's wavelengths at once: the same values as one at a time, whatever the
+// neighbours (out-of-range and NaN lanes included), across the blocks the batch is cut into.
+TEST(LambertSphereModel, KdInverseOfManyValuesAtOnce) {
+  std::vector<float> kd;
+  for (int j = 0; j < 37; ++j) kd.push_back(-0.05f + 1.1f * float(j) / 36.0f);
+  kd[5] = std::numeric_limits<float>::quiet_NaN();
+  kd[20] = float(lambert_sphere_kd_inverse().max_bond_albedo());
+  std::vector<float> c(kd.size(), -1.0f);
+  lambert_sphere_kd_inverse().c(kd, c);
+  for (std::size_t i = 0; i < kd.size(); ++i) {
+    EXPECT_EQ(c[i], lambert_sphere_kd_inverse().c(kd[i])) << "kd " << kd[i];
+    EXPECT_GE(c[i], 0.0f);
+    EXPECT_LE(c[i], 1.0f);
+    if (kd[i] > 0.0f && kd[i] < lambert_sphere_kd_inverse().max_bond_albedo()) {
+      EXPECT_NEAR(lambert_sphere_bond_albedo(c[i]), kd[i], 1e-4) << "kd " << kd[i];
+    }
+  }
+  EXPECT_EQ(c[0], 0.0f);                            // below 0
+  EXPECT_EQ(c[36], 1.0f);                           // above the largest bond albedo
+  EXPECT_EQ(c[5], lambert_sphere_c_from_kd(0.0f));  // NaN maps like 0
 }
 
 TEST(LambertSphereModel, ExactModeKdMapping) {

@@ -71,19 +71,42 @@ BondAlbedoInverse::BondAlbedoInverse(const std::function<double(double c)>& bond
 }
 
 float BondAlbedoInverse::c(float kd_in) const {
-  const double kd = nan_safe_clamp(double(kd_in), 0.0, 1.0);
-  if (kd >= kd_[0]) return 1.0f;
-  if (kd <= kd_[kNodes - 1]) return 0.0f;
-  // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), by steps of halving size that
-  // compile to conditional moves: called per wavelength at every Lambert-sphere shading point with a
-  // textured kd, where a branching search mispredicts. Then linear interpolation in s.
-  static_assert(kNodes == 65, "the steps below cover indices 0..63");
-  int lo = 0;
-  for (int step = 32; step > 0; step /= 2) lo += kd_[lo + step] > kd ? step : 0;
-  const int hi = lo + 1;
-  const double t = (kd_[lo] - kd) / (kd_[lo] - kd_[hi]);
-  const double s = (lo + t) / (kNodes - 1);
-  return float(std::clamp(1.0 - s * s, 0.0, 1.0));
+  float c_out = 0.0f;
+  c(std::span<const float>(&kd_in, 1), std::span<float>(&c_out, 1));
+  return c_out;
+}
+
+void BondAlbedoInverse::c(std::span<const float> kd_in, std::span<float> c_out) const {
+  // At most kSpectrumSamples values per call in practice; longer spans go through in blocks.
+  constexpr std::size_t kBlock = 16;
+  for (std::size_t first = 0; first < kd_in.size(); first += kBlock) {
+    const std::size_t n = std::min(kBlock, kd_in.size() - first);
+    double kd[kBlock];
+    int lo[kBlock];
+    for (std::size_t i = 0; i < n; ++i) {
+      kd[i] = nan_safe_clamp(double(kd_in[first + i]), 0.0, 1.0);
+      lo[i] = 0;
+    }
+    // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), by steps of halving size that
+    // compile to conditional moves: called per wavelength at every Lambert-sphere shading point with a
+    // textured kd, where a branching search mispredicts. Then linear interpolation in s.
+    static_assert(kNodes == 65, "the steps below cover indices 0..63");
+    for (int step = 32; step > 0; step /= 2)
+      for (std::size_t i = 0; i < n; ++i) lo[i] += kd_[lo[i] + step] > kd[i] ? step : 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      float& out = c_out[first + i];
+      if (kd[i] >= kd_[0]) {
+        out = 1.0f;
+      } else if (kd[i] <= kd_[kNodes - 1]) {
+        out = 0.0f;
+      } else {
+        const int hi = lo[i] + 1;
+        const double t = (kd_[lo[i]] - kd[i]) / (kd_[lo[i]] - kd_[hi]);
+        const double s = (lo[i] + t) / (kNodes - 1);
+        out = float(std::clamp(1.0 - s * s, 0.0, 1.0));
+      }
+    }
+  }
 }
 
 float BondAlbedoInverse::weight_scale(float kd) const {

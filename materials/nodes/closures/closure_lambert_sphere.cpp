@@ -48,22 +48,23 @@ void emit_lambert_sphere(const NodeArgs& a) {
   if (w.is_black()) return;
   const LambertSphereSettings& s = a.data<LambertSphereSettings>();
   const SampledSpectrum kd = a.in_spectrum(0), particle_albedo = a.in_spectrum(1);
-  const bool exact = s.variant == LambertSphereVariant::kExact;
+  bool uses_kd = false;  // particle_albedo < 0 (or NaN) in some lane
+  for (int k = 0; k < kSpectrumSamples; ++k) uses_kd |= !(particle_albedo[k] >= 0.0f);
   SampledSpectrum c;
-  for (int k = 0; k < kSpectrumSamples; ++k) {
-    if (particle_albedo[k] >= 0.0f) {
-      c[k] = particle_albedo[k];
-    } else if (s.eq46_mapping) {
-      c[k] = lambert_sphere_c_from_kd_eq46(kd[k]);
-    } else {
-      // Above the largest bond albedo the model reaches (the fitted model loses up to 1.4 % at c = 1),
-      // the weight makes up the difference so that the rendered bond albedo is kd.
-      const BondAlbedoInverse& inverse =
-          exact ? lambert_sphere_exact_kd_inverse() : lambert_sphere_kd_inverse();
-      c[k] = inverse.c(kd[k]);
-      w[k] *= inverse.weight_scale(kd[k]);
-    }
+  if (uses_kd && s.eq46_mapping) {
+    for (int k = 0; k < kSpectrumSamples; ++k) c[k] = lambert_sphere_c_from_kd_eq46(kd[k]);
+  } else if (uses_kd) {
+    const BondAlbedoInverse& inverse = s.variant == LambertSphereVariant::kExact
+                                           ? lambert_sphere_exact_kd_inverse()
+                                           : lambert_sphere_kd_inverse();
+    inverse.c(kd.lanes(), c.lanes());  // all lanes at once (the searches overlap)
+    // Above the largest bond albedo the model reaches (the fitted model loses up to 1.4 % at c = 1), the
+    // weight makes up the difference so that the rendered bond albedo is kd.
+    for (int k = 0; k < kSpectrumSamples; ++k)
+      if (!(particle_albedo[k] >= 0.0f)) w[k] *= inverse.weight_scale(kd[k]);
   }
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    if (particle_albedo[k] >= 0.0f) c[k] = particle_albedo[k];  // given: replaces the value from kd
   a.add_lobe(a.arena.make<LambertSphereLobe>(s.variant, c), w);
 }
 
