@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "materials/core/pi.h"
@@ -282,6 +283,8 @@ TEST(LambertSphereModel, KdInverseOfManyValuesAtOnce) {
   EXPECT_EQ(c[0], 0.0f);                            // below 0
   EXPECT_EQ(c[36], 1.0f);                           // above the largest bond albedo
   EXPECT_EQ(c[5], lambert_sphere_c_from_kd(0.0f));  // NaN maps like 0
+  std::vector<float> too_short(kd.size() - 1);
+  EXPECT_THROW(lambert_sphere_kd_inverse().c(kd, too_short), std::invalid_argument);
 }
 
 TEST(LambertSphereModel, ExactModeKdMapping) {

@@ -1,6 +1,7 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "materials/core/pi.h"
 #include "materials/numerics/gauss_legendre.h"
@@ -77,6 +78,8 @@ float BondAlbedoInverse::c(float kd_in) const {
 }
 
 void BondAlbedoInverse::c(std::span<const float> kd_in, std::span<float> c_out) const {
+  if (c_out.size() != kd_in.size())
+    throw std::invalid_argument("BondAlbedoInverse::c: spans of different sizes");
   // At most kSpectrumSamples values per call in practice; longer spans go through in blocks.
   constexpr std::size_t kBlock = 16;
   for (std::size_t first = 0; first < kd_in.size(); first += kBlock) {
