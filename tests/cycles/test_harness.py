@@ -114,6 +114,21 @@ class Variants(unittest.TestCase):
             with self.assertRaises(SystemExit):
                 o.camera_spp(6)
 
+    def test_colour_spp_is_a_swept_count_checked_before_rendering(self):
+        self.assertEqual(rb.checked_colour_spp(None, [8, 32, 128]), 32)  # the middle of the sweep
+        self.assertEqual(rb.checked_colour_spp(None, [4, 8, 16, 32, 64]), 16)
+        self.assertEqual(rb.checked_colour_spp(128, [8, 32, 128]), 128)
+        with self.assertRaises(SystemExit) as e:
+            rb.checked_colour_spp(64, [8, 32, 128])
+        self.assertIn('--colour-spp 64', str(e.exception.code))
+        with tempfile.TemporaryDirectory() as out:  # the whole tool stops before it writes anything
+            r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools/cycles/run_benchmark.py'), '--out',
+                                os.path.join(out, 'bench'), '--renderers', 'ochre', '--spps', '8,32',
+                                '--colour-spp', '64'], capture_output=True, text=True)
+            self.assertNotEqual(r.returncode, 0)
+            self.assertIn('not one of the swept sample counts 8,32', r.stderr)
+            self.assertFalse(os.path.exists(os.path.join(out, 'bench')))
+
 
 def blender_render():
     if not shutil.which('blender') or not shutil.which('oiiotool'):

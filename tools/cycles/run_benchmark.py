@@ -215,11 +215,21 @@ def summarise(label, spps_rows, floor, pixels, colour_spp):
                 rgb_over_luminance=at['relmse'] / at['luminance_relmse'])
 
 
+def checked_colour_spp(colour_spp, spps):
+    """The sample count of the colour-noise column: one of the swept counts (checked before any render)."""
+    if colour_spp is None:
+        return sorted(spps)[len(spps) // 2]
+    if colour_spp not in spps:
+        sys.exit(f'--colour-spp {colour_spp} is not one of the swept sample counts {",".join(map(str, spps))}')
+    return colour_spp
+
+
 def summarise_results(args):
     """The summaries of an earlier run, from OUT/results.csv and its reference halves."""
     rows = [dict(r, spp=int(r['spp']), seconds=float(r['seconds']), relmse=float(r['relmse']),
                  luminance_relmse=float(r['luminance_relmse']))
             for r in csv.DictReader(open(os.path.join(args.out, 'results.csv')))]
+    args.colour_spp = checked_colour_spp(args.colour_spp, sorted({r['spp'] for r in rows}))
     summaries = []
     for renderer in ('cycles', 'ochre'):
         mine = [r for r in rows if r['renderer'] == renderer]
@@ -265,7 +275,8 @@ def main():
     ap.add_argument('--variant', action='append', default=[], help='ochre variant NAME:key=value,...')
     ap.add_argument('--ref-spp', type=int, default=4096)
     ap.add_argument('--spps', default='8,16,32,64,128,256')
-    ap.add_argument('--colour-spp', type=int, default=64)
+    ap.add_argument('--colour-spp', type=int, default=None,
+                    help='sample count of the RGB / luminance column, one of --spps (default: the middle one)')
     ap.add_argument('--repeat', type=int, default=3)
     ap.add_argument('--threads', type=int, default=2)
     ap.add_argument('--reuse-ref', action='store_true', help='keep reference EXRs from an earlier run in OUT')
@@ -279,9 +290,10 @@ def main():
     args.scene = os.path.abspath(args.scene)
     if args.summarise:
         return write_summary(args, summarise_results(args))
+    spps = [int(x) for x in args.spps.split(',')]
+    args.colour_spp = checked_colour_spp(args.colour_spp, spps)
     for d in ('exr', 'scenes'):
         os.makedirs(os.path.join(args.out, d), exist_ok=True)
-    spps = [int(x) for x in args.spps.split(',')]
     renderers = args.renderers.split(',')
     if 'cycles' in renderers and not shutil.which(args.blender):
         sys.exit(f'{args.blender} not found: apt-get install -y --no-install-recommends blender (docs/performance.md)')
