@@ -289,9 +289,11 @@ int run_converge(ConvergeCommand cmd) {
   const ochre::InputFileLog::Recording recording(inputs);
   ochre::check_regular_input(cmd.scene, ochre::kSceneFileInput);
   if (cmd.reference != "auto") ochre::check_regular_input(cmd.reference, ochre::kImageFileInput);
+  // The plot first: when the CSV is the one derived from it, a bad directory is reported under the name
+  // given.
   std::vector<fs::path> outputs;
-  if (!cmd.csv.empty()) outputs.emplace_back(cmd.csv);
   if (!cmd.plot.empty()) outputs.emplace_back(cmd.plot);
+  if (!cmd.csv.empty()) outputs.emplace_back(cmd.csv);
   ochre::check_output_files(outputs, inputs);  // before any render
   const ochre::RgbImage reference = cmd.reference == "auto"
                                         ? auto_reference(cmd)

@@ -177,6 +177,12 @@ TEST(OutputFiles, CsvOfOchreConvergeThatIsTheScene) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_TRUE(contains(r.output, "it is also given as output a.csv")) << r.output;
   EXPECT_FALSE(fs::exists(s.dir / "a.csv"));
+  // A plot into a missing directory is named as given, not as the CSV derived from it.
+  r = run_tool("ochre-converge", "scene.json --reference auto --spp 1 --plot missing/p.png", s.dir, false,
+               kTimeout);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, "cannot write missing/p.png")) << r.output;
+  EXPECT_FALSE(contains(r.output, "reference: auto")) << "refused before any render\n" << r.output;
 }
 
 TEST(OutputFiles, OutputOfOchreBrdfThatIsAnInput) {
