@@ -1,8 +1,8 @@
 #pragma once
 // MemoizedSpectrum: a spectrum that does not depend on the shading point (a point, spot or sphere light's
-// intensity), sampled once per thread for a path's wavelengths and then read from the thread's memo
-// (wavelength_memo.h): a path asks for it at every light sample, and a blackbody costs an exp and a pow per
-// wavelength. The values are those of Spectrum::sample, so images do not change.
+// intensity, a material's pre-built spectrum), sampled once per thread for a path's wavelengths and then read
+// from the thread's memo (wavelength_memo.h): a path asks for it at every light sample, and a blackbody costs
+// an exp and a pow per wavelength. The values are those of Spectrum::sample, so images do not change.
 
 #include <cstdint>
 

@@ -8,6 +8,7 @@
 #include "materials/graph/frame_layout.h"
 #include "materials/lobes/lobe.h"
 #include "materials/nodes/conversion_kernels.h"
+#include "spectra/memoized_spectrum.h"
 
 namespace ochre {
 
@@ -169,7 +170,7 @@ class Builder {
     const uint16_t at = allocate(SocketType::kSpectrum);
     varying_[at] = true;
     p_.spectra.push_back(s);
-    auto payload = std::make_shared<const SampledSpectrumPayload>(s.get());
+    auto payload = std::make_shared<const MemoizedSpectrum>(s);
     p_.payloads.push_back(payload);
     emit(false, sample_spectrum_kernel, payload.get(), {}, {at}, 1u,
          "sample spectrum " + NodeValue::of_spectrum(s).describe());

@@ -1,8 +1,8 @@
 #include "materials/nodes/conversion_kernels.h"
 
 #include "materials/nodes/rgb_upsampling.h"
+#include "spectra/memoized_spectrum.h"
 #include "spectra/spectrum.h"
-#include "spectra/wavelength_memo.h"
 
 namespace ochre {
 
@@ -32,16 +32,10 @@ NodeFn conversion_kernel(SocketType from, SocketType to, SpectralRole role) {
   return nullptr;
 }
 
-SampledSpectrumPayload::SampledSpectrumPayload(const Spectrum* s)
-    : spectrum(s), serial(new_wavelength_memo_key()) {}
-
 // Every bounce of a path evaluates its materials at the same wavelengths, and a tabulated spectrum costs an
-// interpolation per wavelength and a virtual call: the values are memoized per thread
-// (spectra/wavelength_memo.h).
+// interpolation per wavelength and a virtual call: the values are memoized per thread.
 void sample_spectrum_kernel(const NodeArgs& a) {
-  const auto& payload = *static_cast<const SampledSpectrumPayload*>(a.payload);
-  a.set_spectrum(
-      0, memo_sampled(payload.serial, a.lambda(), [&] { return payload.spectrum->sample(a.lambda()); }));
+  a.set_spectrum(0, static_cast<const MemoizedSpectrum*>(a.payload)->sample(a.lambda()));
 }
 
 }  // namespace ochre
