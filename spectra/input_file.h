@@ -34,7 +34,8 @@ struct InputKind {
 };
 
 // The size limits of docs/cli.md. Text formats are parsed whole into memory, hence the lower limits;
-// meshes are read whole by Assimp; images are bounded again by their decoded size (renderer/memory_budget.h).
+// meshes are read whole by Assimp; images are bounded again by their decoded size
+// (renderer/util/memory_budget.h).
 inline constexpr std::uint64_t kJsonFileLimit = 256 * kMiB;
 inline constexpr InputKind kSceneFileInput{"scene file", kJsonFileLimit};
 inline constexpr InputKind kMaterialFileInput{"material file", kJsonFileLimit};

@@ -4,8 +4,8 @@
 
 #include <charconv>
 
-#include "renderer/input_error.h"
-#include "renderer/render_settings.h"
+#include "renderer/scene/render_settings.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "renderer/partial_sums.h"
+#include "renderer/output/partial_sums.h"
 #include "tools/render_command.h"
 #include "tools/render_part.h"
 

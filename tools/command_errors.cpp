@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "materials/graph/graph_error.h"
-#include "renderer/image_error.h"
-#include "renderer/input_error.h"
+#include "renderer/util/image_error.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 

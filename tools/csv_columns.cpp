@@ -6,7 +6,7 @@
 #include <cmath>
 #include <memory>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/input_file.h"
 
 namespace ochre {

@@ -11,15 +11,15 @@
 #include <new>
 #include <optional>
 
-#include "renderer/atomic_file.h"
-#include "renderer/input_error.h"
-#include "renderer/memory_budget.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/partial_sums.h"
-#include "renderer/progress.h"
-#include "renderer/render_output.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/output/output_files.h"
+#include "renderer/output/partial_sums.h"
+#include "renderer/output/render_output.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/memory_budget.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/progress.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/command_errors.h"
 
 namespace ochre {

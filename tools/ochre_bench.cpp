@@ -3,7 +3,7 @@
 //   ochre-bench --modes [SCENE.json ...] [--repeat N]
 // For each scene: renders it (samples/s, rays/s counting intersect and occlusion queries), then traces
 // random incoherent rays through an Embree BVH of the same meshes, built with the renderer's options (robust,
-// high quality) and with Embree's defaults (renderer/raw_embree_benchmark.h)
+// high quality) and with Embree's defaults (tools/bench/raw_embree_benchmark.h)
 // and prints renderer rays/s / raw rays/s: the median and range over N interleaved rounds. With --modes:
 // renders each scene in polarization modes off, intensity and stokes (interleaved, N times), prints the
 // median time per sample of each as a ratio to off (goals: intensity <= 1.3x, stokes <= 2x) and the
@@ -21,12 +21,12 @@
 #include <vector>
 
 #include "ochre/version.h"
-#include "renderer/film.h"
-#include "renderer/polarization_mode.h"
-#include "renderer/raw_embree_benchmark.h"
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/film/film.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
+#include "renderer/scene/polarization_mode.h"
+#include "renderer/util/signal_cleanup.h"
+#include "tools/bench/raw_embree_benchmark.h"
 #include "tools/tool_files.h"
 
 namespace {

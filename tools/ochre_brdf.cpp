@@ -12,7 +12,7 @@
 #include <new>
 
 #include "ochre/version.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/util/signal_cleanup.h"
 #include "tools/brdf/brdf_commands.h"
 
 namespace {

@@ -2,7 +2,7 @@
 //   ochre-converge SCENE.json --reference REF.exr|auto --spp 1,4,16 [--variant NAME:key=value,...]...
 //                  [--csv OUT.csv] [--plot OUT.png] [--threads N] [--seed S] [--width W --height H]
 // Renders the scene at each sample count for each variant, times each render (scene loading excluded)
-// and compares the image with the reference (relative MSE and RMSE, renderer/image_metrics.h).
+// and compares the image with the reference (relative MSE and RMSE, renderer/compare/image_metrics.h).
 // Exit codes: 0 = done, 2 = bad input or usage.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -20,18 +20,18 @@
 #include <vector>
 
 #include "ochre/version.h"
-#include "renderer/atomic_file.h"
-#include "renderer/exr_reader.h"
-#include "renderer/film.h"
-#include "renderer/image_metrics.h"
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/render.h"
-#include "renderer/render_output.h"
-#include "renderer/render_settings.h"
-#include "renderer/scene_loader.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/film/film.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
+#include "renderer/output/output_files.h"
+#include "renderer/output/render_output.h"
+#include "renderer/scene/render_settings.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/python_script.h"
 #include "tools/unsigned_option.h"
 

@@ -12,13 +12,13 @@
 #include <string>
 
 #include "ochre/version.h"
-#include "renderer/atomic_file.h"
-#include "renderer/exr_reader.h"
-#include "renderer/image_error.h"
-#include "renderer/image_metrics.h"
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/output/output_files.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 
 namespace {
 

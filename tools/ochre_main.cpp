@@ -5,10 +5,10 @@
 #include <tuple>
 
 #include "ochre/version.h"
-#include "renderer/duration.h"
 #include "spectra/byte_size.h"
-#include "tools/merge_command.h"
+#include "tools/cli/duration.h"
 #include "tools/frame_options.h"
+#include "tools/merge_command.h"
 #include "tools/render_command.h"
 #include "tools/unsigned_option.h"
 
@@ -49,9 +49,10 @@ int main(int argc, char** argv) {
   std::string polarization, sampler, preset;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
-  render->add_option("scene", cmd.scene,
-                     "Scene file (JSON, docs/scene-format.md; or Mitsuba 3 XML, .xml); with --resume: the scene "
-                     "moved");
+  render->add_option(
+      "scene", cmd.scene,
+      "Scene file (JSON, docs/scene-format.md; or Mitsuba 3 XML, .xml); with --resume: the scene "
+      "moved");
   std::vector<std::string> defines;
   render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
   render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
@@ -173,10 +174,10 @@ int main(int argc, char** argv) {
     }
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
-    for (const CLI::Option* fixed : {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt,
-                                     part_opt, region_opt, tile_opt, render->get_option("--spectral-bins"),
-                                     render->get_option("--aovs"), render->get_option("--stokes"),
-                                     render->get_option("--define")})
+    for (const CLI::Option* fixed :
+         {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt, part_opt, region_opt, tile_opt,
+          render->get_option("--spectral-bins"), render->get_option("--aovs"), render->get_option("--stokes"),
+          render->get_option("--define")})
       if (*fixed) {
         std::cerr
             << "ochre: error: " << fixed->get_name()
@@ -243,9 +244,9 @@ int main(int argc, char** argv) {
   }
   if (*frames_opt) {
     // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
-    for (const CLI::Option* single : {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt,
-                                      resume_opt, render->get_option("--checkpoint"),
-                                      render->get_option("--preview")})
+    for (const CLI::Option* single :
+         {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt, resume_opt,
+          render->get_option("--checkpoint"), render->get_option("--preview")})
       if (*single) {
         std::cerr << "ochre: error: " << single->get_name()
                   << ": not with --frames (a sequence renders whole frames; render one frame at a time "

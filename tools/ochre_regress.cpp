@@ -2,7 +2,7 @@
 //   ochre-regress DIR [--update] [--junit OUT.xml] [--html REPORT_DIR [--history RUN ...]] [--spp N]
 //                     [--reference-spp N] [--threads N]
 // Renders every DIR/*.json scene and compares its luminance with DIR/references/<name>.exr by a per-pixel
-// z-test with Sidak correction (renderer/regression_compare.h); --html writes a report to look at
+// z-test with Sidak correction (renderer/compare/regression_compare.h); --html writes a report to look at
 // (tools/regress/html_report.h).
 // Exit codes: 0 = every scene passes, 1 = a scene fails, 2 = bad input or usage.
 #include <fmt/format.h>
@@ -18,16 +18,16 @@
 #include <vector>
 
 #include "ochre/version.h"
-#include "renderer/atomic_file.h"
-#include "renderer/exr_reader.h"
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/regression_compare.h"
-#include "renderer/render.h"
-#include "renderer/render_output.h"
-#include "renderer/scene_loader.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/compare/regression_compare.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
+#include "renderer/output/output_files.h"
+#include "renderer/output/render_output.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/regress/html_report.h"
 #include "tools/regress/junit_report.h"
 #include "tools/regress/report_history.h"

@@ -9,21 +9,21 @@
 #include <optional>
 
 #include "materials/graph/graph_error.h"
-#include "renderer/frame_names.h"
-#include "renderer/image_error.h"
-#include "renderer/input_error.h"
-#include "renderer/load_progress.h"
-#include "renderer/memory_budget.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/partial_sums.h"
-#include "renderer/progress.h"
-#include "renderer/render.h"
-#include "renderer/render_identity.h"
-#include "renderer/render_output.h"
-#include "renderer/render_passes.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/integrator/render.h"
+#include "renderer/integrator/render_passes.h"
+#include "renderer/output/output_files.h"
+#include "renderer/output/partial_sums.h"
+#include "renderer/output/render_identity.h"
+#include "renderer/output/render_output.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/load_progress.h"
+#include "renderer/util/memory_budget.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/progress.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/checkpoint_resume.h"
+#include "tools/cli/frame_names.h"
 #include "tools/command_errors.h"
 #include "tools/render_part.h"
 
@@ -147,8 +147,8 @@ OutputSettings frame_outputs(const OutputSettings& out, uint64_t frame) {
 }
 
 // A frame sequence (docs/cli.md#frame-sequences): each frame is its own render and its own all-or-nothing
-// set of files; the flames take their state at the frame's time (renderer/flame_light.h), everything else
-// is the scene as loaded. Every frame's file names are checked before the first frame renders.
+// set of files; the flames take their state at the frame's time (renderer/lights/flame_light.h), everything
+// else is the scene as loaded. Every frame's file names are checked before the first frame renders.
 int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog& inputs, Phase& phase,
                   double load_seconds) {
   const OutputSettings& out = scene.outputs;

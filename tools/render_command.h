@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "renderer/render_split.h"
-#include "renderer/scene_loader.h"
+#include "renderer/film/render_split.h"
+#include "renderer/loader/scene_loader.h"
 
 namespace ochre {
 

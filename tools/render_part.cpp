@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-#include "renderer/input_error.h"
-#include "renderer/render_output.h"
-#include "renderer/scene.h"
+#include "renderer/output/render_output.h"
+#include "renderer/scene/scene.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 
@@ -73,8 +73,10 @@ PartialSumsHeader partial_header(const Scene& scene, const std::string& content_
   h.notes["ochre.display.view"] = out.view;
   h.notes["ochre.display.exposure"] = fmt::format("{}", out.exposure);
   // What turns the film into the output's RGB and display image, for ochre merge (which has no scene).
-  if (out.sensor_to_xyz) h.notes["ochre.sensorToXYZ"] = fmt::format("{}", fmt::join(out.sensor_to_xyz->m, " "));
-  if (out.white_balance_xyz) h.notes["ochre.display.whiteBalance"] = fmt::format("{}", fmt::join(*out.white_balance_xyz, " "));
+  if (out.sensor_to_xyz)
+    h.notes["ochre.sensorToXYZ"] = fmt::format("{}", fmt::join(out.sensor_to_xyz->m, " "));
+  if (out.white_balance_xyz)
+    h.notes["ochre.display.whiteBalance"] = fmt::format("{}", fmt::join(*out.white_balance_xyz, " "));
   return h;
 }
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "renderer/partial_sums.h"
-#include "renderer/render.h"
+#include "renderer/integrator/render.h"
+#include "renderer/output/partial_sums.h"
 #include "tools/render_command.h"
 
 namespace ochre {

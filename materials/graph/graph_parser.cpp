@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "materials/core/single_precision.h"
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/json_literal.h"
 #include "materials/nodes/spectrum_source.h"
 

@@ -11,7 +11,7 @@
 
 #include "materials/graph/compiled_material.h"
 #include "materials/graph/graph_error.h"
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/node_registry.h"
 
 namespace ochre {

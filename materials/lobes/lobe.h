@@ -32,7 +32,7 @@ enum LobeFlags : uint32_t {
   kLobeDelta = 1u << 4,       // sampled only; eval() and pdf() are 0
   kLobePolarizing = 1u << 5,  // eval_mueller() is not a depolarizer
   // A perfect mirror: one delta exit, wi = (-wo.x, -wo.y, wo.z), with probability 1. Lets the renderer
-  // sample lights through planar mirrors (renderer/planar_mirrors.h).
+  // sample lights through planar mirrors (renderer/lights/planar_mirrors.h).
   kLobeMirror = 1u << 6,
 };
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 

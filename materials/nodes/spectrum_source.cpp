@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "materials/core/single_precision.h"
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/json_literal.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"

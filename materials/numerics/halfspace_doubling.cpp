@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "materials/core/pi.h"
-#include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
 #include "materials/numerics/gauss_legendre.h"
 
 namespace ochre {
@@ -203,16 +202,6 @@ HalfspaceMultipleScattering halfspace_multiple_scattering(const std::vector<doub
       }
   }
   return out;
-}
-
-std::vector<double> lambert_sphere_three_term_coefficients() {
-  return {1.0, -4.0 / 3.0, 5.0 / 16.0};
-}
-
-std::vector<double> lambert_sphere_coefficients(int max_order) {
-  std::vector<double> A(max_order + 1);
-  for (int l = 0; l <= max_order; ++l) A[l] = lambert_sphere_legendre_coefficient(l);
-  return A;
 }
 
 }  // namespace ochre

@@ -39,9 +39,4 @@ HalfspaceMultipleScattering halfspace_multiple_scattering(const std::vector<doub
                                                           const std::vector<double>& eval_mu,
                                                           const HalfspaceDoublingOptions& options = {});
 
-// The Legendre coefficients A_0..A_2 of the three-term LS phase function (d'Eon Eq 5) and of the
-// full LS phase function up to order L.
-std::vector<double> lambert_sphere_three_term_coefficients();
-std::vector<double> lambert_sphere_coefficients(int max_order);
-
 }  // namespace ochre

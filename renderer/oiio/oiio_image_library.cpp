@@ -1,5 +1,5 @@
-// The module libochre_oiio.so: ImageLibrary (renderer/image_library.h) implemented with OpenImageIO. The
-// only file of ochre that includes OpenImageIO; it keeps no state of its own.
+// The module libochre_oiio.so: ImageLibrary (renderer/image/image_library.h) implemented with OpenImageIO.
+// The only file of ochre that includes OpenImageIO; it keeps no state of its own.
 
 // fmt first: OIIO bundles its own fmt (exceptions off) under the same include guards.
 #include <fmt/format.h>
@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "renderer/image_library.h"
+#include "renderer/image/image_library.h"
 
 namespace ochre {
 
@@ -193,7 +193,7 @@ class OiioImageLibrary final : public ImageLibrary {
 
 }  // namespace ochre
 
-// The module's one exported symbol (renderer/image_library.cpp looks it up with dlsym).
+// The module's one exported symbol (renderer/image/image_library.cpp looks it up with dlsym).
 extern "C" __attribute__((visibility("default"))) ochre::ImageLibrary* ochre_create_image_library(
     int interface_version) {
   if (interface_version != ochre::kImageLibraryInterfaceVersion) return nullptr;

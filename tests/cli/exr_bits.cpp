@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 
 namespace ochre::test {
 

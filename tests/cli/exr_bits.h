@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "renderer/exr_writer.h"
+#include "renderer/image/exr_writer.h"
 
 namespace ochre::test {
 

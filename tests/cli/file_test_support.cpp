@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "renderer/display_image.h"
+#include "renderer/image/display_image.h"
 
 namespace ochre::test {
 

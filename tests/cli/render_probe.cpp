@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test {

@@ -8,7 +8,7 @@
 
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"
 #include "spectra/embedded_tables.h"

@@ -10,8 +10,8 @@
 
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
-#include "renderer/display_image.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_cave_scene {

@@ -14,7 +14,7 @@
 #include "cli/exr_bits.h"
 #include "cli/file_test_support.h"
 #include "cli/process_control.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_checkpoint {

@@ -13,10 +13,10 @@
 #include <sstream>
 
 #include "cli/cli_runner.h"
-#include "renderer/ciede2000.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"
+#include "spectra/ciede2000.h"
 #include "spectra/color_space.h"
 #include "spectra/white_balance.h"
 #include "support/test_paths.h"

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "cli/cli_runner.h"
-#include "renderer/display_image.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_display_output {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_example_scenes {

@@ -7,7 +7,7 @@
 
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_frame_sequences {

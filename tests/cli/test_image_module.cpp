@@ -1,4 +1,4 @@
-// The image library module (renderer/image_library.h): `ochre` loads OpenImageIO only when it reads or
+// The image library module (renderer/image/image_library.h): `ochre` loads OpenImageIO only when it reads or
 // writes an image through it. With OCHRE_IMAGE_MODULE pointing nowhere, a render to EXR of a scene
 // without textures works (the module was never needed), and a command that needs it stops before any
 // work with a message naming the module and the variable, leaving no output behind.

@@ -1,7 +1,7 @@
-// Lights seen in planar mirrors (renderer/planar_mirrors.h) against closed-form irradiance: a Lambert floor
-// lit directly and through a vertical mirror. With integrator.mirror_lights the mirrored light is sampled
-// through the light's image and MIS-weighted against BSDF sampling; without it only BSDF sampling finds it
-// (and a point light's reflection not at all).
+// Lights seen in planar mirrors (renderer/lights/planar_mirrors.h) against closed-form irradiance: a Lambert
+// floor lit directly and through a vertical mirror. With integrator.mirror_lights the mirrored light is
+// sampled through the light's image and MIS-weighted against BSDF sampling; without it only BSDF sampling
+// finds it (and a point light's reflection not at all).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
-#include "renderer/exr_writer.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_negative_light {

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
-#include "renderer/exr_writer.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_nonfinite_values {

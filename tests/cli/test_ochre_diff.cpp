@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
-#include "renderer/display_image.h"
-#include "renderer/exr_writer.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_ochre_diff {

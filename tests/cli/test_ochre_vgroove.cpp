@@ -17,7 +17,7 @@
 
 #include "cli/cli_runner.h"
 #include "cli/vgroove_library_values.h"
-#include "renderer/display_image.h"
+#include "renderer/image/display_image.h"
 #include "spectra/cie.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"

@@ -249,7 +249,7 @@ fs::path vgroove_with_failing_plot(const fs::path& root) {
   fs::create_directories(root / "bin");
   fs::copy_file(bin_dir() / "ochre-vgroove", root / "bin" / "ochre-vgroove");
   fs::permissions(root / "bin" / "ochre-vgroove", fs::perms::owner_all);
-  // The image library module, where an installed tree has it (renderer/image_library.h).
+  // The image library module, where an installed tree has it (renderer/image/image_library.h).
   fs::create_directories(root / "lib" / "ochre");
   fs::copy_file(bin_dir() / ".." / "lib" / "ochre" / "libochre_oiio.so",
                 root / "lib" / "ochre" / "libochre_oiio.so");

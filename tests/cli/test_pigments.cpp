@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "cli/cli_runner.h"
-#include "renderer/ciede2000.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
+#include "spectra/ciede2000.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_pigments {

@@ -15,7 +15,7 @@
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_model.h"
 #include "materials/numerics/gauss_legendre.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "spectra/cie.h"
 #include "support/test_paths.h"
 

@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "cli/regress_suite.h"
-#include "renderer/exr_reader.h"
-#include "renderer/regression_compare.h"
+#include "renderer/compare/regression_compare.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 

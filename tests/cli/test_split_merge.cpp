@@ -11,7 +11,7 @@
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
 #include "cli/file_test_support.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 

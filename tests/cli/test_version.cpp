@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "cli/cli_runner.h"
-#include "renderer/exr_reader.h"
+#include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_version {

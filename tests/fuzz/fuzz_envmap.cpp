@@ -1,7 +1,7 @@
-// Fuzz target: environment maps (renderer/environment_map.h, renderer/environment_light.h) from HDR
-// and OpenEXR bytes. The input is written as map.exr when it starts with the OpenEXR magic number,
-// else as map.hdr, read by EnvironmentMap::load (OpenImageIO), turned into an environment light and
-// sampled and looked up in a few directions.
+// Fuzz target: environment maps (renderer/lights/environment_map.h, renderer/lights/environment_light.h) from
+// HDR and OpenEXR bytes. The input is written as map.exr when it starts with the OpenEXR magic number, else
+// as map.hdr, read by EnvironmentMap::load (OpenImageIO), turned into an environment light and sampled and
+// looked up in a few directions.
 //
 // Bounded work, skipped before loading (see docs/validation.md): images whose header declares more than
 // 2^20 values (texels x channels; a 30-byte header may declare gigabytes of pixels) in the image or in one
@@ -18,7 +18,7 @@
 #include <cstring>
 
 #include "fuzz_support.h"
-#include "renderer/environment_light.h"
+#include "renderer/lights/environment_light.h"
 #include "spectra/sampled_wavelengths.h"
 
 namespace {

@@ -1,13 +1,13 @@
-// Fuzz target: OBJ and PLY import (renderer/mesh_import.h, renderer/control_mesh.h) through the scene
-// loader. The input is the mesh file: written as mesh.ply when it starts with "ply", else as
-// mesh.obj, and loaded by two fixed scenes, one importing triangles (with generated smooth normals)
-// and one refining the polygons by one level of Catmull-Clark subdivision. Expected errors: InputError.
+// Fuzz target: OBJ and PLY import (renderer/shapes/mesh_import.h, renderer/shapes/control_mesh.h) through the
+// scene loader. The input is the mesh file: written as mesh.ply when it starts with "ply", else as mesh.obj,
+// and loaded by two fixed scenes, one importing triangles (with generated smooth normals) and one refining
+// the polygons by one level of Catmull-Clark subdivision. Expected errors: InputError.
 
 #include <array>
 #include <map>
 
 #include "fuzz_support.h"
-#include "renderer/scene_loader.h"
+#include "renderer/loader/scene_loader.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
-// Fuzz target: the Mitsuba 3 XML import (renderer/mitsuba_import.h) on XML text, written to scene.xml in
-// the fuzz workspace (so that it may name quad.obj, colours.ply, checker.ppm, sky.exr, ... and include
-// itself), translated and loaded, then a 4 x 4 render at 1 sample per pixel on one thread. The import's
-// sizes are fixed (a sphere's 96 subdivisions, a disk's 128 segments), so no input is skipped. Expected
-// errors: InputError, GraphError, ImageError.
+// Fuzz target: the Mitsuba 3 XML import (renderer/loader/mitsuba/mitsuba_import.h) on XML text, written to
+// scene.xml in the fuzz workspace (so that it may name quad.obj, colours.ply, checker.ppm, sky.exr, ... and
+// include itself), translated and loaded, then a 4 x 4 render at 1 sample per pixel on one thread. The
+// import's sizes are fixed (a sphere's 96 subdivisions, a disk's 128 segments), so no input is skipped.
+// Expected errors: InputError, GraphError, ImageError.
 
 #include "fuzz_support.h"
-#include "renderer/film.h"
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/film/film.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::filesystem::path file =

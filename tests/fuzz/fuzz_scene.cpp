@@ -1,4 +1,4 @@
-// Fuzz target: the scene loader (renderer/scene_loader.h) on scene JSON text, mutated byte-wise and by
+// Fuzz target: the scene loader (renderer/loader/scene_loader.h) on scene JSON text, mutated byte-wise and by
 // json_mutator.h, then a 4 x 4 render at 1 sample per pixel on one thread. The text is written to
 // scene.json in the fuzz workspace, so the scene may name the workspace's resource files (quad.obj,
 // cube_quads.obj, colours.ply, two_triangles.gltf, checker.ppm, sky.exr, red.csv; see fuzz_support.h).
@@ -12,9 +12,9 @@
 
 #include "fuzz_support.h"
 #include "json_mutator.h"
-#include "renderer/film.h"
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/film/film.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
 
 namespace {
 

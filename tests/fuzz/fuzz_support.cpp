@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "materials/graph/graph_error.h"
-#include "renderer/image_error.h"
-#include "renderer/input_error.h"
+#include "renderer/util/image_error.h"
+#include "spectra/input_error.h"
 
 namespace ochre::fuzz {
 

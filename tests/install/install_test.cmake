@@ -76,7 +76,7 @@ foreach(asset report.css report.js)
 endforeach()
 # The Python package: imported from the prefix alone (PYTHONPATH=PREFIX/PYTHON_DIR), it reports the version,
 # renders the copied scene to the bits the installed ochre wrote and loads a textured scene (the image
-# library module of PREFIX/lib/ochre, renderer/image_library.h).
+# library module of PREFIX/lib/ochre, renderer/image/image_library.h).
 if(PYTHON)
   set(ENV{PYTHONPATH} ${PREFIX}/${PYTHON_DIR})
   run(printed ${PYTHON} -c "

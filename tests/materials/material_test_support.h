@@ -12,7 +12,7 @@
 
 #include "materials/graph/compiled_material.h"
 #include "materials/graph/material_compiler.h"
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
 #include "materials/nodes/shading_context.h"

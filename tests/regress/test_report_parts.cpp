@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 #include "tools/regress/junit_report.h"

@@ -5,10 +5,10 @@
 #include <random>
 #include <thread>
 
-#include "renderer/accel.h"
-#include "renderer/input_error.h"
-#include "renderer/mesh_import.h"
-#include "renderer/procedural_shapes.h"
+#include "renderer/geometry/accel.h"
+#include "renderer/shapes/mesh_import.h"
+#include "renderer/shapes/procedural_shapes.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_accel {

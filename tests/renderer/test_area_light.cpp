@@ -6,9 +6,9 @@
 
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
-#include "renderer/area_light.h"
-#include "renderer/procedural_shapes.h"
-#include "renderer/surface_shading.h"
+#include "renderer/geometry/surface_shading.h"
+#include "renderer/lights/area_light.h"
+#include "renderer/shapes/procedural_shapes.h"
 #include "support/test_material.h"
 
 namespace ochre::test_area_light {

@@ -1,8 +1,8 @@
-// AtomicDirectory (renderer/atomic_directory.h): a directory appears complete or not at all, and an
+// AtomicDirectory (renderer/util/atomic_directory.h): a directory appears complete or not at all, and an
 // existing one is replaced only by commit().
 #include <gtest/gtest.h>
 
-#include "renderer/atomic_directory.h"
+#include "renderer/util/atomic_directory.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "renderer/atomic_file.h"
-#include "renderer/image_error.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 

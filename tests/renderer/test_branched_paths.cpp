@@ -8,8 +8,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_branched_paths {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "renderer/camera.h"
+#include "renderer/camera/camera.h"
 
 namespace ochre::test_camera_fov_axis {
 namespace {

@@ -1,9 +1,9 @@
-// The CIE 1994 colour difference (renderer/cie94.h) against values worked by hand from its definition
+// The CIE 1994 colour difference (spectra/cie94.h) against values worked by hand from its definition
 // (CIE 116-1995; graphic-arts constants kL = kC = kH = 1, K1 = 0.045, K2 = 0.015). The working is in
 // the comments so each expected value can be checked with a pocket calculator.
 #include <gtest/gtest.h>
 
-#include "renderer/cie94.h"
+#include "spectra/cie94.h"
 
 namespace ochre::test_cie94 {
 namespace {

@@ -1,7 +1,7 @@
 // Coverage of split renders: text forms, and the check that parts hold every sample of every pixel once.
 #include <gtest/gtest.h>
 
-#include "renderer/coverage.h"
+#include "renderer/film/coverage.h"
 
 namespace ochre::test_coverage {
 namespace {

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "renderer/displacement.h"
-#include "renderer/exr_writer.h"
-#include "renderer/input_error.h"
-#include "renderer/subdivision.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/shapes/displacement.h"
+#include "renderer/shapes/subdivision.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_displacement {

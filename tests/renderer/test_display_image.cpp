@@ -8,9 +8,9 @@
 #include <fstream>
 #include <optional>
 
-#include "renderer/display_image.h"
-#include "renderer/image_error.h"
-#include "renderer/ocio_display.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/ocio_display.h"
+#include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_display_image {

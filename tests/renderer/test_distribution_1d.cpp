@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "renderer/distribution_1d.h"
+#include "renderer/sampling/distribution_1d.h"
 
 namespace ochre::test_distribution_1d {
 namespace {

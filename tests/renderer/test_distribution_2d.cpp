@@ -14,7 +14,7 @@
 
 #include "materials/core/pcg32.h"
 #include "materials/lobes/sampling_check.h"
-#include "renderer/distribution_2d.h"
+#include "renderer/sampling/distribution_2d.h"
 
 namespace ochre::test_distribution_2d {
 namespace {

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "materials/lobes/sampling_check.h"
-#include "renderer/environment_light.h"
-#include "renderer/exr_writer.h"
-#include "renderer/input_error.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/lights/environment_light.h"
 #include "spectra/color_space.h"
+#include "spectra/input_error.h"
 #include "spectra/rgb_spectrum.h"
 #include "support/test_paths.h"
 

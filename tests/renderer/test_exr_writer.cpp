@@ -7,9 +7,9 @@
 #include <fstream>
 #include <limits>
 
-#include "renderer/exr_reader.h"
-#include "renderer/exr_writer.h"
-#include "renderer/image_error.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_exr_writer {

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "renderer/film.h"
+#include "renderer/film/film.h"
 
 namespace ochre::test_film {
 namespace {

@@ -1,4 +1,4 @@
-// The flicker of flames in a frame sequence (renderer/flicker_process.h, docs/lights.md#flicker): the
+// The flicker of flames in a frame sequence (renderer/lights/flicker_process.h, docs/lights.md#flicker): the
 // process has the preset's statistics (mean, relative standard deviation, correlation time), every frame is
 // a pure function of (seed, stream, frame), and the flame's state follows it.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "renderer/flame_light.h"
-#include "renderer/flicker_process.h"
-#include "renderer/light_presets.h"
-#include "renderer/sphere_light.h"
+#include "renderer/lights/flame_light.h"
+#include "renderer/lights/flicker_process.h"
+#include "renderer/lights/light_presets.h"
+#include "renderer/lights/sphere_light.h"
 
 namespace ochre::test_flicker_process {
 namespace {

@@ -1,4 +1,4 @@
-// Explicit groove plates (renderer/groove_shapes.h): tiling the facets along the grooves changes the
+// Explicit groove plates (renderer/shapes/groove_shapes.h): tiling the facets along the grooves changes the
 // triangles, not the surface.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <set>
 #include <tuple>
 
-#include "renderer/groove_shapes.h"
+#include "renderer/shapes/groove_shapes.h"
 
 namespace ochre::test_groove_shapes {
 namespace {

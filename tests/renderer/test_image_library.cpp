@@ -1,6 +1,6 @@
-// The image library module (renderer/image_library.h) through its interface: what it reads back of a PNG
-// it wrote (header, exact 8-bit codes, floats scaled to [0, 1]), and a file replaced between the header and
-// the pixels is refused rather than read into a buffer of the old size.
+// The image library module (renderer/image/image_library.h) through its interface: what it reads back of a
+// PNG it wrote (header, exact 8-bit codes, floats scaled to [0, 1]), and a file replaced between the header
+// and the pixels is refused rather than read into a buffer of the old size.
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/image_library.h"
+#include "renderer/image/image_library.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_image_library {

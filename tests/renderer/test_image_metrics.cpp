@@ -1,14 +1,14 @@
-// Image comparison metrics (renderer/image_metrics.h) on hand-made images with exact expected values,
-// and CIEDE2000 (renderer/ciede2000.h) against the published test data of Sharma, Wu, Dalal 2005.
+// Image comparison metrics (renderer/compare/image_metrics.h) on hand-made images with exact expected values,
+// and CIEDE2000 (spectra/ciede2000.h) against the published test data of Sharma, Wu, Dalal 2005.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "renderer/ciede2000.h"
-#include "renderer/display_image.h"
-#include "renderer/image_metrics.h"
-#include "renderer/input_error.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/image/display_image.h"
+#include "spectra/ciede2000.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_image_metrics {

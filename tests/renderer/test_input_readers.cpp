@@ -10,15 +10,15 @@
 #include <fstream>
 #include <string>
 
-#include "renderer/control_mesh.h"
-#include "renderer/display_image.h"
-#include "renderer/environment_map.h"
-#include "renderer/exr_reader.h"
-#include "renderer/image_error.h"
-#include "renderer/input_error.h"
-#include "renderer/mesh_file_reader.h"
-#include "renderer/mesh_import.h"
-#include "renderer/texture_system.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_reader.h"
+#include "renderer/lights/environment_map.h"
+#include "renderer/shapes/control_mesh.h"
+#include "renderer/shapes/mesh_file_reader.h"
+#include "renderer/shapes/mesh_import.h"
+#include "renderer/texture/texture_system.h"
+#include "renderer/util/image_error.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_input_readers {

@@ -1,13 +1,13 @@
-// The typed readers of scene JSON (renderer/json_fields.h) and the duplicate-key check of the JSON reader
-// (renderer/json_duplicate_keys.h): wrong types, fractional, wrapping and out-of-range integers, numbers
-// outside single precision and repeated keys are InputErrors naming the field.
+// The typed readers of scene JSON (renderer/json/json_fields.h) and the duplicate-key check of the JSON
+// reader (renderer/json/json_duplicate_keys.h): wrong types, fractional, wrapping and out-of-range integers,
+// numbers outside single precision and repeated keys are InputErrors naming the field.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/input_error.h"
-#include "renderer/json_duplicate_keys.h"
-#include "renderer/json_fields.h"
+#include "renderer/json/json_duplicate_keys.h"
+#include "renderer/json/json_fields.h"
+#include "spectra/input_error.h"
 #include "support/input_error_of.h"
 
 namespace ochre::test_json_fields {

@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "renderer/environment_light.h"
-#include "renderer/point_light.h"
-#include "renderer/scene.h"
-#include "renderer/sphere_light.h"
-#include "renderer/spot_light.h"
+#include "renderer/lights/environment_light.h"
+#include "renderer/lights/point_light.h"
+#include "renderer/lights/sphere_light.h"
+#include "renderer/lights/spot_light.h"
+#include "renderer/scene/scene.h"
 #include "spectra/cie.h"
 #include "spectra/constant_spectrum.h"
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <thread>
 
-#include "renderer/load_progress.h"
+#include "renderer/util/load_progress.h"
 
 namespace ochre::test_load_progress {
 namespace {

@@ -1,4 +1,4 @@
-// Memory estimates (renderer/memory_budget.h) refuse what does not fit before allocating it: the film,
+// Memory estimates (renderer/util/memory_budget.h) refuse what does not fit before allocating it: the film,
 // subdivided and tessellated meshes, procedural shapes.
 
 #include <gtest/gtest.h>
@@ -6,14 +6,14 @@
 #include <cmath>
 #include <limits>
 
-#include "renderer/film.h"
-#include "renderer/groove_shapes.h"
-#include "renderer/input_error.h"
-#include "renderer/memory_budget.h"
-#include "renderer/procedural_shapes.h"
-#include "renderer/render_output.h"
-#include "renderer/subdivision.h"
+#include "renderer/film/film.h"
+#include "renderer/output/render_output.h"
+#include "renderer/shapes/groove_shapes.h"
+#include "renderer/shapes/procedural_shapes.h"
+#include "renderer/shapes/subdivision.h"
+#include "renderer/util/memory_budget.h"
 #include "spectra/byte_size.h"
+#include "spectra/input_error.h"
 #include "support/input_error_of.h"
 
 namespace ochre::test_memory_budget {

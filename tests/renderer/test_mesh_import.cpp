@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "renderer/input_error.h"
-#include "renderer/mesh_import.h"
+#include "renderer/shapes/mesh_import.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_mesh_import {

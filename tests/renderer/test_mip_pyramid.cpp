@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "renderer/mip_pyramid.h"
+#include "renderer/texture/mip_pyramid.h"
 #include "support/awkward_floats.h"
 
 namespace ochre::test_mip_pyramid {

@@ -8,10 +8,10 @@
 
 #include <cmath>
 
-#include "renderer/json_file.h"
-#include "renderer/regression_compare.h"
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/compare/regression_compare.h"
+#include "renderer/integrator/render.h"
+#include "renderer/json/json_file.h"
+#include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_mitsuba_cornell_box {

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "renderer/exr_writer.h"
-#include "renderer/mitsuba_import.h"
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/mitsuba/mitsuba_import.h"
+#include "renderer/loader/scene_loader.h"
 #include "support/input_error_of.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"

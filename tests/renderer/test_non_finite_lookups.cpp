@@ -11,12 +11,12 @@
 #include <limits>
 #include <vector>
 
-#include "renderer/distribution_2d.h"
-#include "renderer/environment_map.h"
-#include "renderer/exr_writer.h"
-#include "renderer/input_error.h"
-#include "renderer/mesh.h"
-#include "renderer/texture_system.h"
+#include "renderer/geometry/mesh.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/lights/environment_map.h"
+#include "renderer/sampling/distribution_2d.h"
+#include "renderer/texture/texture_system.h"
+#include "spectra/input_error.h"
 #include "support/awkward_floats.h"
 #include "support/test_paths.h"
 

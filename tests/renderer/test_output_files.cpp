@@ -1,5 +1,5 @@
-// check_output_files (renderer/output_files.h): no output replaces an input, a link, a device, a FIFO or
-// a directory, and no two outputs are one file, whatever the spelling of the paths.
+// check_output_files (renderer/output/output_files.h): no output replaces an input, a link, a device, a FIFO
+// or a directory, and no two outputs are one file, whatever the spelling of the paths.
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
+#include "renderer/output/output_files.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_output_files {

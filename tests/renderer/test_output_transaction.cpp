@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "renderer/image_error.h"
-#include "renderer/output_transaction.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/output_transaction.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 

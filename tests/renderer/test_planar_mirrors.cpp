@@ -1,11 +1,11 @@
-// Planar mirrors (renderer/planar_mirrors.h): which meshes qualify, the reflection geometry, and the
+// Planar mirrors (renderer/lights/planar_mirrors.h): which meshes qualify, the reflection geometry, and the
 // selection of (mirror, light) pairs.
 
 #include <gtest/gtest.h>
 
-#include "renderer/planar_mirrors.h"
-#include "renderer/procedural_shapes.h"
-#include "renderer/transform.h"
+#include "renderer/geometry/transform.h"
+#include "renderer/lights/planar_mirrors.h"
+#include "renderer/shapes/procedural_shapes.h"
 #include "support/test_material.h"
 
 namespace ochre::test_planar_mirrors {

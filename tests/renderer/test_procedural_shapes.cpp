@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "renderer/input_error.h"
-#include "renderer/procedural_shapes.h"
+#include "renderer/shapes/procedural_shapes.h"
+#include "spectra/input_error.h"
 
 namespace ochre::test_procedural_shapes {
 namespace {

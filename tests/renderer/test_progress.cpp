@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/progress.h"
+#include "renderer/util/progress.h"
 
 namespace ochre::test_progress {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "renderer/exr_reader.h"
-#include "renderer/input_error.h"
-#include "renderer/regression_compare.h"
+#include "renderer/compare/regression_compare.h"
+#include "renderer/image/exr_reader.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_regression_compare {

@@ -1,9 +1,8 @@
 // Renders in passes stop at clean sample boundaries and sum to the bits of one render.
 #include <gtest/gtest.h>
 
-#include "renderer/duration.h"
-#include "renderer/render_passes.h"
-#include "renderer/scene_loader.h"
+#include "renderer/integrator/render_passes.h"
+#include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_render_passes {
@@ -72,19 +71,6 @@ TEST(RenderPasses, CheckpointsComeAtIntervalsAndNeverAfterTheLastPass) {
       [] { return false; });
   EXPECT_EQ(r.next, 9u);
   EXPECT_EQ(at, (std::vector<uint32_t>{1, 2, 3, 4, 5, 6, 7, 8}));
-}
-
-TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
-  EXPECT_EQ(parse_duration("90"), 90.0);
-  EXPECT_EQ(parse_duration("90s"), 90.0);
-  EXPECT_EQ(parse_duration("0.5"), 0.5);
-  EXPECT_EQ(parse_duration("10m"), 600.0);
-  EXPECT_EQ(parse_duration("1.5h"), 5400.0);
-  EXPECT_EQ(parse_duration("1h30m"), 5400.0);
-  EXPECT_EQ(parse_duration("2h0m5s"), 7205.0);
-  for (const char* bad : {"", "0", "0s", "-5", "5x", "m", "1m2h", "1h1h", "1h30", "1e3", "0x10", " 5", "5 ",
-                          "inf", "nan", "400d", "9000h"})
-    EXPECT_FALSE(parse_duration(bad)) << bad;
 }
 
 }  // namespace

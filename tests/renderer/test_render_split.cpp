@@ -1,8 +1,8 @@
 // A render split into sample ranges and merged equals the single render bit for bit.
 #include <gtest/gtest.h>
 
-#include "renderer/render.h"
-#include "renderer/scene_loader.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_render_split {

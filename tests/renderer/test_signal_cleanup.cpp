@@ -1,4 +1,4 @@
-// Signal cleanup (renderer/signal_cleanup.h): a process ended by SIGINT or SIGTERM leaves no temporary
+// Signal cleanup (renderer/util/signal_cleanup.h): a process ended by SIGINT or SIGTERM leaves no temporary
 // output behind, still ends by that signal, and a signal during the renames of an OutputTransaction
 // waits until the set is complete. Each case runs in a forked child.
 
@@ -9,9 +9,9 @@
 
 #include <fstream>
 
-#include "renderer/atomic_file.h"
-#include "renderer/output_transaction.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/signal_cleanup.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_signal_cleanup {

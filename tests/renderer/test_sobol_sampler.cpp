@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "renderer/sampler.h"
-#include "renderer/sobol_sampler.h"
+#include "renderer/sampling/sampler.h"
+#include "renderer/sampling/sobol_sampler.h"
 
 namespace ochre::test_sobol_sampler {
 namespace {

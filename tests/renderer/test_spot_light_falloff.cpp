@@ -1,11 +1,11 @@
-// The spot light's two falloff ramps (renderer/spot_light.h): pbrt-v4's smoothstep in the cosine and
+// The spot light's two falloff ramps (renderer/lights/spot_light.h): pbrt-v4's smoothstep in the cosine and
 // Mitsuba 3's linear ramp in the angle, and a power (used to choose lights) that is the integral of the
 // profile over the sphere.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/spot_light.h"
+#include "renderer/lights/spot_light.h"
 #include "spectra/constant_spectrum.h"
 
 namespace ochre::test_spot_light_falloff {

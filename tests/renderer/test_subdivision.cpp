@@ -15,8 +15,8 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
-#include "renderer/input_error.h"
-#include "renderer/subdivision.h"
+#include "renderer/shapes/subdivision.h"
+#include "spectra/input_error.h"
 #include "support/test_paths.h"
 
 namespace ochre::test_subdivision {

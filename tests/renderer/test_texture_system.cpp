@@ -16,9 +16,9 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/display_image.h"
-#include "renderer/exr_writer.h"
-#include "renderer/texture_system.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/texture/texture_system.h"
 #include "spectra/color_space.h"
 #include "support/test_paths.h"
 

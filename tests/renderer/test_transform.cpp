@@ -2,9 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/input_error.h"
-#include "renderer/json_fields.h"
-#include "renderer/transform.h"
+#include "renderer/geometry/transform.h"
+#include "renderer/json/json_fields.h"
+#include "spectra/input_error.h"
 
 namespace ochre::test_transform {
 namespace {

@@ -9,7 +9,7 @@
 namespace ochre::test {
 
 // Writes `text` to `path` (creating directories), directly: a test's own file, not an output of ochre
-// (those go through ochre::write_text_file, renderer/atomic_file.h).
+// (those go through ochre::write_text_file, renderer/util/atomic_file.h).
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   std::ofstream(path) << text;

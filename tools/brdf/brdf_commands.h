@@ -4,7 +4,7 @@
 // GraphError (the caller prints it and exits with 2). Output files are written under a temporary name
 // and renamed when complete, so a failure leaves no partial file; an output that is one of the files
 // read (the material, a texture, the input CSV, ...), a link, a device or a FIFO is refused
-// (renderer/output_files.h).
+// (renderer/output/output_files.h).
 
 #include <cstdint>
 #include <string>

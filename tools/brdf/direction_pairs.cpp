@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "tools/csv_columns.h"
 
 namespace ochre {

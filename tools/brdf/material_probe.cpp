@@ -7,10 +7,10 @@
 #include <sstream>
 
 #include "materials/graph/material_compiler.h"
-#include "materials/graph/resource_resolver.h"
-#include "renderer/input_error.h"
-#include "renderer/json_file.h"
-#include "renderer/texture_system.h"
+#include "materials/nodes/resource_resolver.h"
+#include "renderer/json/json_file.h"
+#include "renderer/texture/texture_system.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/progress.h"
+#include "renderer/output/output_files.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/progress.h"
+#include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
 #include "tools/fit/fit_report.h"

@@ -7,7 +7,7 @@
 
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_optics.h"
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/named_spectra.h"
 #include "spectra/tabulated_spectrum.h"
 

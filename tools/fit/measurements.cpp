@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/sampled_wavelengths.h"
 #include "tools/csv_columns.h"
 

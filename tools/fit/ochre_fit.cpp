@@ -14,8 +14,8 @@
 #include <exception>
 
 #include "ochre/version.h"
-#include "renderer/image_error.h"
-#include "renderer/input_error.h"
+#include "renderer/util/image_error.h"
+#include "spectra/input_error.h"
 #include "tools/fit/fit_commands.h"
 #include "tools/unsigned_option.h"
 

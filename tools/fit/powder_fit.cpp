@@ -8,7 +8,7 @@
 #include <limits>
 #include <ostream>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "tools/fit/powder_fit_grid.h"
 #include "tools/fit/powder_fit_model.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "tools/csv_columns.h"
 
 namespace ochre {

@@ -6,16 +6,16 @@
 
 #include <cmath>
 
-#include "materials/graph/resource_resolver.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/spectrum_source.h"
-#include "renderer/ciede2000.h"
-#include "renderer/display_image.h"
-#include "renderer/exr_reader.h"
-#include "renderer/image_metrics.h"
-#include "renderer/input_error.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_reader.h"
 #include "spectra/cie.h"
+#include "spectra/ciede2000.h"
 #include "spectra/color_space.h"
 #include "spectra/constant_spectrum.h"
+#include "spectra/input_error.h"
 #include "spectra/negative_value.h"
 #include "spectra/product_spectrum.h"
 #include "spectra/rgb_spectrum.h"

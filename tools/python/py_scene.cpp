@@ -10,12 +10,12 @@
 #include <mutex>
 #include <thread>
 
-#include "renderer/exr_writer.h"
-#include "renderer/input_error.h"
-#include "renderer/mitsuba_import.h"
-#include "renderer/render.h"
-#include "renderer/render_output.h"
-#include "renderer/scene_loader.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/integrator/render.h"
+#include "renderer/loader/mitsuba/mitsuba_import.h"
+#include "renderer/loader/scene_loader.h"
+#include "renderer/output/render_output.h"
+#include "spectra/input_error.h"
 #include "tools/python/py_support.h"
 
 namespace ochre::python {

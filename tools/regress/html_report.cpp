@@ -8,8 +8,8 @@
 #include <set>
 #include <system_error>
 
-#include "renderer/atomic_file.h"
-#include "renderer/input_error.h"
+#include "renderer/util/atomic_file.h"
+#include "spectra/input_error.h"
 #include "tools/regress/report_assets.h"
 #include "tools/regress/report_history.h"
 #include "tools/regress/scene_data.h"

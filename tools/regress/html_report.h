@@ -2,7 +2,7 @@
 // The HTML report of an ochre-regress run (--html DIR, docs/tools.md): a static, self-contained folder
 // (index.html, a page per scene, PNG images, the pixel values as <script> files, report.css and
 // report.js; nothing loaded from elsewhere, usable from a file:// URL), written all or nothing: the files
-// go into a scratch directory that replaces DIR only when complete (renderer/atomic_directory.h), and
+// go into a scratch directory that replaces DIR only when complete (renderer/util/atomic_directory.h), and
 // only an earlier report or an empty directory is ever replaced.
 
 #include <chrono>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/atomic_directory.h"
+#include "renderer/util/atomic_directory.h"
 #include "tools/regress/index_page.h"
 #include "tools/regress/junit_report.h"
 #include "tools/regress/scene_report.h"

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <ctime>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/input_file.h"
 
 namespace ochre {

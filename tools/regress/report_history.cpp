@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <system_error>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "renderer/render_output.h"
+#include "renderer/output/render_output.h"
 #include "spectra/color_space.h"
 
 namespace ochre {

@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "renderer/display_image.h"
-#include "renderer/exr_writer.h"
-#include "renderer/image_metrics.h"
-#include "renderer/regression_compare.h"
+#include "renderer/compare/image_metrics.h"
+#include "renderer/compare/regression_compare.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_writer.h"
 
 namespace ochre {
 

@@ -17,7 +17,7 @@
 #include <exception>
 
 #include "ochre/version.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/util/signal_cleanup.h"
 #include "tools/vgroove/vgroove_commands.h"
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "renderer/display_image.h"
+#include "renderer/image/display_image.h"
 #include "spectra/cie.h"
 #include "spectra/color_space.h"
 

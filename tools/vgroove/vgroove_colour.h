@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "renderer/ciede2000.h"
+#include "spectra/ciede2000.h"
 
 namespace ochre {
 

@@ -3,8 +3,8 @@
 // Simonot and Hebert 2019 (materials/lobes/vgroove/) as numbers, tables and figures. Each returns the
 // exit code (0 done, 1 a plot script failed); bad input throws InputError (the caller prints it and
 // exits with 2). Output files follow docs/cli.md, "Output files": checked before any work
-// (renderer/output_files.h), written under temporary names and renamed together when all are complete
-// (renderer/output_transaction.h).
+// (renderer/output/output_files.h), written under temporary names and renamed together when all are complete
+// (renderer/util/output_transaction.h).
 
 #include <string>
 
@@ -65,7 +65,7 @@ int run_directional(const DirectionalArgs& args);
 int run_tables(const TablesArgs& args);
 int run_maps(const MapsArgs& args);
 int run_profile(const ProfileArgs& args);
-// Renders explicit grooves and the two closures against the exact R (renderer/render.h).
+// Renders explicit grooves and the two closures against the exact R (renderer/integrator/render.h).
 int run_compare(const CompareArgs& args);
 
 }  // namespace ochre

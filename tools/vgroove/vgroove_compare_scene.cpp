@@ -7,7 +7,7 @@
 
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "renderer/groove_shapes.h"
+#include "renderer/shapes/groove_shapes.h"
 
 namespace ochre {
 

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "renderer/atomic_file.h"
-#include "renderer/input_error.h"
-#include "renderer/output_files.h"
-#include "renderer/output_transaction.h"
-#include "renderer/signal_cleanup.h"
+#include "renderer/output/output_files.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/output_transaction.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/csv_columns.h"
 #include "tools/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/sampled_wavelengths.h"
 
 namespace ochre {

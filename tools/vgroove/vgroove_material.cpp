@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "renderer/input_error.h"
+#include "spectra/input_error.h"
 #include "spectra/named_spectra.h"
 #include "tools/vgroove/vgroove_inputs.h"
 

@@ -1,6 +1,6 @@
 #include "tools/vgroove/vgroove_png.h"
 
-#include "renderer/display_image.h"
+#include "renderer/image/display_image.h"
 
 namespace ochre {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Writes a square 8-bit RGB map as PNG (renderer/display_image.h, atomically).
+// Writes a square 8-bit RGB map as PNG (renderer/image/display_image.h, atomically).
 
 #include <cstdint>
 #include <filesystem>
@@ -12,7 +12,7 @@ class AtomicOutput;
 
 void write_map_png(const std::filesystem::path& path, int size, const std::vector<std::uint8_t>& rgb,
                    const std::string& description);
-// The same into output.temp_path(), without committing (renderer/output_transaction.h).
+// The same into output.temp_path(), without committing (renderer/util/output_transaction.h).
 void write_map_png(AtomicOutput& output, int size, const std::vector<std::uint8_t>& rgb,
                    const std::string& description);
 

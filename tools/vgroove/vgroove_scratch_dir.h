@@ -1,11 +1,11 @@
 #pragma once
 // A scratch directory of ochre-vgroove (panels of a map grid, scenes of a comparison): created on
 // construction, removed with everything in it when it goes out of scope, or by the signal handler
-// (renderer/signal_cleanup.h) when the tool is interrupted.
+// (renderer/util/signal_cleanup.h) when the tool is interrupted.
 
 #include <filesystem>
 
-#include "renderer/signal_cleanup.h"
+#include "renderer/util/signal_cleanup.h"
 
 namespace ochre {
 

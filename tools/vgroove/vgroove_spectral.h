@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "renderer/ciede2000.h"
+#include "spectra/ciede2000.h"
 #include "tools/vgroove/vgroove_material.h"
 
 namespace ochre {

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "materials/lobes/vgroove/vgroove_reference.h"
-#include "renderer/cie94.h"
+#include "spectra/cie94.h"
 #include "tools/vgroove/vgroove_colour.h"
 #include "tools/vgroove/vgroove_material.h"
 #include "tools/vgroove/vgroove_printed_tables.h"

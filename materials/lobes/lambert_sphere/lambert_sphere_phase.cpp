@@ -67,4 +67,14 @@ double lambert_sphere_inverse_cdf(double xi) {
   return u;
 }
 
+std::vector<double> lambert_sphere_three_term_coefficients() {
+  return {1.0, -4.0 / 3.0, 5.0 / 16.0};
+}
+
+std::vector<double> lambert_sphere_coefficients(int max_order) {
+  std::vector<double> A(max_order + 1);
+  for (int l = 0; l <= max_order; ++l) A[l] = lambert_sphere_legendre_coefficient(l);
+  return A;
+}
+
 }  // namespace ochre

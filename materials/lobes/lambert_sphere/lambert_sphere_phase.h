@@ -8,6 +8,7 @@
 // normalised to 1 over the sphere: 2 pi * integral_{-1}^{1} p(u) du = 1.
 
 #include <cmath>
+#include <vector>
 
 namespace ochre {
 
@@ -51,5 +52,11 @@ T sample_lambert_sphere_cosine_approx(T xi) {
 double lambert_sphere_cdf(double u);
 // Exact inverse CDF by safeguarded Newton iteration on lambert_sphere_cdf (reference for Eq 7).
 double lambert_sphere_inverse_cdf(double xi);
+
+// The Legendre coefficients A_0..A_2 of the three-term LS phase function (d'Eon Eq 5) and of the
+// full LS phase function up to order L: the input of the half-space solver
+// (materials/numerics/halfspace_doubling.h).
+std::vector<double> lambert_sphere_three_term_coefficients();
+std::vector<double> lambert_sphere_coefficients(int max_order);
 
 }  // namespace ochre

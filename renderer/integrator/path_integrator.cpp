@@ -1,0 +1,410 @@
+#include "renderer/integrator/path_integrator.h"
+
+#include <cmath>
+#include <optional>
+
+#include "materials/core/frame.h"
+#include "materials/core/sampling.h"
+#include "materials/graph/uniform_closure_memo.h"
+#include "materials/lobes/closure.h"
+#include "renderer/geometry/surface_shading.h"
+
+namespace ochre {
+
+// One scattering vertex of a path: geometry, shading frame and the evaluated closure.
+struct PathVertex {
+  SurfacePoint sp;
+  Vec3 ng;  // unit geometric normal: on the side of wo, except for refracting closures (the mesh's own)
+  Frame frame;
+  Vec3 wo_local;
+  Closure closure;
+  uint32_t mesh = 0;
+};
+
+namespace {
+
+// Shading frame around the interpolated normal. For reflection-only closures it is flipped to the
+// viewer's side of the surface (both sides of a mesh reflect alike), falling back to the geometric normal
+// where the shading normal hides the viewer. Refracting closures need to know which side is outside: their
+// frame keeps the mesh's orientation (the geometric normal points outside), so wo may be below it.
+Frame shading_frame(const SurfacePoint& sp, const Vec3& ng, const Vec3& wo, bool keep_orientation,
+                    const Closure& closure) {
+  Vec3 ns = sp.ns;
+  if (dot(ns, ng) < 0.0f) ns = -ns;
+  if (!keep_orientation && dot(ns, wo) <= 0.0f) ns = ng;
+  // Anisotropic lobes are defined about local x = the closure's tangent (closure.h).
+  return closure.has_tangent() ? Frame::from_normal_tangent(ns, closure.tangent()) : Frame::from_normal(ns);
+}
+
+void record_first_hit(const PathVertex& v, float distance, const SampledWavelengths& lambda, FirstHit& out) {
+  out.hit = true;
+  out.depth = distance;
+  out.normal = v.frame.n;
+  out.albedo = SampledSpectrum(0.0f);
+  for (int i = 0; i < v.closure.lobe_count(); ++i) {
+    const WeightedLobe& l = v.closure.lobe(i);
+    out.albedo += l.weight * l.lobe->albedo_hint(v.wo_local, lambda);
+  }
+}
+
+// The lobe response at a vertex in world space, for the throughput policy T. In mode off (and for
+// closures with no polarizing non-delta lobe) only M00 is computed.
+template <class T>
+WorldResponse vertex_response(const PathVertex& v, const Vec3& wo, const Vec3& wi_local,
+                              const SampledWavelengths& lambda, std::optional<MuellerResponse>& storage) {
+  WorldResponse r;
+  r.wo = wo;
+  if (!T::kPolarized || !v.closure.has_polarizing_non_delta_lobes()) {
+    r.f = v.closure.eval(v.wo_local, wi_local, lambda);
+    return r;
+  }
+  const MuellerResponse& m = storage.emplace(v.closure.eval_mueller(v.wo_local, wi_local, lambda));
+  r.m = &m.m;
+  r.f = m00(m.m);
+  r.out_x = v.frame.to_world(m.out_x);
+  r.in_x = v.frame.to_world(m.in_x);
+  return r;
+}
+
+// The response of a sampled direction (weight = M00 |cos| / pdf already in bs.weight).
+template <class T>
+WorldResponse sampled_response(const PathVertex& v, const Vec3& wo, LobeSample& bs,
+                               const SampledWavelengths& lambda) {
+  WorldResponse r;
+  r.wo = wo;
+  r.f = bs.weight;
+  if (!T::kPolarized) return r;
+  if (bs.delta) {
+    if (!bs.has_mueller) return r;
+  } else {
+    if (!v.closure.has_polarizing_non_delta_lobes()) return r;
+    bs.mueller = v.closure.eval_mueller(v.wo_local, bs.wi, lambda);
+    bs.mueller.m = bs.mueller.m * (abs_cos_theta(bs.wi) / bs.pdf);
+  }
+  r.m = &bs.mueller.m;
+  r.out_x = v.frame.to_world(bs.mueller.out_x);
+  r.in_x = v.frame.to_world(bs.mueller.in_x);
+  return r;
+}
+
+// Picks an index with probabilities pmf[0..n) for u in [0, 1) (the last one with a non-zero pmf when rounding
+// leaves u beyond the sum).
+size_t pick_light(const Scene::LightPmfs& pmf, size_t n, float u) {
+  float cdf = 0.0f;
+  size_t last = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!(pmf[i] > 0.0f)) continue;
+    cdf += pmf[i];
+    last = i;
+    if (u < cdf) break;
+  }
+  return last;
+}
+
+// The camera's Stokes x axis for a ray: the image x axis, made perpendicular to the ray.
+Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
+  const Vec3 right = camera.basis().right;
+  const Vec3 x = right - dir * dot(right, dir);
+  const float len = length(x);
+  return len > 1e-6f ? x / len : Frame::from_normal(dir).s;
+}
+
+}  // namespace
+
+template <class Sampler, class T>
+void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
+                                  const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                                  const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
+  // A single light is picked whatever the number: its dimension is not drawn.
+  size_t index = 0;
+  if (pmfs || scene_.light_selection.size() > 1) {
+    const float u = sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLightChoice));
+    index = pmfs ? pick_light(*pmfs, scene_.lights.size(), u) : scene_.light_selection.sample(u);
+  }
+  const float pmf = pmfs ? (*pmfs)[index] : scene_.light_selection.pmf(index);
+  if (!(pmf > 0.0f)) return;
+  const Light& light = *scene_.lights[index];
+  const auto ls =
+      light.sample(v.sp.p, sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition)), lambda);
+  if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return;
+  const Vec3 wi_local = v.frame.to_local(ls->wi);
+  if (dot(ls->wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
+  std::optional<MuellerResponse> storage;  // only in polarized modes (0.5 KB not zeroed otherwise)
+  const WorldResponse response = vertex_response<T>(v, wo, wi_local, lambda, storage);
+  if (response.f.is_black()) return;
+  const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
+  if (incoming.radiance.is_black()) return;
+
+  Ray shadow;
+  shadow.origin = offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, ls->wi);
+  shadow.dir = ls->wi;
+  shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
+  ++stats.shadow_rays;
+  if (scene_.accel->occluded(shadow)) return;
+
+  const float light_pdf = pmf * ls->pdf;
+  const float mis = ls->delta || ls->only_by_light_sampling
+                        ? 1.0f
+                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+  throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
+}
+
+template <class Sampler, class T>
+void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T& throughput,
+                                    const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                                    LobeArena& arena, PathStats& stats, SensorStokes& L) const {
+  const MirrorLights::Choice choice =
+      scene_.mirror_lights.sample(sampler.get_1d(SampleDims::bounce(depth, SampleDims::kMirrorLightChoice)));
+  if (!(choice.pmf > 0.0f)) return;
+  const PlanarMirror& mirror = *choice.mirror;
+  const Light& light = *scene_.lights[choice.light];
+  const float side = mirror.signed_distance(v.sp.p);
+  if (side == 0.0f) return;
+  // A point y on the light as seen from x's mirror image x' (planar_mirrors.h): x -> m -> y has the
+  // direction and pdf of x' -> y reflected in the plane.
+  const Vec2 u = sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition));
+  const Vec2 u_shifted{u.x < 0.5f ? u.x + 0.5f : u.x - 0.5f, u.y < 0.5f ? u.y + 0.5f : u.y - 0.5f};
+  const Vec3 x_image = mirror.reflect_point(v.sp.p);
+  const auto ls = light.sample(x_image, u_shifted, lambda);
+  if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black() || std::isinf(ls->distance)) return;
+  const Vec3 y = x_image + ls->wi * ls->distance;
+  if (mirror.signed_distance(y) * side <= 0.0f) return;  // the light is behind the mirror
+  const Vec3 wi = mirror.reflect_direction(ls->wi);
+  const Vec3 wi_local = v.frame.to_local(wi);
+  if (dot(wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
+  std::optional<MuellerResponse> storage;          // only in polarized modes (0.5 KB not zeroed otherwise)
+  WorldResponse at_x = vertex_response<T>(v, wo, wi_local, lambda, storage);
+  if (at_x.f.is_black()) return;
+  const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
+  if (incoming.radiance.is_black()) return;
+
+  // The first surface toward the image must be the mirror itself, and the light visible from there.
+  const Ray to_mirror{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  ++stats.rays;
+  const auto hit = scene_.accel->intersect(to_mirror);
+  if (!hit || static_cast<int>(hit->mesh) != mirror.mesh) return;
+  PathVertex m;
+  m.sp = surface_point(scene_.meshes, *hit, to_mirror);
+  const Vec3 wo_m = -wi;
+  m.ng = dot(m.sp.ng, wo_m) >= 0.0f ? m.sp.ng : -m.sp.ng;
+  Ray shadow;
+  shadow.origin = offset_ray_origin(m.sp.p, m.sp.p_error, m.ng, ls->wi);
+  shadow.dir = ls->wi;
+  shadow.tmax = length(y - m.sp.p) * (1.0f - 1e-4f);
+  ++stats.shadow_rays;
+  if (scene_.accel->occluded(shadow)) return;  // before the mirror's material: occluded samples skip it
+
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
+  scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
+  m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
+  m.wo_local = m.frame.to_local(wo_m);
+  auto exit = m.closure.sample(m.wo_local, 0.5f, Vec2{0.5f, 0.5f}, lambda);  // the mirror's only exit
+  if (!exit || exit->weight.is_black()) return;
+
+  const float light_pdf = choice.pmf * ls->pdf;
+  const float mis = ls->delta || ls->only_by_light_sampling
+                        ? 1.0f
+                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+  const float k = abs_cos_theta(wi_local) * mis / light_pdf;
+  if (at_x.m) storage->m = storage->m * k;
+  T through_mirror = throughput;
+  through_mirror.scatter(at_x, at_x.f * k);
+  through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+}
+
+float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf,
+                                               const Vec3& p, const Vec3& ng) const {
+  const float pmf = scene_.mirror_lights.pmf(mirror, light);
+  if (!(pmf > 0.0f)) return 1.0f;
+  const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
+  const Vec3 x_image = scene_.mirror_lights.mirrors()[mirror].reflect_point(x);
+  return power_heuristic(bsdf_pdf, pmf * area.pdf(x_image, p, ng));
+}
+
+// What a path carries from one vertex to the next, besides the vertex itself.
+template <class T>
+struct PathState {
+  SensorStokes L{};
+  T beta;
+  bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
+  float prev_pdf = 0.0f;
+  Vec3 prev_p{};
+  // The last vertex was a planar mirror reached from a non-delta vertex x (position, BSDF pdf): emission
+  // found next could also have been sampled through the mirror (mirrored_light).
+  int chain_mirror = -1;
+  float chain_pdf = 0.0f;
+  Vec3 chain_origin{};
+  // The lights' probabilities at the last vertex that sampled a light, when they depend on the point.
+  Scene::LightPmfs light_pmfs{};
+  Ray ray;
+  float path_length = 0.0f;  // along the path so far, for the texture footprint
+};
+
+template <class Sampler, class T>
+bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, const RayCone& cone,
+                            const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                            size_t arena_floor, bool own_lobes, PathStats& stats, FirstHit* first_hit) const {
+  const RenderSettings& settings = scene_.settings;
+  const auto light_pmf = [&](int light) {
+    return local_lights_ ? s.light_pmfs[light] : scene_.light_pmf(light);
+  };
+  ++stats.rays;
+  const auto hit = scene_.accel->intersect(s.ray);
+  if (!hit) {
+    if (scene_.environment) {
+      // After the camera or a delta lobe the environment could not have been sampled: no MIS, and no
+      // pdf lookup (one cache miss fewer for rays that see the sky directly).
+      float env_pdf = 0.0f;
+      const SampledSpectrum Le = s.specular ? scene_.environment->radiance(s.ray.dir, lambda)
+                                            : scene_.environment->radiance(s.ray.dir, lambda, &env_pdf);
+      const float w =
+          s.specular ? 1.0f : power_heuristic(s.prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
+      s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, s.L);
+    }
+    return false;
+  }
+
+  v.sp = surface_point(scene_.meshes, *hit, s.ray);
+  v.mesh = hit->mesh;
+  const Vec3 wo = -s.ray.dir;
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
+  s.path_length += hit->t * length(s.ray.dir);
+  ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
+  // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
+  // units through the triangle's world-per-uv scale.
+  ctx.footprint = cone.width_at(s.path_length);
+  if (v.sp.area_scale_uv > 0.0f) ctx.uv_footprint = ctx.footprint / std::sqrt(v.sp.area_scale_uv);
+  if (own_lobes)
+    scene_.materials[mesh.material]->evaluate(ctx, arena, v.closure);
+  else
+    evaluate_memoized(*scene_.materials[mesh.material], ctx, arena, v.closure);
+
+  // Emission seen by this path segment (one-sided: front face only).
+  if (!v.closure.emission().is_black() && dot(v.sp.ng, wo) > 0.0f) {
+    float w = 1.0f;
+    const int light = scene_.mesh_light[hit->mesh];
+    if (!s.specular && light >= 0) {
+      const auto& area = static_cast<const AreaLight&>(*scene_.lights[light]);
+      w = power_heuristic(s.prev_pdf, light_pmf(light) * area.pdf(s.prev_p, v.sp.p, v.sp.ng));
+    } else if (s.chain_mirror >= 0 && light >= 0) {
+      w = mirrored_emission_weight(s.chain_mirror, light, s.chain_origin, s.chain_pdf, v.sp.p, v.sp.ng);
+    }
+    const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
+    s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, s.L);
+  }
+  if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) return false;
+
+  const bool refracts = v.closure.has_transmission();
+  v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
+  v.frame = shading_frame(v.sp, v.ng, wo, refracts, v.closure);
+  v.wo_local = v.frame.to_local(wo);
+  if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(s.ray.dir), lambda, *first_hit);
+
+  if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
+    if (local_lights_) scene_.light_pmfs(v.sp.p, s.light_pmfs);
+    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, s.L);
+    if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
+      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, s.L);
+  }
+  return true;
+}
+
+template <class Sampler, class T>
+bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t depth,
+                             const SampledWavelengths& lambda, const Sampler& sampler) const {
+  const Vec3 wo = -s.ray.dir;
+  auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
+                             sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
+  if (!bs || bs->weight.is_black()) return false;
+  const Vec3 wi = v.frame.to_world(bs->wi);
+  if (dot(wi, v.ng) * bs->wi.z <= 0.0f) return false;  // shading and geometric sides disagree: no light leaks
+
+  s.beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
+  s.chain_mirror = bs->delta && !s.specular ? scene_.mirror_lights.mirror_of_mesh(v.mesh) : -1;
+  s.chain_pdf = s.prev_pdf;
+  s.chain_origin = s.prev_p;
+  s.specular = bs->delta;
+  s.prev_pdf = bs->pdf;
+  s.prev_p = v.sp.p;
+
+  // Russian roulette on the path throughput's unpolarized part M00, with survival probability
+  // sqrt(max M00) (Cycles' rule; pbrt's max M00 terminates more often): per-path quantities only, so
+  // renders stay deterministic. From rr_depth (default 5, as Mitsuba) on: terminating earlier costs
+  // more variance than it saves time, most of all on caustic paths (docs/performance.md, "Time to
+  // error against Cycles").
+  if (depth + 1 >= static_cast<uint32_t>(scene_.settings.rr_depth)) {
+    const float survival = std::sqrt(s.beta.m00().max_value());
+    if (survival < 1.0f) {
+      if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) >= survival) return false;
+      s.beta.scale(1.0f / survival);
+    }
+  }
+  s.ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  return true;
+}
+
+template <class Sampler, class T>
+SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
+                                   const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                                   PathStats& stats, FirstHit* first_hit) const {
+  PathState<T> s{.beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+                           T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
+                 .ray = camera_ray};
+  PathVertex v;
+  const bool branched = branches_ > 1;
+  if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, branched, stats, first_hit)) return s.L;
+  if (!branched) {
+    for (uint32_t depth = 0; scatter(s, v, depth, lambda, sampler); ++depth)
+      if (!arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, false, stats, nullptr)) break;
+    return s.L;
+  }
+  // Branched path tracing (docs/architecture.md#branched-paths): the path up to its first vertex with a
+  // non-delta lobe (usually the first; a mirror or glass seen by the camera would hand every branch the same
+  // direction) is shared by `branches_` continuations, each with its own numbers (Sampler::branch), averaged.
+  // The shared vertex's lobes stay in the arena below `floor` (evaluated outside the per-thread memo, which a
+  // later vertex could overwrite) while the branches reuse the space above.
+  uint32_t depth = 0;
+  for (; !v.closure.has_non_delta_lobes(); ++depth)
+    if (!scatter(s, v, depth, lambda, sampler) ||
+        !arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, true, stats, nullptr))
+      return s.L;
+  const size_t floor = arena.used();
+  SensorStokes sum{};
+  PathVertex w;
+  for (uint32_t j = 0; j < branches_; ++j) {
+    const Sampler numbers = sampler.branch(j, branches_);
+    PathState<T> c = s;
+    c.L = SensorStokes{};
+    for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
+      if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
+  }
+  const float inv = 1.0f / static_cast<float>(branches_);
+  for (size_t i = 0; i < sum.size(); ++i) s.L[i] += sum[i] * inv;
+  return s.L;
+}
+
+template <class Sampler>
+SensorStokes PathIntegrator::radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                                      const Sampler& sampler, LobeArena& arena, PathStats& stats,
+                                      FirstHit* first_hit) const {
+  switch (mode_) {
+    case PolarizationMode::kOff:
+      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+    case PolarizationMode::kIntensity:
+      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+    case PolarizationMode::kStokes:
+      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+  }
+  return {};
+}
+
+template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                               const IndependentSampler&, LobeArena&, PathStats&,
+                                               FirstHit*) const;
+template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
+                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*) const;
+
+}  // namespace ochre

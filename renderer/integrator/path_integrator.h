@@ -1,0 +1,91 @@
+#pragma once
+// Unidirectional spectral path tracer: next-event estimation, multiple importance sampling
+// (power heuristic) between light and BSDF sampling, Russian roulette, delta lobes and delta
+// lights handled. Radiance is traced for the 8 hero wavelengths of the path, carrying the Mueller
+// product of the polarization mode (path_throughput.h): off, intensity or stokes. With
+// integrator.branches = k, each camera sample continues from its first non-delta vertex along k paths,
+// averaged (docs/architecture.md#branched-paths).
+
+#include <algorithm>
+#include <cstdint>
+
+#include "materials/lobes/lobe_arena.h"
+#include "renderer/integrator/path_throughput.h"
+#include "renderer/sampling/sampler.h"
+#include "renderer/sampling/sobol_sampler.h"
+#include "renderer/scene/polarization_mode.h"
+#include "renderer/scene/scene.h"
+
+namespace ochre {
+
+// What the camera ray saw first, for the AOV layers of the EXR (albedo, normal, depth).
+struct FirstHit {
+  bool hit = false;
+  SampledSpectrum albedo;  // sum of lobe weights x directional albedo estimates
+  Vec3 normal;             // world-space shading normal, facing the camera
+  float depth = 0.0f;      // distance along the camera ray
+};
+
+struct PathStats {
+  uint64_t rays = 0;         // camera + continuation rays (rtcIntersect1)
+  uint64_t shadow_rays = 0;  // rtcOccluded1
+};
+
+template <class Throughput>
+struct PathState;
+
+class PathIntegrator {
+ public:
+  PathIntegrator(const Scene& scene, PolarizationMode mode)
+      : scene_(scene),
+        mode_(mode),
+        local_lights_(scene.local_light_selection()),
+        branches_(static_cast<uint32_t>(std::max(1, scene.settings.branches))) {}
+
+  // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
+  // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
+  // `sampler`. `cone` is the camera ray's footprint, used to filter textures.
+  // Instantiated for IndependentSampler and SobolSampler.
+  template <class Sampler>
+  SensorStokes radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                        const Sampler& sampler, LobeArena& arena, PathStats& stats,
+                        FirstHit* first_hit = nullptr) const;
+
+ private:
+  // Arrival of s.ray: emission, shading and next-event estimation at the vertex it hits (stored in v).
+  // False when the path ends there. Lobes go to `arena` above `arena_floor`; `own_lobes`: never in the
+  // per-thread memo (the vertex must outlive later ones).
+  template <class Sampler, class Throughput>
+  bool arrive(PathState<Throughput>& s, struct PathVertex& v, uint32_t depth, const RayCone& cone,
+              const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena, size_t arena_floor,
+              bool own_lobes, PathStats& stats, FirstHit* first_hit) const;
+  // BSDF sampling at v, Russian roulette and the next ray. False when the path ends.
+  template <class Sampler, class Throughput>
+  bool scatter(PathState<Throughput>& s, const struct PathVertex& v, uint32_t depth,
+               const SampledWavelengths& lambda, const Sampler& sampler) const;
+  template <class Sampler, class Throughput>
+  SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                     const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit) const;
+  // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L. `pmfs`: the
+  // lights' probabilities at this point (Scene::light_pmfs), or null to choose by power.
+  template <class Sampler, class Throughput>
+  void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
+                    const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                    const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const;
+  // Next-event estimation through a planar mirror: one sample of a light's mirror image (planar_mirrors.h),
+  // the path x -> mirror -> light MIS-weighted against BSDF sampling of the same path.
+  template <class Sampler, class Throughput>
+  void mirrored_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
+                      const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
+                      LobeArena& arena, PathStats& stats, SensorStokes& L) const;
+  // Emission reached by a BSDF-sampled path x -> mirror -> light: the MIS weight against mirrored_light().
+  float mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf, const Vec3& p,
+                                 const Vec3& ng) const;
+
+  const Scene& scene_;
+  PolarizationMode mode_;
+  bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
+  uint32_t branches_;  // continuations of each camera sample from its first vertex (integrator.branches)
+};
+
+}  // namespace ochre

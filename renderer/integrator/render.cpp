@@ -1,0 +1,178 @@
+#include "renderer/integrator/render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include "renderer/geometry/surface_shading.h"
+#include "renderer/integrator/path_integrator.h"
+#include "spectra/cie.h"
+
+namespace ochre {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+struct TileCounters {
+  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, nonfinite_values{0};
+};
+
+// First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
+void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWavelengths& lambda) {
+  static const SpectrumPtr white = d65();
+  XYZ albedo{0, 0, 0};
+  if (first.hit) albedo = sampled_to_xyz(first.albedo * white->sample(lambda), lambda);
+  if (!std::isfinite(albedo.x) || !std::isfinite(albedo.y) || !std::isfinite(albedo.z)) albedo = {0, 0, 0};
+  film.add_aov_sample(x, y, albedo, {first.normal.x, first.normal.y, first.normal.z},
+                      first.hit ? first.depth : 0.0f);
+}
+
+// Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
+// The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
+XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
+}
+
+bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
+                const SensorResponse* sensor) {
+  XYZ xyz = sensor_value(sensor, S[0], lambda);
+  std::array<XYZ, 3> s123{};
+  bool finite = is_finite(xyz);
+  if (film.has_stokes())
+    for (int c = 0; c < 3; ++c) {
+      s123[c] = sensor_value(sensor, S[c + 1], lambda);
+      finite = finite && is_finite(s123[c]);
+    }
+  if (!finite) {
+    film.add_sample(x, y, {0, 0, 0});
+    if (film.has_stokes()) film.add_stokes_sample(x, y, {});
+    return true;
+  }
+  film.add_sample(x, y, xyz);
+  if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
+  if (film.spectral_bins() > 0)
+    for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);
+  return false;
+}
+
+// One tile of the rendered rectangle: image pixels [x0, x1) x [y0, y1).
+struct Tile {
+  int x0, y0, x1, y1;
+};
+
+template <class Sampler>
+void render_tile(const Scene& scene, const PathIntegrator& integrator, const Tile& tile,
+                 const PixelRect& rect, SampleRange samples, Film& film, TileCounters& counters,
+                 const ProgressCallback& progress, const std::atomic<bool>* cancel) {
+  const RenderSettings& s = scene.settings;
+  thread_local LobeArena arena;
+  // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
+  const NonFiniteTally& nonfinite = thread_non_finite_tally();
+  const uint64_t nonfinite_before = nonfinite.values;
+  PathStats stats;
+  const RayCone cone = scene.camera.pixel_cone();
+  const SensorResponse* sensor = scene.sensor.get();
+  uint64_t discarded = 0;
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
+      // Random numbers and rays follow the pixel's place in the image; the film holds only the rectangle.
+      const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
+      const int fx = x - rect.x0, fy = y - rect.y0;
+      for (uint32_t k = samples.begin; k < samples.end; ++k) {
+        const Sampler sampler(s.seed, pixel_index, k);
+        const float u_lambda = sampler.get_1d(SampleDims::kWavelength);
+        const SampledWavelengths lambda =
+            sensor ? sensor->sample_wavelengths(u_lambda) : SampledWavelengths::sample_visible(u_lambda);
+        const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
+        const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
+        FirstHit first;
+        const SensorStokes S =
+            integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
+        if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
+        if (add_sample(film, fx, fy, S, lambda, sensor)) ++discarded;
+      }
+    }
+  }
+  counters.rays += stats.rays;
+  counters.shadow_rays += stats.shadow_rays;
+  counters.discarded += discarded;
+  counters.nonfinite_values += nonfinite.values - nonfinite_before;
+  if (progress) progress(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * samples.size());
+}
+
+}  // namespace
+
+void RenderStats::add(const RenderStats& pass) {
+  seconds += pass.seconds;
+  samples += pass.samples;
+  rays += pass.rays;
+  shadow_rays += pass.shadow_rays;
+  discarded += pass.discarded;
+  nonfinite_values += pass.nonfinite_values;
+  threads = pass.threads;
+}
+
+PolarizationChoice polarization_for(const Scene& scene) {
+  return choose_polarization_mode(scene.settings.polarization,
+                                  scene.polarizing_materials || scene.polarizing_filters,
+                                  scene.outputs.stokes);
+}
+
+RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress,
+                   const std::atomic<bool>* cancel) {
+  const RenderSettings& s = scene.settings;
+  return render_range(scene, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
+                      progress, cancel);
+}
+
+RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
+                         const ProgressCallback& progress, const std::atomic<bool>* cancel) {
+  const RenderSettings& s = scene.settings;
+  if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
+      film.height() != rect.height())
+    throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
+  const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+  const PathIntegrator integrator(scene, polarization_for(scene).mode);
+  TileCounters counters;
+  const int tiles_x = (rect.width() + kTileSize - 1) / kTileSize;
+  const int tiles_y = (rect.height() + kTileSize - 1) / kTileSize;
+  const auto tile_at = [&](int t) {
+    const int x0 = rect.x0 + (t % tiles_x) * kTileSize, y0 = rect.y0 + (t / tiles_x) * kTileSize;
+    return Tile{x0, y0, std::min(rect.x1, x0 + kTileSize), std::min(rect.y1, y0 + kTileSize)};
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, tiles_x * tiles_y),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int t = range.begin(); t != range.end(); ++t)
+          if (s.sampler == "sobol")
+            render_tile<SobolSampler>(scene, integrator, tile_at(t), rect, samples, film, counters, progress,
+                                      cancel);
+          else
+            render_tile<IndependentSampler>(scene, integrator, tile_at(t), rect, samples, film, counters,
+                                            progress, cancel);
+      },
+      tbb::simple_partitioner());
+  RenderStats stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.samples = static_cast<uint64_t>(rect.width()) * rect.height() * samples.size();
+  stats.rays = counters.rays;
+  stats.shadow_rays = counters.shadow_rays;
+  stats.discarded = counters.discarded;
+  stats.nonfinite_values = counters.nonfinite_values;
+  stats.threads = threads;
+  stats.cancelled = cancel && cancel->load();
+  return stats;
+}
+
+}  // namespace ochre

@@ -1,0 +1,730 @@
+#include "renderer/loader/scene_loader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "materials/graph/graph_error.h"
+#include "materials/graph/material_compiler.h"
+#include "materials/nodes/resource_resolver.h"
+#include "renderer/camera/camera_sensor.h"
+#include "renderer/geometry/coordinate_limit.h"
+#include "renderer/geometry/transform.h"
+#include "renderer/json/json_fields.h"
+#include "renderer/json/json_file.h"
+#include "renderer/json/spectrum_json.h"
+#include "renderer/lights/point_light.h"
+#include "renderer/lights/preset_lights.h"
+#include "renderer/lights/spot_light.h"
+#include "renderer/loader/material_templates.h"
+#include "renderer/loader/mitsuba/mitsuba_import.h"
+#include "renderer/loader/scene_sources.h"
+#include "renderer/shapes/control_mesh.h"
+#include "renderer/shapes/displacement.h"
+#include "renderer/shapes/groove_shapes.h"
+#include "renderer/shapes/mesh_import.h"
+#include "renderer/shapes/procedural_shapes.h"
+#include "renderer/shapes/subdivision.h"
+#include "renderer/util/memory_budget.h"
+#include "spectra/cie.h"
+#include "spectra/input_error.h"
+
+namespace ochre {
+
+namespace {
+
+constexpr long long kMaxResolution = 65536;  // pixels per film side
+constexpr int kMaxThreads = 4096;            // as --threads
+
+// Files named by materials resolve relative to the scene file; textures go to the OIIO provider.
+class SceneResources final : public ResourceResolver {
+ public:
+  SceneResources(std::filesystem::path dir, OiioTextureProvider& textures)
+      : dir_(std::move(dir)), textures_(textures) {}
+  std::filesystem::path resolve(const std::string& path) const override {
+    const std::filesystem::path p(path);
+    return p.is_absolute() ? p : dir_ / p;
+  }
+  int texture(const std::filesystem::path& file, const std::string& colorspace, int& channels) override {
+    return textures_.add_texture(file, colorspace, channels);
+  }
+
+ private:
+  std::filesystem::path dir_;
+  OiioTextureProvider& textures_;
+};
+
+// Two numbers [a, b] of the field `key`, each checked like a number field (json_fields.h).
+std::pair<double, double> number_pair(const JsonFields& f, const char* key, const char* shape, double min,
+                                      double max, bool min_exclusive) {
+  const std::string where = f.child(key);
+  const nlohmann::json& pair = json_array(f.require(key), where, 2, shape);
+  return {json_number(pair[0], where + "[0]", min, max, min_exclusive),
+          json_number(pair[1], where + "[1]", min, max, min_exclusive)};
+}
+
+// "filter": {"type": "box", "radius": 0.5} or {"type": "gaussian", "stddev": 0.5} (pixel_filter.h).
+PixelFilter parse_pixel_filter(const JsonFields& f) {
+  const std::string type = f.required_string("type");
+  if (type == "box") {
+    f.check_known({"type", "radius"});
+    return PixelFilter::box(static_cast<float>(f.number("radius", 0.5, 0.0, 64.0, true)));
+  }
+  if (type == "gaussian") {
+    f.check_known({"type", "stddev"});
+    return PixelFilter::gaussian(static_cast<float>(f.number("stddev", 0.5, 0.0, 64.0, true)));
+  }
+  f.fail("type", fmt::format("unknown filter '{}' (known: box, gaussian)", type));
+}
+
+// output.white_balance: an illuminant spectrum whose colour the display image shows as white.
+std::array<double, 3> parse_white_balance(const JsonFields& f, const std::filesystem::path& dir) {
+  const SpectrumPtr white =
+      parse_spectrum(f.require("white_balance"), SpectrumRole::Illuminant, f.child("white_balance"), dir);
+  const XYZ xyz = spectrum_to_xyz(*white);
+  if (!(xyz.x > 0.0f && xyz.y > 0.0f && xyz.z > 0.0f) || !std::isfinite(xyz.x + xyz.y + xyz.z))
+    f.fail("white_balance", "the illuminant must have a colour (positive, finite X, Y and Z)");
+  return {double(xyz.x) / xyz.y, 1.0, double(xyz.z) / xyz.y};
+}
+
+void load_settings(const JsonFields& top, Scene& scene) {
+  RenderSettings& s = scene.settings;
+  if (top.has("film")) {
+    const JsonFields f(top.require("film"), top.child("film"));
+    f.check_known({"resolution", "colorspace", "filter"});
+    if (f.has("resolution")) {
+      const std::string where = f.child("resolution");
+      const nlohmann::json& r = json_array(f.require("resolution"), where, 2, "[width, height]");
+      s.width = static_cast<int>(json_integer(r[0], where + "[0]", 1, kMaxResolution));
+      s.height = static_cast<int>(json_integer(r[1], where + "[1]", 1, kMaxResolution));
+    }
+    scene.outputs.colorspace = f.string("colorspace", scene.outputs.colorspace);
+    if (f.has("filter"))
+      scene.pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
+  }
+  if (top.has("integrator")) {
+    const JsonFields f(top.require("integrator"), top.child("integrator"));
+    f.check_known({"type", "spp", "max_depth", "rr_depth", "branches", "seed", "threads", "polarization",
+                   "sampler", "mirror_lights", "light_selection"});
+    if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
+    s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
+    s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
+    s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
+    s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
+    s.light_selection = f.string("light_selection", s.light_selection);
+    if (s.light_selection != "local" && s.light_selection != "power")
+      f.fail("light_selection",
+             fmt::format("unknown light selection '{}' (known: local, power)", s.light_selection));
+    s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
+    s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
+    s.polarization = f.string("polarization", s.polarization);
+    s.sampler = f.string("sampler", s.sampler);
+  }
+  if (top.has("output")) {
+    const JsonFields f(top.require("output"), top.child("output"));
+    f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "white_balance", "aovs",
+                   "spectral_bins", "spectral_range", "stokes", "polarization_png"});
+    const std::filesystem::path dir = scene.file.parent_path();
+    if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
+    if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
+    scene.outputs.ocio_config = f.string("ocio_config", "");
+    scene.outputs.display = f.string("display", "");
+    scene.outputs.view = f.string("view", "");
+    scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    if (f.has("white_balance")) scene.outputs.white_balance_xyz = parse_white_balance(f, dir);
+    scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
+    if (f.has("spectral_range")) {
+      // Up to 1200 nm: a camera sensor may see beyond the visible (docs/cameras.md).
+      const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 300.0, 1200.0, false);
+      if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
+      scene.outputs.spectral_min = static_cast<float>(lo);
+      scene.outputs.spectral_max = static_cast<float>(hi);
+    }
+    scene.outputs.stokes = f.boolean("stokes", scene.outputs.stokes);
+    if (f.has("polarization_png"))
+      scene.outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
+    scene.outputs.aovs = f.boolean("aovs", scene.outputs.aovs);
+  }
+}
+
+void check_settings(const Scene& scene, const std::string& file) {
+  const RenderSettings& s = scene.settings;
+  if (s.width < 1 || s.height < 1 || s.width > kMaxResolution || s.height > kMaxResolution)
+    throw InputError(fmt::format("{}: film.resolution: must be between 1x1 and {}x{} (got {}x{})", file,
+                                 kMaxResolution, kMaxResolution, s.width, s.height));
+  if (s.spp < 1) throw InputError(fmt::format("{}: integrator.spp: must be >= 1", file));
+  if (s.threads < 0 || s.threads > kMaxThreads)  // an override (the scene's own value is checked on reading)
+    throw InputError(
+        fmt::format("{}: integrator.threads: must be in [0, {}] (got {})", file, kMaxThreads, s.threads));
+  const std::string& p = s.polarization;
+  if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
+    throw InputError(fmt::format(
+        "{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)", file, p));
+  if (s.sampler != "independent" && s.sampler != "sobol")
+    throw InputError(fmt::format("{}: integrator.sampler: unknown sampler '{}' (known: independent, sobol)",
+                                 file, s.sampler));
+  const std::string& cs = scene.outputs.colorspace;
+  if (cs != "rec709" && cs != "acescg")
+    throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
+}
+
+// "polarizer": {"axis": [x, y, z]} in front of a light or an emissive shape: the world transmission axis.
+std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {
+  if (!f.has("polarizer")) return std::nullopt;
+  const JsonFields p(f.require("polarizer"), f.child("polarizer"));
+  p.check_known({"axis"});
+  const Vec3 axis = p.required_vec3("axis");
+  if (!(length(axis) > 0.0f) || !std::isfinite(length(axis)))
+    p.fail("axis", "must be a non-zero vector of finite length");
+  return normalize(axis);
+}
+
+// "polarizer": {"angle": degrees} on the camera: a linear analyzer whose transmission axis is turned by
+// `angle` from the image x axis toward the image's up direction (docs/polarization.md).
+std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
+  if (!f.has("polarizer")) return std::nullopt;
+  const JsonFields p(f.require("polarizer"), f.child("polarizer"));
+  p.check_known({"angle"});
+  const double degrees = p.number("angle", 0.0, -360.0, 360.0);
+  return rotated_element(static_cast<float>(degrees * M_PI / 180.0), linear_polarizer());
+}
+
+FovAxis parse_fov_axis(const JsonFields& f) {
+  const std::string axis = f.string("fov_axis", "smaller");
+  if (axis == "smaller") return FovAxis::Smaller;
+  if (axis == "larger") return FovAxis::Larger;
+  if (axis == "x") return FovAxis::X;
+  if (axis == "y") return FovAxis::Y;
+  if (axis == "diagonal") return FovAxis::Diagonal;
+  f.fail("fov_axis", fmt::format("unknown axis '{}' (known: smaller, larger, x, y, diagonal)", axis));
+}
+
+Camera load_camera(const JsonFields& top, const RenderSettings& s) {
+  const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
+  const JsonFields f(camera, top.child("camera"));
+  f.check_known(
+      {"type", "fov", "fov_axis", "size", "eye", "target", "up", "transform", "polarizer", "sensor"});
+  // Every given field is checked, also those the chosen placement or type does not use.
+  const std::string type = f.string("type", "perspective");
+  const auto fov = static_cast<float>(
+      fov_across_shorter_axis(f.number("fov", 40.0, 0.0, 179.0, true), parse_fov_axis(f), s.width, s.height));
+  const auto size = static_cast<float>(f.number("size", 2.0, 0.0, kMaxSceneCoordinate, true));
+  CameraBasis basis;
+  if (f.has("transform") && (f.has("eye") || f.has("target") || f.has("up")))
+    f.fail("transform", "give either \"transform\" or \"eye\", \"target\", \"up\", not both");
+  if (f.has("transform")) {
+    // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
+    const Transform t = parse_transform(f.require("transform"), f.child("transform"));
+    basis.eye = t.point({0, 0, 0});
+    if (!within_scene_limit(basis.eye)) f.fail("transform", "places the camera " + beyond_scene_limit());
+    basis.forward = normalize(t.vector({0, 0, -1}));
+    basis.up = normalize(t.vector({0, 1, 0}));
+    basis.right = normalize(cross(basis.forward, basis.up));
+    basis.up = cross(basis.right, basis.forward);
+  } else {
+    const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
+               up = f.vec3("up", {0, 1, 0});
+    if (!within_scene_limit(eye)) f.fail("eye", "lies " + beyond_scene_limit());
+    if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
+    if (!std::isfinite(length(target - eye)))
+      f.fail("target", "is too far from eye (the distance overflows single precision)");
+    if (length(cross(normalize(target - eye), up)) < 1e-6f)
+      f.fail("up", "must not be parallel to the view direction");
+    basis = camera_basis_look_at(eye, target, up);
+  }
+  if (type == "perspective") return Camera::perspective(basis, fov, s.width, s.height);
+  if (type == "orthographic") return Camera::orthographic(basis, size, s.width, s.height);
+  f.fail("type", fmt::format("unknown camera type '{}' (known: perspective, orthographic)", type));
+}
+
+// Materials whose textures are "mtl:" placeholders (material_templates.h): compiled once per material of
+// each mesh file that uses them, not on their own.
+struct MaterialTemplates {
+  std::map<std::string, const SceneItem*> items;
+  std::map<std::pair<std::string, std::string>, int> instances;  // (template, file material) -> material
+};
+
+void load_materials(const SceneSources& sources, Scene& scene, MaterialTemplates& templates) {
+  for (const SceneItem& m : sources.materials) {
+    if (is_material_template(m.json)) {
+      templates.items[m.name] = &m;
+      continue;
+    }
+    SceneResources resources(m.file.parent_path(), *scene.textures);
+    scene.material_names.push_back(m.name);
+    scene.materials.push_back(compile_material(m.json, m.name, m.file.string(), resources));
+  }
+}
+
+int material_index(const Scene& scene, const MaterialTemplates& templates, const JsonFields& f,
+                   const char* key, const std::string& name) {
+  for (size_t i = 0; i < scene.material_names.size(); ++i)
+    if (scene.material_names[i] == name) return static_cast<int>(i);
+  if (templates.items.count(name))
+    f.fail(key, fmt::format("material '{}' is a template (it names \"mtl:\" textures): use it in a mesh's "
+                            "\"materials\" map",
+                            name));
+  f.fail(key, fmt::format("unknown material '{}'", name));
+}
+
+// The scene material for one material of a mesh file: `name` itself, or for a template its instance with
+// that file material's textures (compiled on first use).
+int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& map, const std::string& key,
+                  const MeshMaterialPart& part, const std::filesystem::path& mesh_dir) {
+  const std::string name = json_string(map.require(key.c_str()), map.child(key));
+  const auto it = templates.items.find(name);
+  if (it == templates.items.end()) return material_index(scene, templates, map, key.c_str(), name);
+  const auto cached = templates.instances.find({name, part.material});
+  if (cached != templates.instances.end()) return cached->second;
+  const SceneItem& item = *it->second;
+  const nlohmann::json json =
+      instantiate_material_template(item.json, part.textures, mesh_dir, part.material, map.child(key));
+  const std::string instance = name + "@" + part.material;
+  SceneResources resources(item.file.parent_path(), *scene.textures);
+  scene.material_names.push_back(instance);
+  scene.materials.push_back(compile_material(json, instance, item.file.string(), resources));
+  const int index = static_cast<int>(scene.materials.size() - 1);
+  templates.instances[{name, part.material}] = index;
+  return index;
+}
+
+// The import options of a "mesh" shape: smooth_normals, face_normals (not both), flip_uv_v.
+MeshImportOptions parse_mesh_import_options(const JsonFields& f) {
+  MeshImportOptions options;
+  options.smooth_normals = f.boolean("smooth_normals", false);
+  options.face_normals = f.boolean("face_normals", false);
+  options.flip_uv_v = f.boolean("flip_uv_v", false);
+  if (options.smooth_normals && options.face_normals)
+    f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
+  return options;
+}
+
+// A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
+// file material, with the scene material the shape's "materials" map gives it (by name, or "*").
+std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem::path& dir, Scene& scene,
+                                      MaterialTemplates& templates) {
+  f.check_known({"type", "file", "materials", "transform", "smooth_normals", "face_normals", "flip_uv_v",
+                 "flip_normals", "name", "polarizer"});
+  if (f.required_string("type") != "mesh") f.fail("materials", "only a \"mesh\" shape has a materials map");
+  const JsonFields map(f.require("materials"), f.child("materials"));
+  std::filesystem::path path = f.required_string("file");
+  if (path.is_relative()) path = dir / path;
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
+  const MeshImportOptions options = parse_mesh_import_options(f);
+  std::vector<MeshMaterialPart> parts =
+      f.in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
+  std::string file_materials;
+  for (const MeshMaterialPart& part : parts)
+    file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
+  for (const auto& item : map.json().items()) {
+    const std::string& key = item.key();
+    const bool in_file =
+        std::any_of(parts.begin(), parts.end(), [&](const auto& p) { return p.material == key; });
+    if (key != "*" && !in_file)
+      map.fail(key, fmt::format("the file has no material '{}' (it has: {})", key, file_materials));
+  }
+  const std::string shape_name = f.string("name", "mesh");
+  std::vector<Mesh> meshes;
+  for (MeshMaterialPart& part : parts) {
+    const std::string key = map.has(part.material.c_str()) ? part.material : "*";
+    if (!map.has(key.c_str()))
+      f.fail("materials",
+             fmt::format("the file's material '{}' is not mapped (name it, or map \"*\"; the file's "
+                         "materials: {})",
+                         part.material, file_materials));
+    part.mesh.material = part_material(scene, templates, map, key, part, path.parent_path());
+    part.mesh.name = shape_name + "/" + part.material;
+    if (f.boolean("flip_normals", false)) flip_normals(part.mesh);
+    meshes.push_back(std::move(part.mesh));
+  }
+  return meshes;
+}
+
+Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
+                    const MeshImportOptions& options) {
+  if (f.has("displacement"))
+    f.fail("displacement", "needs \"subdivision\" (displacement moves the refined vertices)");
+  return f.in_context("file", [&] { return import_mesh(path, to_world, options); });
+}
+
+// Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
+// smooth normal (shading normals recomputed).
+Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
+                     const Scene& scene, const std::filesystem::path& dir) {
+  const SubdivisionOptions options =
+      parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
+  const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, to_world); });
+  Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
+  if (f.has("displacement")) {
+    const DisplacementOptions d =
+        parse_displacement(JsonFields(f.require("displacement"), f.child("displacement")), dir);
+    f.in_context("displacement", [&] { displace(mesh, d, *scene.textures); });
+  }
+  return mesh;
+}
+
+// The explicit groove shapes of renderer/shapes/groove_shapes.h, in object space.
+Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
+  auto positive = [&](const char* key, double fallback) {
+    return static_cast<float>(f.number(key, fallback, 0.0, 1e30, true));
+  };
+  auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
+  if (type == "groove_plate") {
+    f.check_known({"type", "alpha", "pitch", "count", "length", "tile", "orientation", "material",
+                   "transform", "name", "polarizer"});
+    GroovePlate plate;
+    plate.alpha_degrees = alpha();
+    plate.pitch = positive("pitch", 1.0);
+    plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
+    plate.length = positive("length", 40.0);
+    plate.tile_pitches = static_cast<float>(f.number("tile", 8.0, 0.0, 1e30));
+    const double triangles = groove_plate_triangle_count(plate);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        groove_plate_tiles(plate) > 1
+            ? fmt::format("{}: a groove plate of {:.0f} triangles ({} grooves x {:.0f} tiles along them)",
+                          f.child("count"), triangles, plate.count, groove_plate_tiles(plate))
+            : fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
+    Mesh mesh = make_groove_plate(plate);
+    mesh.transform(
+        Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
+    return mesh;
+  }
+  if (type == "cylinder") {
+    f.check_known({"type", "radius", "height", "segments", "material", "transform", "name", "polarizer"});
+    const float radius = positive("radius", 1.0), height = positive("height", 2.0);
+    const int segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+    const double triangles = cylinder_triangle_count(segments);
+    check_triangle_estimate(
+        triangles, kTessellatedTriangleBytes,
+        fmt::format("{}: a cylinder of {:.0f} triangles", f.child("segments"), triangles));
+    return make_cylinder(radius, height, segments);
+  }
+  f.check_known({"type", "radius", "height", "alpha", "pitch", "segments", "material", "transform", "name",
+                 "polarizer"});
+  GroovedCylinder c;
+  c.radius = positive("radius", 1.0);
+  c.height = positive("height", 2.0);
+  c.alpha_degrees = alpha();
+  c.pitch = positive("pitch", 0.05);
+  c.segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
+  if (!(c.pitch <= c.height)) f.fail("pitch", "must not exceed the height");
+  if (!(0.5 * c.pitch / std::tan(0.5 * c.alpha_degrees * M_PI / 180.0) < c.radius))
+    f.fail("alpha", "the grooves would be deeper than the radius: increase alpha or decrease the pitch");
+  const double triangles = grooved_cylinder_triangle_count(c);
+  check_triangle_estimate(
+      triangles, kTessellatedTriangleBytes,
+      fmt::format("{}: a grooved cylinder of {:.0f} grooves x {} segments ({:.0f} triangles)", f.where(),
+                  groove_count(c), c.segments, triangles));
+  return make_grooved_cylinder(c);
+}
+
+// `dir`: the folder of the file that holds the shape (its paths are relative to it).
+Mesh load_shape(const JsonFields& f, const Scene& scene, const MaterialTemplates& templates,
+                const std::filesystem::path& dir) {
+  const std::string type = f.required_string("type");
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
+  Mesh mesh;
+  if (type == "mesh") {
+    f.check_known({"type", "file", "material", "transform", "smooth_normals", "face_normals", "flip_uv_v",
+                   "flip_normals", "name", "subdivision", "displacement", "polarizer"});
+    std::filesystem::path path = f.required_string("file");
+    if (path.is_relative()) path = dir / path;
+    const MeshImportOptions options = parse_mesh_import_options(f);
+    for (const char* key : {"flip_uv_v", "face_normals"})
+      if (f.has("subdivision") && f.boolean(key, false))
+        f.fail(key, "is not supported with \"subdivision\" (change the file instead)");
+    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene, dir)
+                                : load_triangles(f, path, to_world, options);
+  } else if (type == "sphere") {
+    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer",
+                   "flip_uv_v", "flip_normals"});
+    const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
+    const int subdivisions = static_cast<int>(f.integer("subdivisions", 96, 4, 4096));
+    check_memory_estimate(sphere_memory_bytes(subdivisions),
+                          fmt::format("{}: a sphere of {:.0f} triangles", f.child("subdivisions"),
+                                      sphere_triangle_count(subdivisions)));
+    const Vec3 center = f.vec3("center", {0, 0, 0});
+    mesh = f.in_context("", [&] { return make_sphere(radius, subdivisions); });
+    f.in_context("", [&] { mesh.transform(to_world * Transform::translate(center)); });
+  } else if (type == "plane") {
+    f.check_known(
+        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
+    Vec2 size{2, 2};
+    if (f.has("size")) {
+      const auto [width, height] = number_pair(f, "size", "[width, height]", 0.0, kNoMaximum, true);
+      size = {static_cast<float>(width), static_cast<float>(height)};
+    }
+    mesh = f.in_context("", [&] { return make_plane(size); });
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "disk") {
+    f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer", "flip_uv_v",
+                   "flip_normals"});
+    const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
+    const int segments = static_cast<int>(f.integer("segments", 128, 3, 1 << 20));
+    mesh = f.in_context("", [&] { return make_disk(radius, segments); });
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "cube") {
+    f.check_known(
+        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
+    const Vec3 size = f.vec3("size", {2, 2, 2});
+    mesh = f.in_context("size", [&] { return make_cube(size); });
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else if (type == "groove_plate" || type == "cylinder" || type == "grooved_cylinder") {
+    mesh = load_groove_shape(f, type);
+    f.in_context("", [&] { mesh.transform(to_world); });
+  } else {
+    f.fail("type",
+           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, cube, groove_plate, "
+                       "cylinder, grooved_cylinder)",
+                       type));
+  }
+  // Every shape may face the other way; procedural ones may flip their uvs (meshes do it on import).
+  if (f.boolean("flip_normals", false)) flip_normals(mesh);
+  if (type != "mesh" && f.boolean("flip_uv_v", false)) flip_uv_v(mesh);
+  mesh.name = f.string("name", type);
+  mesh.material = material_index(scene, templates, f, "material", f.required_string("material"));
+  mesh.validate(f.where());
+  return mesh;
+}
+
+void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scene,
+                 MaterialTemplates& templates) {
+  if (!top.has("shapes") && sources.shapes.empty()) top.fail("shapes", "expected an array of shapes");
+  for (const SceneItem& shape : sources.shapes) {
+    const JsonFields f(shape.json, shape.where);
+    std::vector<Mesh> meshes;
+    if (f.has("materials")) {
+      if (f.has("material")) f.fail("materials", "give either \"material\" or \"materials\", not both");
+      meshes = load_material_parts(f, shape.file.parent_path(), scene, templates);
+    } else {
+      meshes.push_back(load_shape(f, scene, templates, shape.file.parent_path()));
+    }
+    const std::optional<Vec3> polarizer = parse_light_polarizer(f);
+    for (Mesh& mesh : meshes) {
+      if (polarizer && !scene.materials[mesh.material]->facts().is_emissive)
+        f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+      scene.meshes.push_back(std::move(mesh));
+      scene.mesh_polarizers.push_back(polarizer);
+    }
+  }
+}
+
+// Lights are chosen in proportion to their power: a power that overflows single precision (an intensity
+// near 3.4e38 times 4 pi) would make every choice probability NaN.
+void check_power(const Light& light, const JsonFields& f, const char* key) {
+  if (!std::isfinite(light.power()))
+    f.fail(key, "the light's power overflows single precision (the value is too large)");
+}
+
+std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
+  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "falloff",
+                 "intensity", "polarizer", "preset", "scale"});
+  const Vec3 position = f.required_vec3("position");
+  if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
+  const char* aim = f.has("direction") ? "direction" : "target";
+  const Vec3 direction =
+      f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
+  if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
+    f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
+  const std::string ramp = f.string("falloff", "smoothstep");
+  if (ramp != "smoothstep" && ramp != "linear")
+    f.fail("falloff", fmt::format("unknown falloff '{}' (known: smoothstep, linear)", ramp));
+  const SpotLight::Falloff shape =
+      ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
+  std::unique_ptr<SpotLight> light;
+  if (f.has("preset")) {  // docs/lights.md
+    const SpotPresetValues v = spot_preset_values(f);
+    light = std::make_unique<SpotLight>(position, direction, static_cast<float>(v.cone_angle),
+                                        static_cast<float>(v.falloff_start), v.intensity, shape);
+  } else {
+    if (f.has("scale"))
+      f.fail("scale", "belongs to a \"preset\" light (scale an intensity spectrum with its own scale)");
+    const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
+    const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
+    light = std::make_unique<SpotLight>(
+        position, direction, static_cast<float>(cone), static_cast<float>(falloff),
+        parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir), shape);
+  }
+  light->polarizer_axis = parse_light_polarizer(f);
+  return light;
+}
+
+void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) {
+  for (const SceneItem& item : sources.lights) {
+    const std::filesystem::path dir = item.file.parent_path();
+    const JsonFields f(item.json, item.where);
+    const std::string type = f.required_string("type");
+    if (type == "environment") {
+      if (scene.environment) f.fail("type", "only one environment light is allowed");
+      auto env = make_environment_light(f, dir, scene_radius);
+      scene.environment = env.get();
+      scene.lights.push_back(std::move(env));
+    } else if (type == "point") {
+      f.check_known({"type", "position", "intensity", "polarizer"});
+      auto light = std::make_unique<PointLight>(
+          f.required_vec3("position"),
+          parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
+      light->polarizer_axis = parse_light_polarizer(f);
+      check_power(*light, f, "intensity");
+      scene.lights.push_back(std::move(light));
+    } else if (type == "spot") {
+      scene.lights.push_back(load_spot_light(f, dir));
+      check_power(*scene.lights.back(), f, f.has("preset") ? "scale" : "intensity");
+    } else if (type == "flame") {  // docs/lights.md
+      LoadedFlame loaded = load_flame(f);
+      check_power(*loaded.light, f, f.has("scale") ? "scale" : "intensity");
+      loaded.flame.index = static_cast<int>(scene.flames.size());
+      scene.flames.push_back(loaded.flame);
+      scene.lights.push_back(std::move(loaded.light));
+    } else if (type == "camera_flash") {
+      auto light = load_camera_flash(f, scene.camera);
+      light->polarizer_axis = parse_light_polarizer(f);
+      check_power(*light, f, "scale");
+      scene.lights.push_back(std::move(light));
+    } else {
+      f.fail("type",
+             fmt::format("unknown light type '{}' (known: environment, point, spot, flame, camera_flash; "
+                         "emissive shapes are area lights)",
+                         type));
+    }
+  }
+}
+
+float bounding_radius(const std::vector<Mesh>& meshes) {
+  Mesh::Bounds b;
+  for (const Mesh& m : meshes) b.include(m.bounds());
+  return meshes.empty() || !(b.hi.x >= b.lo.x) ? 1.0f : std::max(1e-3f, 0.5f * length(b.hi - b.lo));
+}
+
+void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
+  if (o.spp) s.spp = *o.spp;
+  if (o.threads) s.threads = *o.threads;
+  if (o.seed) s.seed = *o.seed;
+  if (o.width) s.width = *o.width;
+  if (o.height) s.height = *o.height;
+  if (o.polarization) s.polarization = *o.polarization;
+  if (o.sampler) s.sampler = *o.sampler;
+  if (o.branches) s.branches = *o.branches;
+}
+
+// An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power
+// overflows (see check_power). Emission that varies over the surface is made finite where it is evaluated.
+void check_area_light_power(const Scene& scene, const JsonFields& top) {
+  for (size_t m = 0; m < scene.mesh_light.size(); ++m) {
+    if (scene.mesh_light[m] < 0 || !scene.materials[scene.meshes[m].material]->facts().uniform_over_surface)
+      continue;
+    if (!std::isfinite(scene.lights[size_t(scene.mesh_light[m])]->power()))
+      top.fail(fmt::format("shapes[{}]", m),
+               "the emitted power overflows single precision (the material's emission is too large)");
+  }
+}
+
+std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string& file,
+                                   const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  if (!overrides.parameters.empty())
+    throw InputError(fmt::format("{}: scene parameters ({}=...) apply to Mitsuba XML scenes only", file,
+                                 overrides.parameters.front().first));
+  auto scene = std::make_unique<Scene>();
+  scene->file = std::filesystem::absolute(scene_path);
+  const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
+  const JsonFields top(sources.root, file + ":");
+  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
+                   "description", "include", "presets"});
+  scene->description = top.string("description", "");
+  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
+    top.fail("ochre", "expected a version string or number");
+
+  load_settings(top, *scene);
+  apply_overrides(overrides, scene->settings);
+  check_settings(*scene, file);
+  scene->camera = load_camera(top, scene->settings);
+  if (top.has("camera")) {
+    const JsonFields camera(top.require("camera"), top.child("camera"));
+    scene->camera_analyzer = parse_camera_polarizer(camera);
+    const CameraSensor sensor = parse_camera_sensor(camera, scene->file.parent_path());
+    scene->sensor = sensor.response;
+    scene->outputs.sensor = sensor.name;
+    scene->outputs.camera_rgb = sensor.camera_rgb;
+    scene->outputs.sensor_to_xyz = sensor.sensor_to_xyz;
+  }
+
+  scene->textures = std::make_unique<OiioTextureProvider>();
+  MaterialTemplates templates;
+  load_materials(sources, *scene, templates);
+  load_shapes(sources, top, *scene, templates);
+  const float radius = bounding_radius(scene->meshes);
+  load_lights(sources, *scene, radius);
+
+  scene->polarizing_filters = scene->camera_analyzer.has_value();
+  for (const auto& light : scene->lights) scene->polarizing_filters |= light->polarizer_axis.has_value();
+  for (const auto& p : scene->mesh_polarizers) scene->polarizing_filters |= p.has_value();
+  for (const auto& m : scene->materials) {
+    scene->polarizing_materials = scene->polarizing_materials || m->facts().polarizes;
+    scene->needs_uv = scene->needs_uv || m->facts().needs_uv;
+  }
+  scene->accel = std::make_unique<Accel>(scene->meshes);
+  scene->build_lights();
+  check_area_light_power(*scene, top);
+  return scene;
+}
+
+std::unique_ptr<Scene> load_scene_checked(const nlohmann::json& root, const std::string& name,
+                                          const std::filesystem::path& scene_path,
+                                          const SceneOverrides& overrides) {
+  try {
+    return build_scene(root, name, scene_path, overrides);
+  } catch (const GraphError& e) {
+    throw InputError(e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
+    throw InputError(fmt::format("{}: {}", name, e.what()));
+  }
+}
+
+// translate_mitsuba_scene, then load_scene_json with `overrides` (overrides.parameters are the $name
+// parameters); the loader's messages are told at the XML element the failing part came from.
+std::unique_ptr<Scene> load_mitsuba_scene(const std::filesystem::path& file,
+                                          const SceneOverrides& overrides) {
+  const MitsubaTranslation translation = translate_mitsuba_scene(file, overrides.parameters);
+  SceneOverrides json_overrides = overrides;
+  json_overrides.parameters.clear();
+  try {
+    return load_scene_json(translation.scene, file.string(), file, json_overrides);
+  } catch (const InputError& e) {
+    throw InputError(translation.at_origin(e.what(), file.string()));
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
+                                       const std::filesystem::path& scene_path,
+                                       const SceneOverrides& overrides) {
+  if (!overrides.preset) return load_scene_checked(root, name, scene_path, overrides);
+  try {
+    return load_scene_checked(root, name, scene_path, overrides);
+  } catch (const InputError& e) {
+    // A value the preset wrote is reported where it landed: say which preset put it there.
+    const std::string message = e.what();
+    if (message.find("presets") != std::string::npos) throw;
+    throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
+                                 *overrides.preset, name));
+  }
+}
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  if (is_mitsuba_scene_file(path)) return load_mitsuba_scene(path, overrides);
+  return load_scene_json(read_json_file(path, "scene file"), path.string(), path, overrides);
+}
+
+}  // namespace ochre

@@ -1,0 +1,40 @@
+#pragma once
+// Loads a scene into a Scene: a JSON scene file (docs/scene-format.md), a Mitsuba 3 XML scene (a file
+// ending in .xml, translated into the same JSON by renderer/loader/mitsuba/mitsuba_import.h,
+// docs/mitsuba-import.md), or the JSON as a value already parsed (a Python dict). Every problem in the scene
+// or in a file it names throws InputError with the file and the field at fault; nothing is rendered or
+// written before the whole scene has loaded.
+
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "renderer/scene/scene.h"
+
+namespace ochre {
+
+struct SceneOverrides {
+  std::optional<uint32_t> spp;
+  std::optional<int> threads;
+  std::optional<uint64_t> seed;
+  std::optional<int> width, height;
+  std::optional<std::string> polarization;
+  std::optional<std::string> sampler;
+  std::optional<int> branches;  // integrator.branches (ochre-converge variants)
+  // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
+  std::vector<std::pair<std::string, std::string>> parameters;
+  std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)
+};
+
+std::unique_ptr<Scene> load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
+
+// A scene given as JSON: `name` names it in every message ("scene.json", "<dict>"); relative paths in it
+// resolve against the directory of `scene_path` (scene.file).
+std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
+                                       const std::filesystem::path& scene_path,
+                                       const SceneOverrides& overrides = {});
+
+}  // namespace ochre

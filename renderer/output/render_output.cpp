@@ -1,0 +1,255 @@
+#include "renderer/output/render_output.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+
+#include "ochre/version.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_writer.h"
+#include "renderer/output/stokes_output.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/memory_budget.h"
+#include "renderer/util/output_transaction.h"
+#include "spectra/color_space.h"
+#include "spectra/input_error.h"
+
+namespace ochre {
+
+DisplayOptions display_options(const OutputSettings& o) {
+  DisplayOptions d;
+  d.ocio_config = o.ocio_config;
+  d.display = o.display;
+  d.view = o.view;
+  d.working_space = o.colorspace;
+  d.exposure_stops = o.exposure;
+  d.white_balance_xyz = o.white_balance_xyz;
+  return d;
+}
+
+namespace {
+// Layers "albedo.R/G/B" (working space), "normal.X/Y/Z" (world), "depth.Z" (distance along the camera
+// ray, 0 where nothing was hit) and "samples.Y" (samples per pixel).
+void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage& image) {
+  const ColorSpace space = parse_color_space(colorspace);
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::vector<std::vector<float>> c(8, std::vector<float>(n));
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const size_t i = static_cast<size_t>(y) * film.width() + x;
+      const RGB albedo = xyz_to_rgb(film.mean_albedo(x, y), space);
+      const Vec3f normal = film.mean_normal(x, y);
+      const float values[8] = {albedo.r,
+                               albedo.g,
+                               albedo.b,
+                               normal.x,
+                               normal.y,
+                               normal.z,
+                               film.mean_depth(x, y),
+                               static_cast<float>(film.sample_count(x, y))};
+      for (int k = 0; k < 8; ++k) c[k][i] = values[k];
+    }
+  const char* names[8] = {"albedo.R", "albedo.G", "albedo.B", "normal.X",
+                          "normal.Y", "normal.Z", "depth.Z",  "samples.Y"};
+  for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
+}
+
+}  // namespace
+
+std::string spectral_channel_name(int component, float centre_nm) {
+  std::string value = fmt::format("{:.6f}", centre_nm);
+  std::replace(value.begin(), value.end(), '.', ',');
+  return fmt::format("S{}.{}nm", component, value);
+}
+
+void add_spectral_channels(const Film& film, ExrImage& image) {
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  for (int component = 0; component < (film.has_stokes() ? 4 : 1); ++component)
+    for (int b = 0; b < film.spectral_bins(); ++b) {
+      std::vector<float> channel(n);
+      for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
+          channel[static_cast<size_t>(y) * film.width() + x] = film.mean_spectral(x, y, b, component);
+      image.channels.emplace_back(spectral_channel_name(component, film.spectral_bin_centre(b)),
+                                  std::move(channel));
+    }
+  image.string_attributes["spectralLayoutVersion"] = "1.0";
+  image.string_attributes["emissiveUnits"] = "W.m^-2.sr^-1";
+}
+
+std::optional<float> spectral_channel_wavelength(std::string_view name, int component) {
+  const std::string prefix = fmt::format("S{}.", component);
+  if (name.size() <= prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
+      name.substr(name.size() - 2) != "nm")
+    return std::nullopt;
+  std::string value(name.substr(prefix.size(), name.size() - prefix.size() - 2));
+  std::replace(value.begin(), value.end(), ',', '.');
+  float nm = 0.0f;
+  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), nm);
+  if (error != std::errc() || end != value.data() + value.size() || !(nm > 0.0f)) return std::nullopt;
+  return nm;
+}
+
+std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
+  if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
+  const ColorSpace space = parse_color_space(outputs.colorspace);
+  std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
+      RGB c{m.x, m.y, m.z};
+      if (!outputs.camera_rgb) {
+        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                       space);
+      }
+      const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
+      rgb[i] = c.r;
+      rgb[i + 1] = c.g;
+      rgb[i + 2] = c.b;
+    }
+  return rgb;
+}
+
+std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
+  const ColorSpace space = parse_color_space(colorspace);
+  std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const RGB c = xyz_to_rgb(film.mean(x, y), space);
+      const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
+      rgb[i] = c.r;
+      rgb[i + 1] = c.g;
+      rgb[i + 2] = c.b;
+    }
+  return rgb;
+}
+
+ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
+                          const RenderSettings& settings, const RenderStats& stats,
+                          const std::string& scene_file) {
+  const std::string& colorspace = outputs.colorspace;
+  ExrImage image;
+  image.width = film.width();
+  image.height = film.height();
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> channel(n);
+    for (size_t i = 0; i < n; ++i) channel[i] = rgb[i * 3 + c];
+    image.channels.emplace_back(names[c], std::move(channel));
+  }
+  if (film.has_aovs()) add_aov_channels(film, colorspace, image);
+  if (film.spectral_bins() > 0) add_spectral_channels(film, image);
+  if (film.has_stokes()) add_stokes_channels(film, image);
+  // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
+  if (!outputs.camera_rgb)
+    image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+  if (outputs.sensor != "cie1931") {
+    image.string_attributes["ochre.sensor"] = outputs.sensor;
+    image.string_attributes["ochre.sensorOutput"] = outputs.camera_rgb ? "camera_rgb" : "white_balanced";
+  }
+  image.string_attributes["software"] = "ochre " OCHRE_VERSION;
+  image.string_attributes["ochre.scene"] = scene_file;
+  image.string_attributes["ochre.colorspace"] = colorspace;
+  image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
+  image.string_attributes["ochre.sampleRange"] =
+      fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
+  image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+  image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+  image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
+  return image;
+}
+
+void check_outputs(const OutputSettings& outputs) {
+  try {
+    if (outputs.exr.empty() && outputs.png.empty())
+      throw InputError("no output: give -o OUT.exr and/or --png OUT.png");
+    if (!outputs.exr.empty()) check_output_writable(outputs.exr);
+    if (!outputs.polarization_png.empty()) check_output_writable(outputs.polarization_png);
+    if (!outputs.png.empty()) {
+      check_output_writable(outputs.png);
+      // Build the display transform on one pixel now: an unknown config, display or view fails
+      // before any rendering.
+      to_display_rgb8(1, 1, {0.18f, 0.18f, 0.18f}, display_options(outputs));
+    }
+  } catch (const ImageError& e) {
+    throw InputError(e.what());
+  }
+}
+
+FilmLayers film_layers(const OutputSettings& outputs) {
+  FilmLayers layers;
+  const bool exr = !outputs.exr.empty();
+  layers.aovs = outputs.aovs && exr;
+  layers.spectral_bins = exr ? outputs.spectral_bins : 0;
+  layers.spectral_min = outputs.spectral_min;
+  layers.spectral_max = outputs.spectral_max;
+  layers.stokes = outputs.stokes || !outputs.polarization_png.empty();
+  return layers;
+}
+
+void check_render_memory(int width, int height, const OutputSettings& outputs) {
+  const FilmLayers layers = film_layers(outputs);
+  // write_outputs(): the working-space RGB (3 floats), then one of: the EXR's channels (floats), the
+  // display image (a float copy and 8-bit RGB), the polarization PNG (8-bit RGB).
+  size_t exr_channels = 0;
+  if (!outputs.exr.empty()) {
+    exr_channels = 3 + (layers.aovs ? 8 : 0) + (layers.stokes ? 14 : 0);
+    exr_channels += static_cast<size_t>(layers.spectral_bins) * (layers.stokes ? 4 : 1);
+  }
+  const size_t png_bytes = outputs.png.empty() ? 0 : 3 * sizeof(float) + 3;
+  const size_t polarization_bytes = outputs.polarization_png.empty() ? 0 : 3;
+  const size_t output_bytes =
+      3 * sizeof(float) + std::max({exr_channels * sizeof(float), png_bytes, polarization_bytes});
+  const double pixels = static_cast<double>(width) * height;
+  check_memory_estimate(pixels * static_cast<double>(Film::bytes_per_pixel(layers) + output_bytes),
+                        film_description(width, height, layers) + " with its output buffers");
+}
+
+std::vector<std::string> output_paths(const OutputSettings& outputs) {
+  std::vector<std::string> paths;
+  for (const std::string* path : {&outputs.exr, &outputs.polarization_png, &outputs.png})
+    if (!path->empty()) paths.push_back(*path);
+  return paths;
+}
+
+std::vector<std::string> write_outputs(const Film& film, const OutputSettings& outputs,
+                                       const RenderSettings& settings, const RenderStats& stats,
+                                       const std::string& scene_file) {
+  OutputTransaction transaction;  // every file is complete before any existing one is replaced
+  std::vector<std::string> written = add_outputs(transaction, film, outputs, settings, stats, scene_file);
+  transaction.commit();
+  return written;
+}
+
+std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film& film,
+                                     const OutputSettings& outputs, const RenderSettings& settings,
+                                     const RenderStats& stats, const std::string& scene_file) {
+  std::vector<std::string> written;
+  const std::vector<float> rgb = film_to_rgb(film, outputs);
+  if (!outputs.exr.empty()) {
+    const ExrImage image = render_exr_image(film, rgb, outputs, settings, stats, scene_file);
+    write_exr(transaction.add(outputs.exr), image);
+    written.push_back(
+        fmt::format("wrote {} ({}, {}x{})", outputs.exr,
+                    outputs.camera_rgb ? "camera RGB of " + outputs.sensor : "linear " + outputs.colorspace,
+                    image.width, image.height));
+  }
+  if (!outputs.polarization_png.empty() && film.has_stokes()) {
+    write_polarization_png(transaction.add(outputs.polarization_png), film);
+    written.push_back(fmt::format("wrote {} (hue: angle, brightness: degree of linear polarization)",
+                                  outputs.polarization_png));
+  }
+  if (!outputs.png.empty()) {
+    const DisplayTransformReport report = write_display_png(transaction.add(outputs.png), film.width(),
+                                                            film.height(), rgb, display_options(outputs));
+    written.push_back(fmt::format("wrote {} ({})", outputs.png, report.description));
+    for (const std::string& w : report.warnings) written.push_back("warning: " + w);
+  }
+  return written;
+}
+
+}  // namespace ochre

@@ -1,0 +1,84 @@
+#pragma once
+// Scene: everything a render needs, built by load_scene() (scene_loader.h) from a JSON file.
+
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "materials/core/mueller.h"
+#include "materials/graph/compiled_material.h"
+#include "renderer/camera/camera.h"
+#include "renderer/film/pixel_filter.h"
+#include "renderer/geometry/accel.h"
+#include "renderer/geometry/mesh.h"
+#include "renderer/lights/area_light.h"
+#include "renderer/lights/environment_light.h"
+#include "renderer/lights/flame_light.h"
+#include "renderer/lights/planar_mirrors.h"
+#include "renderer/sampling/distribution_1d.h"
+#include "renderer/scene/render_settings.h"
+#include "renderer/texture/texture_system.h"
+#include "spectra/sensor_response.h"
+
+namespace ochre {
+
+struct Scene {
+  std::filesystem::path file;
+  std::string description;  // the scene file's "description", shown by reports
+  RenderSettings settings;
+  OutputSettings outputs;
+  Camera camera;
+  PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
+  SensorPtr sensor;          // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
+
+  std::vector<std::shared_ptr<const CompiledMaterial>> materials;
+  std::vector<std::string> material_names;
+  std::vector<Mesh> meshes;
+  std::unique_ptr<Accel> accel;
+  std::unique_ptr<OiioTextureProvider> textures;
+
+  std::vector<std::unique_ptr<Light>> lights;
+  Distribution1D light_selection;  // proportional to light power
+  std::vector<int> mesh_light;     // light index of an emissive mesh, -1 otherwise
+  const EnvironmentLight* environment = nullptr;
+  int environment_light = -1;
+  // Planar mirrors and the lights' images in them (planar_mirrors.h); empty with integrator.mirror_lights
+  // false.
+  MirrorLights mirror_lights;
+  std::vector<FlameLight> flames;  // sphere lights in `lights` that flicker in a frame sequence
+
+  // Linear polarizers: on the camera (Mueller matrix in the camera's Stokes frame: x along the image x
+  // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
+  std::optional<Mueller> camera_analyzer;
+  std::vector<std::optional<Vec3>> mesh_polarizers;
+
+  // Facts the integrator uses to model only what the scene needs.
+  bool polarizing_materials = false;
+  bool polarizing_filters = false;
+  bool needs_uv = false;
+
+  // Builds the light list and selection distribution (after meshes and materials exist).
+  void build_lights();
+  // Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per second
+  // (renderer/lights/flame_light.h) and updates the light selection to the new powers.
+  void set_frame(uint64_t frame, double fps);
+  // The light selection distribution, proportional to the lights' powers.
+  void update_light_selection();
+  float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
+
+  // A scene of 2 to kMaxLocalLights lights chooses the light for each shading point from the lights'
+  // importance there (Light::importance): a spot light's pool of light is not starved by a bright sky whose
+  // power, integrated over the whole scene, dwarfs it. More lights: by power alone (light_selection).
+  static constexpr size_t kMaxLocalLights = 8;
+  using LightPmfs = std::array<float, kMaxLocalLights>;
+  bool local_light_selection() const {
+    return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
+  }
+  // The probability of choosing each light at p: a quarter in proportion to the importance, three quarters by
+  // power (a defensive mix: the estimates ignore occlusion and the receiver's orientation).
+  void light_pmfs(const Vec3& p, LightPmfs& out) const;
+};
+
+}  // namespace ochre
