@@ -7,6 +7,7 @@
 
 #include "materials/core/sampling.h"
 #include "renderer/json/spectrum_json.h"
+#include "renderer/lights/light_type.h"
 #include "spectra/cie.h"
 #include "spectra/rgb_spectrum.h"
 
@@ -113,28 +114,47 @@ float EnvironmentLight::pdf(const Vec3& direction) const {
   return map_->pdf(world_to_map(direction));
 }
 
-std::unique_ptr<EnvironmentLight> make_environment_light(const JsonFields& f,
-                                                         const std::filesystem::path& scene_dir,
-                                                         float scene_radius) {
-  f.check_known({"type", "radiance", "file", "scale", "rotation"});
-  const float scale = static_cast<float>(f.number("scale", 1.0, 0.0));
-  const float rotation = static_cast<float>(f.number("rotation", 0.0));
+namespace {
+
+BuiltLight build_environment(const LightContext& ctx) {
+  const DeclaredFields& f = ctx.fields;
+  const auto scale = static_cast<float>(f.number("scale"));
+  const auto rotation = static_cast<float>(f.number("rotation"));
   if (f.has("radiance") == f.has("file"))
     f.fail("", "an environment light needs exactly one of 'radiance' (constant) and 'file' (HDR map)");
   if (f.has("radiance")) {  // a rotation is accepted and has no effect on a constant
-    return std::make_unique<EnvironmentLight>(
-        parse_spectrum(f.require("radiance"), SpectrumRole::Illuminant, f.child("radiance"), scene_dir),
-        scene_radius, scale);
+    const JsonFields& j = f.fields();
+    return {std::make_unique<EnvironmentLight>(
+                parse_spectrum(j.require("radiance"), SpectrumRole::Illuminant, j.child("radiance"), ctx.dir),
+                ctx.scene_radius, scale),
+            std::nullopt, ""};
   }
-  const std::string file = f.required_string("file");
-  const std::filesystem::path path = scene_dir / file;
+  const std::filesystem::path path = ctx.dir / f.string("file");
   std::shared_ptr<const EnvironmentMap> map;
   try {
     map = std::make_shared<const EnvironmentMap>(EnvironmentMap::load(path));
   } catch (const std::exception& e) {
     f.fail("file", fmt::format("cannot read environment map '{}': {}", path.string(), e.what()));
   }
-  return std::make_unique<EnvironmentLight>(std::move(map), scene_radius, scale, rotation);
+  return {std::make_unique<EnvironmentLight>(std::move(map), ctx.scene_radius, scale, rotation), std::nullopt,
+          ""};
+}
+
+}  // namespace
+
+LightType environment_light_type() {
+  return {
+      "environment",
+      "light arriving from every direction at infinity: a constant `radiance` or an HDR latitude-longitude "
+      "map `file`, importance-sampled; one per scene",
+      {spectrum_field("radiance", false, "a spectrum arriving from every direction (not with `file`)"),
+       string_field("file", false,
+                    "a lat-long HDR map (.hdr, .exr; linear Rec.709 texels), relative to the scene file"),
+       number_field("scale", 1.0, 0.0, kNoMaximum, "multiplies the radiance"),
+       number_field("rotation", 0.0, kNoMinimum, kNoMaximum,
+                    "degrees about +y, counter-clockwise seen from above (maps only)")},
+      true,
+      build_environment};
 }
 
 }  // namespace ochre

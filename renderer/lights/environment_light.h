@@ -8,7 +8,7 @@
 // the world +y axis, right-handed (counter-clockwise seen from above): with +90, what the map shows
 // along -z (its centre column) appears along -x, and what it shows along +x appears along -z.
 //
-// Scene JSON (make_environment_light):
+// Scene JSON (the "environment" light type, environment_light.cpp):
 //   {"type": "environment", "radiance": <spectrum>, "scale": 1}                 constant
 //   {"type": "environment", "file": "sky.hdr", "scale": 1, "rotation": 0}       map (path relative to the
 //   scene)
@@ -78,12 +78,5 @@ class EnvironmentLight final : public Light {
   double mean_luminance_ = 0.0;  // of the radiance over the sphere, before the scale
   float cos_rotation_ = 1.0f, sin_rotation_ = 0.0f;
 };
-
-// Builds the environment light of a scene's "lights" entry: keys "type", "radiance" XOR "file",
-// "scale" (>= 0, default 1), "rotation" (degrees, default 0; maps only). Throws InputError naming
-// the file and the field (unknown key, both or neither of radiance/file, missing or unreadable map).
-std::unique_ptr<EnvironmentLight> make_environment_light(const JsonFields& f,
-                                                         const std::filesystem::path& scene_dir,
-                                                         float scene_radius);
 
 }  // namespace ochre

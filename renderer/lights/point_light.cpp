@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "renderer/json/spectrum_json.h"
+#include "renderer/lights/light_type.h"
 #include "spectra/cie.h"
 
 namespace ochre {
@@ -37,6 +39,30 @@ float PointLight::power() const {
 
 float PointLight::importance(const Vec3& p) const {
   return luminance_ / std::max(length_squared(position_ - p), 1e-12f);  // inverse-square law
+}
+
+namespace {
+
+BuiltLight build_point(const LightContext& ctx) {
+  const DeclaredFields& f = ctx.fields;
+  const JsonFields& j = f.fields();
+  auto light = std::make_unique<PointLight>(
+      f.vec3("position"),
+      parse_spectrum(j.require("intensity"), SpectrumRole::Illuminant, j.child("intensity"), ctx.dir));
+  light->polarizer_axis = parse_light_polarizer(j);
+  return {std::move(light), std::nullopt, "intensity"};
+}
+
+}  // namespace
+
+LightType point_light_type() {
+  return {"point",
+          "isotropic point light",
+          {required_vec3_field("position", "where it is"),
+           spectrum_field("intensity", true, "radiant intensity spectrum (W sr^-1 nm^-1 in relative units)"),
+           polarizer_field()},
+          false,
+          build_point};
 }
 
 }  // namespace ochre

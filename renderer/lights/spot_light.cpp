@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/json/spectrum_json.h"
+#include "renderer/lights/light_type.h"
 #include "renderer/lights/point_light.h"
+#include "renderer/lights/preset_lights.h"
 #include "spectra/cie.h"
 
 namespace ochre {
@@ -57,6 +60,62 @@ float SpotLight::importance(const Vec3& p) const {
   const float d2 = length_squared(d);
   if (!(d2 > 0.0f)) return 0.0f;
   return luminance_ * profile(d / std::sqrt(d2)) / d2;
+}
+
+namespace {
+
+BuiltLight build_spot(const LightContext& ctx) {
+  const DeclaredFields& f = ctx.fields;
+  const JsonFields& j = f.fields();
+  const Vec3 position = f.vec3("position");
+  if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
+  const char* aim = f.has("direction") ? "direction" : "target";
+  const Vec3 direction =
+      f.has("direction") ? j.required_vec3("direction") : j.required_vec3("target") - position;
+  if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
+    f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
+  const SpotLight::Falloff shape =
+      f.choice("falloff") == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
+  std::unique_ptr<SpotLight> light;
+  if (f.has("preset")) {  // docs/lights.md
+    const SpotPresetValues v = spot_preset_values(j);
+    light = std::make_unique<SpotLight>(position, direction, static_cast<float>(v.cone_angle),
+                                        static_cast<float>(v.falloff_start), v.intensity, shape);
+  } else {
+    if (f.has("scale"))
+      f.fail("scale", "belongs to a \"preset\" light (scale an intensity spectrum with its own scale)");
+    const double cone = f.number_or("cone_angle", 30.0);
+    const double falloff = j.number("falloff_start", cone, 0.0, cone, true);
+    light = std::make_unique<SpotLight>(
+        position, direction, static_cast<float>(cone), static_cast<float>(falloff),
+        parse_spectrum(j.require("intensity"), SpectrumRole::Illuminant, j.child("intensity"), ctx.dir),
+        shape);
+  }
+  light->polarizer_axis = parse_light_polarizer(j);
+  return {std::move(light), std::nullopt, f.has("preset") ? "scale" : "intensity"};
+}
+
+}  // namespace
+
+LightType spot_light_type() {
+  return {
+      "spot",
+      "a point light confined to a cone, with a smooth falloff at its edge",
+      {required_vec3_field("position", "where it is"),
+       object_field("direction", "", "[x, y, z]: where it points (or give `target`)"),
+       object_field("target", "", "[x, y, z]: a point it aims at (or give `direction`)"),
+       computed_number_field("cone_angle", "30, or the preset's", 0.0, 180.0, true,
+                             "half-angle of the cone in degrees"),
+       computed_number_field("falloff_start", "= `cone_angle`", 0.0, 180.0, true,
+                             "half-angle where the falloff begins, at most `cone_angle`"),
+       choice_field("falloff", "smoothstep", {"smoothstep", "linear"},
+                    "the ramp: a smoothstep in the cosine (pbrt-v4's) or linear in the angle (Mitsuba 3's)"),
+       spectrum_field("intensity", false, "radiant intensity on the axis (required without `preset`)"),
+       string_field("preset", false,
+                    "a spot preset (docs/lights.md): it gives the spectrum, intensity and cone"),
+       number_field("scale", 1.0, 0.0, 1e30, "multiplies a preset's intensity"), polarizer_field()},
+      false,
+      build_spot};
 }
 
 }  // namespace ochre

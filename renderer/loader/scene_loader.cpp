@@ -17,17 +17,16 @@
 #include "renderer/json/json_fields.h"
 #include "renderer/json/json_file.h"
 #include "renderer/json/spectrum_json.h"
-#include "renderer/lights/point_light.h"
-#include "renderer/lights/preset_lights.h"
-#include "renderer/lights/spot_light.h"
+#include "renderer/lights/light_type.h"
 #include "renderer/loader/material_templates.h"
 #include "renderer/loader/mitsuba/mitsuba_import.h"
 #include "renderer/loader/scene_sources.h"
 #include "renderer/shapes/control_mesh.h"
 #include "renderer/shapes/displacement.h"
-#include "renderer/shapes/groove_shapes.h"
 #include "renderer/shapes/mesh_import.h"
+#include "renderer/shapes/mesh_shape.h"
 #include "renderer/shapes/procedural_shapes.h"
+#include "renderer/shapes/shape_type.h"
 #include "renderer/shapes/subdivision.h"
 #include "renderer/util/memory_budget.h"
 #include "spectra/cie.h"
@@ -173,17 +172,6 @@ void check_settings(const Scene& scene, const std::string& file) {
     throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
 }
 
-// "polarizer": {"axis": [x, y, z]} in front of a light or an emissive shape: the world transmission axis.
-std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {
-  if (!f.has("polarizer")) return std::nullopt;
-  const JsonFields p(f.require("polarizer"), f.child("polarizer"));
-  p.check_known({"axis"});
-  const Vec3 axis = p.required_vec3("axis");
-  if (!(length(axis) > 0.0f) || !std::isfinite(length(axis)))
-    p.fail("axis", "must be a non-zero vector of finite length");
-  return normalize(axis);
-}
-
 // "polarizer": {"angle": degrees} on the camera: a linear analyzer whose transmission axis is turned by
 // `angle` from the image x axis toward the image's up direction (docs/polarization.md).
 std::optional<Mueller> parse_camera_polarizer(const JsonFields& f) {
@@ -293,33 +281,23 @@ int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& 
   return index;
 }
 
-// The import options of a "mesh" shape: smooth_normals, face_normals (not both), flip_uv_v.
-MeshImportOptions parse_mesh_import_options(const JsonFields& f) {
-  MeshImportOptions options;
-  options.smooth_normals = f.boolean("smooth_normals", false);
-  options.face_normals = f.boolean("face_normals", false);
-  options.flip_uv_v = f.boolean("flip_uv_v", false);
-  if (options.smooth_normals && options.face_normals)
-    f.fail("face_normals", "contradicts \"smooth_normals\": give one of them");
-  return options;
+Transform shape_transform(const JsonFields& f) {
+  return f.has("transform") ? parse_transform(f.require("transform"), f.child("transform"))
+                            : Transform::identity();
 }
 
 // A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
 // file material, with the scene material the shape's "materials" map gives it (by name, or "*").
-std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem::path& dir, Scene& scene,
+std::vector<Mesh> load_material_parts(const DeclaredFields& f, const std::filesystem::path& dir, Scene& scene,
                                       MaterialTemplates& templates) {
-  f.check_known({"type", "file", "materials", "transform", "smooth_normals", "face_normals", "flip_uv_v",
-                 "flip_normals", "name", "polarizer"});
-  if (f.required_string("type") != "mesh") f.fail("materials", "only a \"mesh\" shape has a materials map");
-  const JsonFields map(f.require("materials"), f.child("materials"));
-  std::filesystem::path path = f.required_string("file");
-  if (path.is_relative()) path = dir / path;
-  const Transform to_world = f.has("transform")
-                                 ? parse_transform(f.require("transform"), f.child("transform"))
-                                 : Transform::identity();
-  const MeshImportOptions options = parse_mesh_import_options(f);
+  for (const char* key : {"subdivision", "displacement"})
+    if (f.has(key)) f.fail(key, "is not supported with \"materials\" (one mesh per file material)");
+  const JsonFields map(f.fields().require("materials"), f.fields().child("materials"));
+  const std::filesystem::path path = mesh_file(f, dir);
+  const Transform to_world = shape_transform(f.fields());
+  const MeshImportOptions options = mesh_import_options(f);
   std::vector<MeshMaterialPart> parts =
-      f.in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
+      f.fields().in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
   std::string file_materials;
   for (const MeshMaterialPart& part : parts)
     file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
@@ -330,7 +308,7 @@ std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem
     if (key != "*" && !in_file)
       map.fail(key, fmt::format("the file has no material '{}' (it has: {})", key, file_materials));
   }
-  const std::string shape_name = f.string("name", "mesh");
+  const std::string shape_name = f.fields().string("name", "mesh");
   std::vector<Mesh> meshes;
   for (MeshMaterialPart& part : parts) {
     const std::string key = map.has(part.material.c_str()) ? part.material : "*";
@@ -341,159 +319,23 @@ std::vector<Mesh> load_material_parts(const JsonFields& f, const std::filesystem
                          part.material, file_materials));
     part.mesh.material = part_material(scene, templates, map, key, part, path.parent_path());
     part.mesh.name = shape_name + "/" + part.material;
-    if (f.boolean("flip_normals", false)) flip_normals(part.mesh);
+    if (f.boolean("flip_normals")) flip_normals(part.mesh);
     meshes.push_back(std::move(part.mesh));
   }
   return meshes;
 }
 
-Mesh load_triangles(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
-                    const MeshImportOptions& options) {
-  if (f.has("displacement"))
-    f.fail("displacement", "needs \"subdivision\" (displacement moves the refined vertices)");
-  return f.in_context("file", [&] { return import_mesh(path, to_world, options); });
-}
-
-// Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the
-// smooth normal (shading normals recomputed).
-Mesh load_subdivided(const JsonFields& f, const std::filesystem::path& path, const Transform& to_world,
-                     const Scene& scene, const std::filesystem::path& dir) {
-  const SubdivisionOptions options =
-      parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
-  const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, to_world); });
-  Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
-  if (f.has("displacement")) {
-    const DisplacementOptions d =
-        parse_displacement(JsonFields(f.require("displacement"), f.child("displacement")), dir);
-    f.in_context("displacement", [&] { displace(mesh, d, *scene.textures); });
-  }
-  return mesh;
-}
-
-// The explicit groove shapes of renderer/shapes/groove_shapes.h, in object space.
-Mesh load_groove_shape(const JsonFields& f, const std::string& type) {
-  auto positive = [&](const char* key, double fallback) {
-    return static_cast<float>(f.number(key, fallback, 0.0, 1e30, true));
-  };
-  auto alpha = [&] { return static_cast<float>(f.number("alpha", 90.0, 0.1, 179.9)); };
-  if (type == "groove_plate") {
-    f.check_known({"type", "alpha", "pitch", "count", "length", "tile", "orientation", "material",
-                   "transform", "name", "polarizer"});
-    GroovePlate plate;
-    plate.alpha_degrees = alpha();
-    plate.pitch = positive("pitch", 1.0);
-    plate.count = static_cast<int>(f.integer("count", 40, 1, 1 << 22));
-    plate.length = positive("length", 40.0);
-    plate.tile_pitches = static_cast<float>(f.number("tile", 8.0, 0.0, 1e30));
-    const double triangles = groove_plate_triangle_count(plate);
-    check_triangle_estimate(
-        triangles, kTessellatedTriangleBytes,
-        groove_plate_tiles(plate) > 1
-            ? fmt::format("{}: a groove plate of {:.0f} triangles ({} grooves x {:.0f} tiles along them)",
-                          f.child("count"), triangles, plate.count, groove_plate_tiles(plate))
-            : fmt::format("{}: a groove plate of {:.0f} triangles", f.child("count"), triangles));
-    Mesh mesh = make_groove_plate(plate);
-    mesh.transform(
-        Transform::rotate(static_cast<float>(f.number("orientation", 0.0, -360.0, 360.0)), {0, 0, 1}));
-    return mesh;
-  }
-  if (type == "cylinder") {
-    f.check_known({"type", "radius", "height", "segments", "material", "transform", "name", "polarizer"});
-    const float radius = positive("radius", 1.0), height = positive("height", 2.0);
-    const int segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
-    const double triangles = cylinder_triangle_count(segments);
-    check_triangle_estimate(
-        triangles, kTessellatedTriangleBytes,
-        fmt::format("{}: a cylinder of {:.0f} triangles", f.child("segments"), triangles));
-    return make_cylinder(radius, height, segments);
-  }
-  f.check_known({"type", "radius", "height", "alpha", "pitch", "segments", "material", "transform", "name",
-                 "polarizer"});
-  GroovedCylinder c;
-  c.radius = positive("radius", 1.0);
-  c.height = positive("height", 2.0);
-  c.alpha_degrees = alpha();
-  c.pitch = positive("pitch", 0.05);
-  c.segments = static_cast<int>(f.integer("segments", 256, 3, 1 << 20));
-  if (!(c.pitch <= c.height)) f.fail("pitch", "must not exceed the height");
-  if (!(0.5 * c.pitch / std::tan(0.5 * c.alpha_degrees * M_PI / 180.0) < c.radius))
-    f.fail("alpha", "the grooves would be deeper than the radius: increase alpha or decrease the pitch");
-  const double triangles = grooved_cylinder_triangle_count(c);
-  check_triangle_estimate(
-      triangles, kTessellatedTriangleBytes,
-      fmt::format("{}: a grooved cylinder of {:.0f} grooves x {} segments ({:.0f} triangles)", f.where(),
-                  groove_count(c), c.segments, triangles));
-  return make_grooved_cylinder(c);
-}
-
 // `dir`: the folder of the file that holds the shape (its paths are relative to it).
-Mesh load_shape(const JsonFields& f, const Scene& scene, const MaterialTemplates& templates,
-                const std::filesystem::path& dir) {
-  const std::string type = f.required_string("type");
-  const Transform to_world = f.has("transform")
-                                 ? parse_transform(f.require("transform"), f.child("transform"))
-                                 : Transform::identity();
-  Mesh mesh;
-  if (type == "mesh") {
-    f.check_known({"type", "file", "material", "transform", "smooth_normals", "face_normals", "flip_uv_v",
-                   "flip_normals", "name", "subdivision", "displacement", "polarizer"});
-    std::filesystem::path path = f.required_string("file");
-    if (path.is_relative()) path = dir / path;
-    const MeshImportOptions options = parse_mesh_import_options(f);
-    for (const char* key : {"flip_uv_v", "face_normals"})
-      if (f.has("subdivision") && f.boolean(key, false))
-        f.fail(key, "is not supported with \"subdivision\" (change the file instead)");
-    mesh = f.has("subdivision") ? load_subdivided(f, path, to_world, scene, dir)
-                                : load_triangles(f, path, to_world, options);
-  } else if (type == "sphere") {
-    f.check_known({"type", "center", "radius", "subdivisions", "material", "transform", "name", "polarizer",
-                   "flip_uv_v", "flip_normals"});
-    const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
-    const int subdivisions = static_cast<int>(f.integer("subdivisions", 96, 4, 4096));
-    check_memory_estimate(sphere_memory_bytes(subdivisions),
-                          fmt::format("{}: a sphere of {:.0f} triangles", f.child("subdivisions"),
-                                      sphere_triangle_count(subdivisions)));
-    const Vec3 center = f.vec3("center", {0, 0, 0});
-    mesh = f.in_context("", [&] { return make_sphere(radius, subdivisions); });
-    f.in_context("", [&] { mesh.transform(to_world * Transform::translate(center)); });
-  } else if (type == "plane") {
-    f.check_known(
-        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
-    Vec2 size{2, 2};
-    if (f.has("size")) {
-      const auto [width, height] = number_pair(f, "size", "[width, height]", 0.0, kNoMaximum, true);
-      size = {static_cast<float>(width), static_cast<float>(height)};
-    }
-    mesh = f.in_context("", [&] { return make_plane(size); });
-    f.in_context("", [&] { mesh.transform(to_world); });
-  } else if (type == "disk") {
-    f.check_known({"type", "radius", "segments", "material", "transform", "name", "polarizer", "flip_uv_v",
-                   "flip_normals"});
-    const float radius = static_cast<float>(f.number("radius", 1.0, 0.0, 1e30, true));
-    const int segments = static_cast<int>(f.integer("segments", 128, 3, 1 << 20));
-    mesh = f.in_context("", [&] { return make_disk(radius, segments); });
-    f.in_context("", [&] { mesh.transform(to_world); });
-  } else if (type == "cube") {
-    f.check_known(
-        {"type", "size", "material", "transform", "name", "polarizer", "flip_uv_v", "flip_normals"});
-    const Vec3 size = f.vec3("size", {2, 2, 2});
-    mesh = f.in_context("size", [&] { return make_cube(size); });
-    f.in_context("", [&] { mesh.transform(to_world); });
-  } else if (type == "groove_plate" || type == "cylinder" || type == "grooved_cylinder") {
-    mesh = load_groove_shape(f, type);
-    f.in_context("", [&] { mesh.transform(to_world); });
-  } else {
-    f.fail("type",
-           fmt::format("unknown shape type '{}' (known: mesh, sphere, plane, disk, cube, groove_plate, "
-                       "cylinder, grooved_cylinder)",
-                       type));
-  }
+Mesh load_shape(const DeclaredFields& f, const ShapeType& type, Scene& scene,
+                const MaterialTemplates& templates, const std::filesystem::path& dir) {
+  const Transform to_world = shape_transform(f.fields());
+  Mesh mesh = type.build(ShapeContext{f, to_world, dir, *scene.textures});
   // Every shape may face the other way; procedural ones may flip their uvs (meshes do it on import).
-  if (f.boolean("flip_normals", false)) flip_normals(mesh);
-  if (type != "mesh" && f.boolean("flip_uv_v", false)) flip_uv_v(mesh);
-  mesh.name = f.string("name", type);
-  mesh.material = material_index(scene, templates, f, "material", f.required_string("material"));
-  mesh.validate(f.where());
+  if (f.boolean("flip_normals")) flip_normals(mesh);
+  if (type.loader_flips_uv && f.boolean("flip_uv_v")) flip_uv_v(mesh);
+  mesh.name = f.fields().string("name", type.name);
+  mesh.material = material_index(scene, templates, f.fields(), "material", f.string("material"));
+  mesh.validate(f.fields().where());
   return mesh;
 }
 
@@ -502,12 +344,19 @@ void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scen
   if (!top.has("shapes") && sources.shapes.empty()) top.fail("shapes", "expected an array of shapes");
   for (const SceneItem& shape : sources.shapes) {
     const JsonFields f(shape.json, shape.where);
+    const ShapeType& type = ShapeRegistry::builtin().type_of(f);
+    const std::vector<const FieldSpec*> declarations = type.declarations();
+    const DeclaredFields fields(f, declarations);
+    if (f.has("materials") && type.name != "mesh")
+      f.fail("materials", "only a \"mesh\" shape has a materials map");
+    fields.check_known();
     std::vector<Mesh> meshes;
     if (f.has("materials")) {
       if (f.has("material")) f.fail("materials", "give either \"material\" or \"materials\", not both");
-      meshes = load_material_parts(f, shape.file.parent_path(), scene, templates);
+      meshes = load_material_parts(fields, shape.file.parent_path(), scene, templates);
     } else {
-      meshes.push_back(load_shape(f, scene, templates, shape.file.parent_path()));
+      f.required_string("material");  // before any work: a shape without one is refused at once
+      meshes.push_back(load_shape(fields, type, scene, templates, shape.file.parent_path()));
     }
     const std::optional<Vec3> polarizer = parse_light_polarizer(f);
     for (Mesh& mesh : meshes) {
@@ -526,77 +375,21 @@ void check_power(const Light& light, const JsonFields& f, const char* key) {
     f.fail(key, "the light's power overflows single precision (the value is too large)");
 }
 
-std::unique_ptr<Light> load_spot_light(const JsonFields& f, const std::filesystem::path& dir) {
-  f.check_known({"type", "position", "direction", "target", "cone_angle", "falloff_start", "falloff",
-                 "intensity", "polarizer", "preset", "scale"});
-  const Vec3 position = f.required_vec3("position");
-  if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
-  const char* aim = f.has("direction") ? "direction" : "target";
-  const Vec3 direction =
-      f.has("direction") ? f.required_vec3("direction") : f.required_vec3("target") - position;
-  if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
-    f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
-  const std::string ramp = f.string("falloff", "smoothstep");
-  if (ramp != "smoothstep" && ramp != "linear")
-    f.fail("falloff", fmt::format("unknown falloff '{}' (known: smoothstep, linear)", ramp));
-  const SpotLight::Falloff shape =
-      ramp == "linear" ? SpotLight::Falloff::Linear : SpotLight::Falloff::Smoothstep;
-  std::unique_ptr<SpotLight> light;
-  if (f.has("preset")) {  // docs/lights.md
-    const SpotPresetValues v = spot_preset_values(f);
-    light = std::make_unique<SpotLight>(position, direction, static_cast<float>(v.cone_angle),
-                                        static_cast<float>(v.falloff_start), v.intensity, shape);
-  } else {
-    if (f.has("scale"))
-      f.fail("scale", "belongs to a \"preset\" light (scale an intensity spectrum with its own scale)");
-    const double cone = f.number("cone_angle", 30.0, 0.0, 180.0, true);
-    const double falloff = f.number("falloff_start", cone, 0.0, cone, true);
-    light = std::make_unique<SpotLight>(
-        position, direction, static_cast<float>(cone), static_cast<float>(falloff),
-        parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir), shape);
-  }
-  light->polarizer_axis = parse_light_polarizer(f);
-  return light;
-}
-
 void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) {
   for (const SceneItem& item : sources.lights) {
     const std::filesystem::path dir = item.file.parent_path();
     const JsonFields f(item.json, item.where);
-    const std::string type = f.required_string("type");
-    if (type == "environment") {
-      if (scene.environment) f.fail("type", "only one environment light is allowed");
-      auto env = make_environment_light(f, dir, scene_radius);
-      scene.environment = env.get();
-      scene.lights.push_back(std::move(env));
-    } else if (type == "point") {
-      f.check_known({"type", "position", "intensity", "polarizer"});
-      auto light = std::make_unique<PointLight>(
-          f.required_vec3("position"),
-          parse_spectrum(f.require("intensity"), SpectrumRole::Illuminant, f.child("intensity"), dir));
-      light->polarizer_axis = parse_light_polarizer(f);
-      check_power(*light, f, "intensity");
-      scene.lights.push_back(std::move(light));
-    } else if (type == "spot") {
-      scene.lights.push_back(load_spot_light(f, dir));
-      check_power(*scene.lights.back(), f, f.has("preset") ? "scale" : "intensity");
-    } else if (type == "flame") {  // docs/lights.md
-      LoadedFlame loaded = load_flame(f);
-      check_power(*loaded.light, f, f.has("scale") ? "scale" : "intensity");
-      loaded.flame.index = static_cast<int>(scene.flames.size());
-      scene.flames.push_back(loaded.flame);
-      scene.lights.push_back(std::move(loaded.light));
-    } else if (type == "camera_flash") {
-      auto light = load_camera_flash(f, scene.camera);
-      light->polarizer_axis = parse_light_polarizer(f);
-      check_power(*light, f, "scale");
-      scene.lights.push_back(std::move(light));
-    } else {
-      f.fail("type",
-             fmt::format("unknown light type '{}' (known: environment, point, spot, flame, camera_flash; "
-                         "emissive shapes are area lights)",
-                         type));
+    const LightType& type = LightRegistry::builtin().type_of(f);
+    if (type.one_per_scene && scene.environment)
+      f.fail("type", fmt::format("only one {} light is allowed", type.name));
+    BuiltLight built = type.load(f, dir, scene.camera, scene_radius);
+    if (!built.power_field.empty()) check_power(*built.light, f, built.power_field.c_str());
+    if (type.one_per_scene) scene.environment = static_cast<const EnvironmentLight*>(built.light.get());
+    if (built.flame) {
+      built.flame->index = static_cast<int>(scene.flames.size());
+      scene.flames.push_back(*built.flame);
     }
+    scene.lights.push_back(std::move(built.light));
   }
 }
 

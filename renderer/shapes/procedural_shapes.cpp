@@ -145,4 +145,40 @@ Mesh make_sphere(float radius, int subdivisions) {
   return mesh;
 }
 
+Mesh make_cone(float radius, float top_radius, float height, int segments) {
+  require_positive(radius, "cone", "radius");
+  require_positive(height, "cone", "height");
+  if (!(top_radius >= 0.0f) || !std::isfinite(top_radius))
+    throw InputError(fmt::format("cone: top_radius must be a finite number >= 0, got {}", top_radius));
+  require_at_least(segments, 3, "cone", "segments");
+  Mesh mesh;
+  mesh.name = "cone";
+  // The slant's outward normal in the (r, z) plane: the profile direction (top - radius, height) turned by
+  // -90 degrees.
+  const double dr = double(top_radius) - radius, len = std::hypot(dr, double(height));
+  const double nr = height / len, nz = -dr / len;
+  const uint32_t row = static_cast<uint32_t>(segments) + 1;
+  mesh.positions.reserve(2 * size_t(row) + 1);
+  for (const float z : {0.0f, height}) {
+    const float r = z == 0.0f ? radius : top_radius;
+    for (int i = 0; i <= segments; ++i) {
+      const double phi = 2.0 * M_PI * (i % segments) / segments;  // the seam repeats column 0's bits
+      const double c = std::cos(phi), s = std::sin(phi);
+      mesh.add_vertex({static_cast<float>(r * c), static_cast<float>(r * s), z},
+                      {static_cast<float>(nr * c), static_cast<float>(nr * s), static_cast<float>(nz)},
+                      {float(i) / segments, z / height});
+    }
+  }
+  for (uint32_t i = 0; i < static_cast<uint32_t>(segments); ++i) {
+    mesh.add_triangle(i, i + 1, row + i + 1);
+    if (top_radius > 0.0f) mesh.add_triangle(i, row + i + 1, row + i);  // a pointed cone has no top edge
+  }
+  mesh.reserve_vertex_padding();
+  return mesh;
+}
+
+double cone_triangle_count(int segments, bool pointed) {
+  return (pointed ? 1.0 : 2.0) * segments;
+}
+
 }  // namespace ochre

@@ -30,6 +30,12 @@ Mesh make_sphere(float radius, int subdivisions);
 // with v measured upward (v_ochre = 1 - v_Mitsuba), so an image appears on each face as in Mitsuba.
 Mesh make_cube(Vec3 size);
 
+// Open cone (a frustum when top_radius > 0) about z from z = 0 (radius `radius`) to z = height (radius
+// `top_radius`, 0 for a pointed cone), without caps: `segments` (>= 3) quads around, flat along the slant
+// and smooth around it (the normal of the exact cone at each vertex's angle); u = angle / 2pi (counter-
+// clockwise about +z), v = z / height. 2 x segments triangles (segments for a pointed cone).
+Mesh make_cone(float radius, float top_radius, float height, int segments);
+
 // Reverses every triangle's winding and negates the normals: the surface faces the other way (which
 // side emits, where a dielectric's outside is).
 void flip_normals(Mesh& mesh);
@@ -40,5 +46,7 @@ void flip_uv_v(Mesh& mesh);
 // (renderer/util/memory_budget.h), checked before a scene asks for a sphere.
 double sphere_triangle_count(int subdivisions);
 double sphere_memory_bytes(int subdivisions);
+// Triangles of make_cone.
+double cone_triangle_count(int segments, bool pointed);
 
 }  // namespace ochre

@@ -93,6 +93,50 @@ TEST(AnalyticDirectLighting, PointLightOverLambertPlane) {
   EXPECT_LT(worst, 0.01);
 }
 
+// A directional light of irradiance E arriving at 60 degrees from the normal of a Lambert plane: every pixel
+// is rho E cos(60) / pi (a delta light: the only noise is the spectral estimate of the constant spectrum's
+// luminance, 8 wavelengths a sample); under a second, larger plane above the camera
+// every pixel is in its shadow (the shadow ray runs to infinity).
+TEST(AnalyticDirectLighting, DirectionalLightOverLambertPlane) {
+  const double rho = 0.5, E = 3.0, theta = 60.0 * M_PI / 180.0;
+  const int res = 32;
+  const LuminanceImage img =
+      render_luminance(fmt::format(R"({{
+    "camera": {{"type": "orthographic", "size": 4, "eye": [0, 0, 5], "target": [0, 0, 0]}},
+    "film": {{"resolution": [{}, {}]}},
+    "integrator": {{"spp": 256, "max_depth": 1}},
+    "materials": {{"m": {{"type": "lambert", "color": {}}}}},
+    "lights": [{{"type": "directional", "direction": [{}, 0, {}], "irradiance": {}}}],
+    "shapes": [{{"type": "plane", "size": [10, 10], "material": "m"}}]
+  }})",
+                                   res, res, rho, -std::sin(theta), -std::cos(theta), E));
+  ASSERT_EQ(img.width, res);
+  const double expected = rho * E * std::cos(theta) / M_PI;
+  double worst = 0.0, mean = 0.0;
+  for (int j = 0; j < res; ++j)
+    for (int i = 0; i < res; ++i) {
+      worst = std::max(worst, std::fabs(img.at(i, j) / expected - 1.0));
+      mean += img.at(i, j) / (res * res);
+    }
+  std::printf("directional light over Lambert plane: worst per-pixel relative error %.2e, mean %.2e\n", worst,
+              mean / expected - 1.0);
+  EXPECT_LT(worst, 3e-4);
+  EXPECT_NEAR(mean / expected, 1.0, 1e-5);
+
+  const LuminanceImage shadowed = render_luminance(fmt::format(R"({{
+    "camera": {{"type": "orthographic", "size": 4, "eye": [0, 0, 0.5], "target": [0, 0, 0]}},
+    "film": {{"resolution": [8, 8]}},
+    "integrator": {{"spp": 4, "max_depth": 1}},
+    "materials": {{"m": {{"type": "lambert", "color": 0.5}}}},
+    "lights": [{{"type": "directional", "direction": [{}, 0, {}], "irradiance": 3}}],
+    "shapes": [{{"type": "plane", "size": [10, 10], "material": "m"}},
+               {{"type": "plane", "size": [100, 100], "material": "m", "transform": {{"translate": [0, 0, 1]}}}}]
+  }})",
+                                                               -std::sin(theta), -std::cos(theta)));
+  for (int j = 0; j < 8; ++j)
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(shadowed.at(i, j), 0.0) << i << ", " << j;
+}
+
 // A constant environment L over a Lambert plane seen straight down: every pixel is rho L.
 TEST(AnalyticDirectLighting, ConstantEnvironmentOverPlane) {
   const LuminanceImage img = render_luminance(R"({

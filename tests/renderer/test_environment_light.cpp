@@ -16,6 +16,7 @@
 #include "materials/lobes/sampling_check.h"
 #include "renderer/image/exr_writer.h"
 #include "renderer/lights/environment_light.h"
+#include "renderer/lights/light_type.h"
 #include "spectra/color_space.h"
 #include "spectra/input_error.h"
 #include "spectra/rgb_spectrum.h"
@@ -54,9 +55,13 @@ fs::path write_map_exr(const fs::path& path, int width, int height, const std::v
   return path;
 }
 
+// The scene's "lights" entry `j` built through the light registry, as the loader builds it.
 std::unique_ptr<EnvironmentLight> make_light(const nlohmann::json& j, const fs::path& dir,
                                              float radius = 1.0f) {
-  return make_environment_light(JsonFields(j, "scene.json: lights[0]"), dir, radius);
+  const JsonFields f(j, "scene.json: lights[0]");
+  const Camera camera = Camera::perspective(camera_basis_look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}), 40, 8, 8);
+  BuiltLight built = LightRegistry::builtin().type_of(f).load(f, dir, camera, radius);
+  return std::unique_ptr<EnvironmentLight>(dynamic_cast<EnvironmentLight*>(built.light.release()));
 }
 
 float luminance(const RGB& rgb) {

@@ -118,6 +118,40 @@ TEST(ProceduralShapes, CubeFacesPointOutwardWithMitsubasUvs) {
   EXPECT_EQ(cube.uvs[2].y, 1.0f);
 }
 
+// The lateral area of the polygonal frustum of n flat trapezoids: each has parallel sides 2 r1 sin(pi/n) and
+// 2 r2 sin(pi/n) at the height sqrt(h^2 + (r1 - r2)^2 cos^2(pi/n)) from each other (r2 = 0: triangles).
+// Normals: unit, perpendicular to the slant, outward.
+TEST(ProceduralShapes, ConeAreaNormalsAndUvs) {
+  for (const float top : {0.0f, 0.5f, 1.5f}) {
+    const float r = 1.0f, h = 2.0f;
+    const int n = 256;
+    const Mesh cone = make_cone(r, top, h, n);
+    EXPECT_NO_THROW(cone.validate("cone"));
+    EXPECT_EQ(cone.triangle_count(), top > 0 ? 2u * n : 1u * n);
+    const double half = M_PI / n;
+    const double exact =
+        n * (double(r) + top) * std::sin(half) * std::hypot(double(h), (double(r) - top) * std::cos(half));
+    EXPECT_NEAR(cone.surface_area() / exact, 1.0, 1e-5) << top;
+    for (size_t t = 0; t < cone.triangle_count(); ++t) {
+      const Vec3 ng = face_normal(cone, t), centre = cone.positions[cone.indices[3 * t]];
+      EXPECT_GT(dot(ng, Vec3(centre.x, centre.y, 0.0f)), 0.0f) << "triangle " << t << " faces inward";
+    }
+    for (size_t i = 0; i < cone.positions.size(); ++i) {
+      const Vec3 &p = cone.positions[i], &nrm = cone.normals[i];
+      EXPECT_NEAR(length(nrm), 1.0f, 1e-6f);
+      // Along the slant at the vertex's angle: (top - r) (cos, sin) radially and h up; the normal is
+      // perpendicular to it.
+      const float phi = 2.0f * float(M_PI) * cone.uvs[i].x;
+      const Vec3 slant_dir{(top - r) * std::cos(phi), (top - r) * std::sin(phi), h};
+      EXPECT_NEAR(dot(nrm, slant_dir) / length(slant_dir), 0.0f, 1e-5f);
+      EXPECT_FLOAT_EQ(cone.uvs[i].y, p.z / h);
+    }
+  }
+  EXPECT_THROW(make_cone(1, -0.5f, 2, 16), InputError);
+  EXPECT_THROW(make_cone(1, 0.5f, 0, 16), InputError);
+  EXPECT_THROW(make_cone(1, 0.5f, 2, 2), InputError);
+}
+
 TEST(ProceduralShapes, FlipNormalsTurnsTheSurfaceAndFlipUvVTheImage) {
   Mesh plane = make_plane({2, 2});
   flip_normals(plane);
