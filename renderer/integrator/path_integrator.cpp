@@ -135,10 +135,8 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
   if (incoming.radiance.is_black()) return;
 
-  Ray shadow;
-  shadow.origin = offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, ls->wi);
-  shadow.dir = ls->wi;
-  shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
+  const Ray shadow =
+      spawn_ray(v.sp, v.ng, ls->wi, std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f));
   ++stats.shadow_rays;
   if (scene_.accel->occluded(shadow)) return;
 
@@ -179,7 +177,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (incoming.radiance.is_black()) return;
 
   // The first surface toward the image must be the mirror itself, and the light visible from there.
-  const Ray to_mirror{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  const Ray to_mirror = spawn_ray(v.sp, v.ng, wi);
   ++stats.rays;
   const auto hit = scene_.accel->intersect(to_mirror);
   if (!hit || static_cast<int>(hit->mesh) != mirror.mesh) return;
@@ -187,10 +185,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   m.sp = surface_point(scene_.meshes, *hit, to_mirror);
   const Vec3 wo_m = -wi;
   m.ng = dot(m.sp.ng, wo_m) >= 0.0f ? m.sp.ng : -m.sp.ng;
-  Ray shadow;
-  shadow.origin = offset_ray_origin(m.sp.p, m.sp.p_error, m.ng, ls->wi);
-  shadow.dir = ls->wi;
-  shadow.tmax = length(y - m.sp.p) * (1.0f - 1e-4f);
+  const Ray shadow = spawn_ray(m.sp, m.ng, ls->wi, length(y - m.sp.p) * (1.0f - 1e-4f));
   ++stats.shadow_rays;
   if (scene_.accel->occluded(shadow)) return;  // before the mirror's material: occluded samples skip it
 
@@ -341,7 +336,7 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
       s.beta.scale(1.0f / survival);
     }
   }
-  s.ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  s.ray = spawn_ray(v.sp, v.ng, wi);
   return true;
 }
 
