@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "materials/core/pi.h"
+#include "materials/lobes/closure_lobe.h"
+#include "materials/lobes/directional_albedo.h"
 #include "materials/lobes/sampling_check.h"
 #include "renderer/output/output_files.h"
 #include "renderer/util/atomic_file.h"
@@ -14,12 +16,10 @@
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
-#include "tools/brdf/closure_lobe.h"
 #include "tools/brdf/direction_pairs.h"
-#include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
-#include "tools/csv_columns.h"
-#include "tools/python_script.h"
+#include "tools/cli/csv_columns.h"
+#include "tools/cli/python_script.h"
 
 namespace ochre {
 

@@ -14,11 +14,11 @@
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
+#include "tools/cli/python_script.h"
 #include "tools/fit/fit_report.h"
 #include "tools/fit/powder_fit.h"
 #include "tools/fit/powder_fit_model.h"
 #include "tools/fit/synthetic_measurements.h"
-#include "tools/python_script.h"
 
 namespace ochre {
 

@@ -16,8 +16,8 @@
 #include "ochre/version.h"
 #include "renderer/util/image_error.h"
 #include "spectra/input_error.h"
+#include "tools/cli/unsigned_option.h"
 #include "tools/fit/fit_commands.h"
-#include "tools/unsigned_option.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"ochre-fit: fit a material model to BRDF measurements and write an ochre material"};

@@ -41,7 +41,7 @@ struct MapsArgs {
   std::string alphas, models = "rigorous";
   int size = 256;
   std::string output, counts;
-  bool grid = false;  // a labelled figure (tools/plot_vgroove.py); implied by several panels
+  bool grid = false;  // a labelled figure (tools/scripts/plot_vgroove.py); implied by several panels
 };
 
 struct ProfileArgs {

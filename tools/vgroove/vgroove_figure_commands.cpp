@@ -1,6 +1,6 @@
 // ochre-vgroove maps and profile (docs/tools.md): the figures of Saint-Pierre et al. 2019 (Figs 6, 8
 // and 9). Single maps are written here (OIIO); labelled grids and plots are drawn by
-// tools/plot_vgroove.py from the maps and CSV written here.
+// tools/scripts/plot_vgroove.py from the maps and CSV written here.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -11,8 +11,8 @@
 #include "renderer/util/output_transaction.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
-#include "tools/python_script.h"
+#include "tools/cli/csv_columns.h"
+#include "tools/cli/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_inputs.h"
 #include "tools/vgroove/vgroove_maps.h"
