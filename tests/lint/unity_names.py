@@ -23,7 +23,6 @@ LIBRARY_DIRECTORIES = [
     ("spectra", False, set()),
     ("materials", True, set()),
     ("renderer", False, set()),
-    ("tools/cli", False, set()),
     ("tools/ochre", False, set()),
     ("tools/brdf", False, {"ochre_brdf.cpp", "material_probe.cpp"}),
     ("tools/vgroove", False, {"ochre_vgroove.cpp"}),

@@ -7,7 +7,8 @@
 // and prints renderer rays/s / raw rays/s: the median and range over N interleaved rounds. With --modes:
 // renders each scene in polarization modes off, intensity and stokes (interleaved, N times), prints the
 // median time per sample of each as a ratio to off (goals: intensity <= 1.3x, stokes <= 2x) and the
-// difference mode off makes to the mean luminance. Exit codes: 0 = done, 2 = bad input or usage.
+// difference mode off makes to the mean luminance. Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad
+// input or usage, 1 = internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -15,7 +16,6 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,7 +26,10 @@
 #include "renderer/loader/scene_loader.h"
 #include "renderer/scene/polarization_mode.h"
 #include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
 #include "tools/bench/raw_embree_benchmark.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/cli/tool_files.h"
 
 namespace {
@@ -110,6 +113,8 @@ double bench_scene(const BenchCommand& cmd, const std::string& file) {
   const auto scene = ochre::load_scene(file, overrides);
   size_t triangles = 0;
   for (const ochre::Mesh& mesh : scene->meshes) triangles += mesh.triangle_count();
+  if (triangles == 0)
+    throw ochre::InputError(file + ": the scene has no triangle to trace (ochre-bench compares ray rates)");
   fmt::print("{}: {} meshes, {} triangles, {}x{} at {} spp, {} round(s)\n", file, scene->meshes.size(),
              triangles, scene->settings.width, scene->settings.height, scene->settings.spp, cmd.repeat);
   std::fflush(stdout);
@@ -199,9 +204,7 @@ void bench_modes(const BenchCommand& cmd, const std::string& file) {
              100.0 * (luminance[0] / luminance[1] - 1.0));
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int bench_command(int argc, char** argv) {
   CLI::App app{"ochre-bench: renderer rays/s against raw Embree rays/s on the same geometry"};
   app.set_version_flag("--version", "ochre-bench " OCHRE_VERSION);
   BenchCommand cmd;
@@ -212,36 +215,29 @@ int main(int argc, char** argv) {
   app.add_option("--threads", cmd.threads, "Threads for both (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--seconds", cmd.seconds, "Minimum duration of the raw Embree run (default 2)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays");
+      ->check(ochre::finite_positive());
+  app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays")->check(ochre::unsigned_64_check());
   app.add_flag("--modes", cmd.modes, "Time the polarization modes off / intensity / stokes instead");
   app.add_option("--repeat", cmd.repeat,
                  "Rounds per scene (render + raw Embree), or per mode with --modes; medians are reported "
                  "(default 3)")
       ->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   if (*spp_opt) cmd.spp = spp;
   if (cmd.scenes.empty())
     cmd.scenes = cmd.modes ? std::vector<std::string>{polarized_scene()} : default_scenes();
   ochre::install_signal_cleanup();  // loading a textured scene writes converted textures to the cache
-  try {
-    for (const std::string& scene : cmd.scenes) {
-      if (cmd.modes)
-        bench_modes(cmd, scene);
-      else
-        bench_scene(cmd, scene);
-    }
-    return 0;
-  } catch (const std::bad_alloc&) {  // not clearly from the input's size: an internal error
-    fmt::print(stderr, "ochre-bench: internal error: out of memory while loading or rendering a scene\n");
-    return 1;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ochre-bench: error: {}\n", e.what());
-    return 2;
+  for (const std::string& scene : cmd.scenes) {
+    if (cmd.modes)
+      bench_modes(cmd, scene);
+    else
+      bench_scene(cmd, scene);
   }
+  return ochre::kExitDone;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-bench", [&] { return bench_command(argc, argv); });
 }

@@ -3,17 +3,17 @@
 //   ochre-brdf albedo --material MAT.json [--lambda 550] [--angles 0,10,...,89] [--samples N] [--output F]
 //   ochre-brdf plot   --material MAT.json --output plot.png [--incidence 0,30,60] [--lambda 550] [--csv F]
 //   ochre-brdf chi2   --material MAT.json [--incidence 0,30,60,85] [--lambda 550] [--samples N] [--output F]
-// Exit codes: 0 = done, 1 = chi2 rejected the sampler (or the plot script failed), 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = done, 4 = chi2 rejected the sampler, 2 = bad input or usage,
+// 1 = the plot script failed, or an internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
-#include <exception>
-#include <new>
 
 #include "ochre/version.h"
 #include "renderer/util/signal_cleanup.h"
 #include "tools/brdf/brdf_commands.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 
 namespace {
 
@@ -22,9 +22,7 @@ void add_material_options(CLI::App& command, ochre::MaterialArgs& material) {
   command.add_option("--name", material.name, "Material to use when the file has a \"materials\" object");
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int brdf_command(int argc, char** argv) {
   CLI::App app{"ochre-brdf: evaluate, integrate, plot and check the sampling of any material"};
   app.set_version_flag("--version", "ochre-brdf " OCHRE_VERSION);
   app.require_subcommand(1);
@@ -41,8 +39,12 @@ int main(int argc, char** argv) {
   add_material_options(*albedo_cmd, albedo.material);
   albedo_cmd->add_option("--lambda", albedo.lambda_nm, "Wavelength (nm)")->capture_default_str();
   albedo_cmd->add_option("--angles", albedo.angles_deg, "Polar angles of wo (degrees)")->delimiter(',');
-  albedo_cmd->add_option("--samples", albedo.samples, "Monte-Carlo samples per angle")->capture_default_str();
-  albedo_cmd->add_option("--seed", albedo.seed, "Seed")->capture_default_str();
+  albedo_cmd->add_option("--samples", albedo.samples, "Monte-Carlo samples per angle")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
+  albedo_cmd->add_option("--seed", albedo.seed, "Seed")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
   albedo_cmd->add_option("--output", albedo.output, "CSV file (default: standard output)");
 
   ochre::PlotArgs plot;
@@ -60,26 +62,19 @@ int main(int argc, char** argv) {
   chi2_cmd->add_option("--lambda", chi2.lambda_nm, "Wavelength (nm)")->capture_default_str();
   chi2_cmd->add_option("--samples", chi2.samples, "Samples per angle")->capture_default_str();
   chi2_cmd->add_option("--alpha", chi2.alpha, "Overall significance level")->capture_default_str();
-  chi2_cmd->add_option("--seed", chi2.seed, "Seed")->capture_default_str();
+  chi2_cmd->add_option("--seed", chi2.seed, "Seed")->capture_default_str()->check(ochre::unsigned_64_check());
   chi2_cmd->add_option("--output", chi2.output, "CSV file (default: standard output)");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   ochre::install_signal_cleanup();
-  try {
-    if (*eval_cmd) return ochre::run_eval(eval);
-    if (*albedo_cmd) return ochre::run_albedo(albedo);
-    if (*plot_cmd) return ochre::run_plot(plot);
-    return ochre::run_chi2(chi2);
-  } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "ochre-brdf: error: out of memory while loading or evaluating the material\n");
-    return 2;
-  } catch (const std::exception& e) {  // InputError, GraphError, ImageError: all name the file at fault
-    fmt::print(stderr, "ochre-brdf: error: {}\n", e.what());
-    return 2;
-  }
+  if (*eval_cmd) return ochre::run_eval(eval);
+  if (*albedo_cmd) return ochre::run_albedo(albedo);
+  if (*plot_cmd) return ochre::run_plot(plot);
+  return ochre::run_chi2(chi2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-brdf", [&] { return brdf_command(argc, argv); });
 }

@@ -3,7 +3,7 @@
 //                  [--csv OUT.csv] [--plot OUT.png] [--threads N] [--seed S] [--width W --height H]
 // Renders the scene at each sample count for each variant, times each render (scene loading excluded)
 // and compares the image with the reference (relative MSE and RMSE, renderer/compare/image_metrics.h).
-// Exit codes: 0 = done, 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad input or usage, 1 = internal error.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
-#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,8 +31,9 @@
 #include "renderer/util/output_transaction.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/cli/python_script.h"
-#include "tools/cli/unsigned_option.h"
 
 namespace {
 
@@ -309,12 +309,10 @@ int run_converge(ConvergeCommand cmd) {
   }
   if (by_variant.size() >= 2) print_equal_time_ratios(by_variant);
   if (!cmd.csv.empty()) write_results(cmd, rows, inputs);
-  return 0;
+  return ochre::kExitDone;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int converge_command(int argc, char** argv) {
   CLI::App app{"ochre-converge: relative MSE against render time, per variant of a scene's settings"};
   app.set_version_flag("--version", "ochre-converge " OCHRE_VERSION);
   ConvergeCommand cmd;
@@ -331,31 +329,25 @@ int main(int argc, char** argv) {
   app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds");
   app.add_option("--plot", cmd.plot,
                  "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
-  auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)");
+  auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)")
+                          ->check(CLI::Range(0, 4096));  // as ochre render
   auto* seed_opt =
       app.add_option("--seed", seed, "Seed (default: the scene's)")->check(ochre::unsigned_64_check());
   auto* width_opt =
       app.add_option("--width", width, "Film width (default: the scene's)")->check(CLI::PositiveNumber);
   auto* height_opt =
       app.add_option("--height", height, "Film height (default: the scene's)")->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   if (*threads_opt) cmd.threads = threads;
   if (*seed_opt) cmd.seed = seed;
   if (*width_opt) cmd.width = width;
   if (*height_opt) cmd.height = height;
   ochre::install_signal_cleanup();
-  try {
-    return run_converge(cmd);
-  } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "ochre-converge: error: out of memory while rendering {}\n", cmd.scene);
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ochre-converge: error: {}\n", e.what());
-    return 2;
-  }
+  return run_converge(cmd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-converge", [&] { return converge_command(argc, argv); });
 }

@@ -1,12 +1,12 @@
 // ochre-diff: compares a linear EXR with a reference EXR (docs/tools.md).
 //   ochre-diff TEST.exr REFERENCE.exr [--json] [--heatmap OUT.png] [--max-rmse X] ...
-// Exit codes: 0 = within every threshold, 1 = a threshold exceeded, 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = within every threshold, 4 = a threshold exceeded, 2 = bad input
+// or usage, 1 = internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
-#include <new>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -16,9 +16,9 @@
 #include "renderer/image/exr_reader.h"
 #include "renderer/output/output_files.h"
 #include "renderer/util/atomic_file.h"
-#include "renderer/util/image_error.h"
 #include "renderer/util/signal_cleanup.h"
-#include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 
 namespace {
 
@@ -116,12 +116,10 @@ int run_diff(const DiffCommand& cmd) {
   }
   std::fflush(stdout);  // the table first, then the verdict on stderr
   for (const std::string& line : exceeded) fmt::print(stderr, "ochre-diff: threshold exceeded: {}\n", line);
-  return exceeded.empty() ? 0 : 1;
+  return exceeded.empty() ? ochre::kExitDone : ochre::kExitCheckFailed;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int diff_command(int argc, char** argv) {
   CLI::App app{"ochre-diff: compare a linear EXR with a reference EXR (R, G, B channels)"};
   app.set_version_flag("--version", "ochre-diff " OCHRE_VERSION);
   DiffCommand cmd;
@@ -136,23 +134,22 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"de00", "luminance"}));
   auto* scale_opt =
       app.add_option("--heatmap-scale", heatmap_scale, "Error shown as full red (default: the max)")
-          ->check(CLI::PositiveNumber);
-  auto* rmse_opt = app.add_option("--max-rmse", rmse, "Fail (exit 1) when RMSE exceeds this");
-  auto* relmse_opt = app.add_option("--max-relmse", relmse, "Fail when relative MSE exceeds this");
-  auto* error_opt = app.add_option("--max-error", max_error, "Fail when max |a-b| exceeds this");
-  auto* de_opt = app.add_option("--max-de", max_de, "Fail when mean CIEDE2000 exceeds this");
+          ->check(ochre::finite_positive());
+  auto* rmse_opt = app.add_option("--max-rmse", rmse, "Fail (exit 4) when RMSE exceeds this")
+                       ->check(ochre::finite_non_negative());
+  auto* relmse_opt = app.add_option("--max-relmse", relmse, "Fail when relative MSE exceeds this")
+                         ->check(ochre::finite_non_negative());
+  auto* error_opt = app.add_option("--max-error", max_error, "Fail when max |a-b| exceeds this")
+                        ->check(ochre::finite_non_negative());
+  auto* de_opt = app.add_option("--max-de", max_de, "Fail when mean CIEDE2000 exceeds this")
+                     ->check(ochre::finite_non_negative());
   auto* ocio_opt = app.add_option("--ocio-config", ocio,
                                   "Display transform for CIEDE2000: OCIO config path, 'builtin' or 'none' "
                                   "(default: none = clamp + sRGB transfer, as `ochre render --png`)");
   auto* display_opt = app.add_option("--display", display, "OCIO display (default: the config's)");
   auto* view_opt = app.add_option("--view", view, "OCIO view (default: the display's)");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // --help exits 0; bad usage is bad input
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   if (*scale_opt) cmd.heatmap_scale = heatmap_scale;
   if (*rmse_opt) cmd.thresholds.rmse = rmse;
   if (*relmse_opt) cmd.thresholds.relmse = relmse;
@@ -163,14 +160,11 @@ int main(int argc, char** argv) {
   if (*view_opt) cmd.display.view = view;
 
   ochre::install_signal_cleanup();
-  try {
-    return run_diff(cmd);
-  } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "ochre-diff: error: out of memory while comparing {} with {}\n", cmd.test,
-               cmd.reference);
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ochre-diff: error: {}\n", e.what());
-    return 2;
-  }
+  return run_diff(cmd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-diff", [&] { return diff_command(argc, argv); });
 }

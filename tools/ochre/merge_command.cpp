@@ -20,7 +20,7 @@
 #include "renderer/util/progress.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
-#include "tools/cli/command_errors.h"
+#include "tools/cli/program.h"
 
 namespace ochre {
 
@@ -151,7 +151,7 @@ int merge(const MergeCommand& command) {
   if (command.check) {
     for (const std::string& m : coverage.missing) std::cout << "missing: " << m << "\n";
     if (coverage.missing.empty()) std::cout << "complete: every sample of every pixel is held exactly once\n";
-    return coverage.missing.empty() ? 0 : 2;
+    return coverage.missing.empty() ? kExitDone : kExitCheckFailed;
   }
 
   const OutputSettings out = merged_outputs(command, first);
@@ -221,10 +221,8 @@ int run_merge(const MergeCommand& command) {
     return merge(command);
   } catch (const std::bad_alloc&) {
     std::cerr << "ochre: error: out of memory while merging (see --memory-limit in docs/cli.md)\n";
-    return 2;
-  } catch (...) {
-    return report_current_exception();
-  }
+    return kExitBadInput;
+  }  // any other exception: run_program (tools/cli/program.h)
 }
 
 }  // namespace ochre

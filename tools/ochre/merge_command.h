@@ -2,7 +2,8 @@
 // `ochre merge PARTS... -o OUT.exr [--png OUT.png] [--sums OUT.exr] [--partial]` (docs/distributed.md):
 // checks that the partial-sum files come from one render and cover every sample of every pixel exactly
 // once, adds their exact sums and writes the image a single render would have written, bit for bit.
-// Returns the exit code: 0 success, 2 bad input (nothing written), 1 internal error.
+// Returns the exit code (docs/cli.md, "Exit codes"; tools/cli/program.h): 0 success, 4 for --check when
+// samples are missing, 2 when memory runs out (nothing written); bad input throws (run_program: exit 2).
 
 #include <cstdint>
 #include <optional>
@@ -16,7 +17,7 @@ struct MergeCommand {
   std::string exr, png;  // the final image (as `ochre render -o/--png`)
   std::string sums;      // the merged partial sums, to merge again with further parts
   bool partial = false;  // a subset of the samples is fine (a lower-sample image); overlaps never are
-  bool check = false;    // only check the parts and report what is missing; write nothing
+  bool check = false;    // only check the parts and report what is missing (exit 4); write nothing
   bool quiet = false;
   std::optional<std::string> ocio_config, display, view;
   std::optional<float> exposure;

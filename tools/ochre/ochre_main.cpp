@@ -1,13 +1,14 @@
 // ochre command line: `ochre render SCENE.json -o OUT.exr [--png OUT.png] ...` (docs/cli.md).
 #include <CLI/CLI.hpp>
-#include <iostream>
 #include <regex>
 #include <tuple>
 
 #include "ochre/version.h"
 #include "spectra/byte_size.h"
+#include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
 #include "tools/cli/duration.h"
-#include "tools/cli/unsigned_option.h"
+#include "tools/cli/program.h"
 #include "tools/ochre/frame_options.h"
 #include "tools/ochre/merge_command.h"
 #include "tools/ochre/render_command.h"
@@ -24,18 +25,17 @@ bool parse_resolution(const std::string& text, int& width, int& height) {
   return true;
 }
 
-// --memory-limit SIZE; prints the error and returns nullopt when malformed.
-std::optional<uint64_t> parse_memory_limit(const std::string& text) {
+// --memory-limit SIZE; throws InputError when malformed.
+uint64_t parse_memory_limit(const std::string& text) {
   const auto bytes = ochre::parse_byte_size(text);
   if (!bytes)
-    std::cerr << "ochre: error: --memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '"
-              << text << "'\n";
-  return bytes;
+    throw ochre::InputError("--memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '" +
+                            text + "'");
+  return *bytes;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The whole command: its exit code (docs/cli.md, "Exit codes"); bad input throws InputError.
+int ochre_command(int argc, char** argv) {
   CLI::App app{"ochre: spectral path tracer with Mueller-matrix polarization"};
   app.set_version_flag("--version", "ochre " OCHRE_VERSION);
   app.require_subcommand(1);
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   auto* cs_opt = render->add_option("--colorspace", colorspace, "EXR working space: rec709 | acescg")
                      ->check(CLI::IsMember({"rec709", "acescg"}));
   auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops")
-                           ->check(CLI::Range(-64.0, 64.0));  // as output.exposure
+                           ->check(ochre::finite_range(-64.0, 64.0));  // as output.exposure
   render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
   render
       ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")
@@ -96,11 +96,15 @@ int main(int argc, char** argv) {
 
   uint64_t frames = 0, first_frame = 1;
   double fps = 24.0;
-  auto* frames_opt = render->add_option("--frames", frames,
-                                        "Render a sequence of N frames in which flames flicker, written as "
-                                        "OUT.0001.exr ... (docs/cli.md#frame-sequences)");
-  auto* first_frame_opt = render->add_option("--first-frame", first_frame,
-                                             "Number of the first frame of the sequence (default 1)");
+  auto* frames_opt = render
+                         ->add_option("--frames", frames,
+                                      "Render a sequence of N frames in which flames flicker, written as "
+                                      "OUT.0001.exr ... (docs/cli.md#frame-sequences)")
+                         ->check(ochre::unsigned_64_check());
+  auto* first_frame_opt =
+      render
+          ->add_option("--first-frame", first_frame, "Number of the first frame of the sequence (default 1)")
+          ->check(ochre::unsigned_64_check());
   auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
 
   std::string sample_range, part, region, tile;
@@ -135,7 +139,7 @@ int main(int argc, char** argv) {
   merge->add_option("--sums", merge_cmd.sums,
                     "Write the merged partial sums, to merge again with more parts");
   merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
-  merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 2 if any)");
+  merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 4 if any)");
   merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
   std::string merge_ocio, merge_display, merge_view, merge_memory;
   float merge_exposure = 0.0f;
@@ -145,76 +149,54 @@ int main(int argc, char** argv) {
       merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
   auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
   auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
-                                 ->check(CLI::Range(-64.0, 64.0));
+                                 ->check(ochre::finite_range(-64.0, 64.0));
   auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;  // --help / --version exit 0; bad usage is bad input
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
 
   if (app.got_subcommand(merge)) {
     if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
     if (*merge_display_opt) merge_cmd.display = merge_display;
     if (*merge_view_opt) merge_cmd.view = merge_view;
     if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
-    if (*merge_memory_opt && !(merge_cmd.memory_limit = parse_memory_limit(merge_memory))) return 2;
+    if (*merge_memory_opt) merge_cmd.memory_limit = parse_memory_limit(merge_memory);
     return ochre::run_merge(merge_cmd);
   }
 
   for (auto [option, text, value] : {std::tuple{interval_opt, &checkpoint_interval, &cmd.checkpoint_interval},
                                      std::tuple{time_limit_opt, &time_limit, &cmd.time_limit}})
-    if (*option && !(*value = ochre::parse_duration(*text))) {
-      std::cerr << "ochre: error: " << option->get_name()
-                << ": expected a duration such as 90, 90s, 10m, 1h30m or "
-                << "1.5h (at most a year), got '" << *text << "'\n";
-      return 2;
-    }
+    if (*option && !(*value = ochre::parse_duration(*text)))
+      throw ochre::InputError(
+          option->get_name() +
+          ": expected a duration such as 90, 90s, 10m, 1h30m or 1.5h (at most a year), got '" + *text + "'");
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed :
          {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt, part_opt, region_opt, tile_opt,
           render->get_option("--spectral-bins"), render->get_option("--aovs"), render->get_option("--stokes"),
           render->get_option("--define")})
-      if (*fixed) {
-        std::cerr
-            << "ochre: error: " << fixed->get_name()
-            << ": a resumed render keeps the settings of its checkpoint (give only outputs, display and "
-               "checkpoint options, --threads, --memory-limit, -q)\n";
-        return 2;
-      }
+      if (*fixed)
+        throw ochre::InputError(fixed->get_name() +
+                                ": a resumed render keeps the settings of its checkpoint (give only outputs, "
+                                "display and checkpoint options, --threads, --memory-limit, -q)");
   } else if (cmd.scene.empty()) {
-    std::cerr << "ochre: error: render: give a scene file (or --resume CHECKPOINT)\n";
-    return 2;
+    throw ochre::InputError("render: give a scene file (or --resume CHECKPOINT)");
   }
-  if (*range_opt && !(cmd.sample_range = ochre::parse_sample_range(sample_range))) {
-    std::cerr << "ochre: error: --sample-range: expected A:B with integers 0 <= A < B < 2^32, got '"
-              << sample_range << "'\n";
-    return 2;
-  }
-  if (*part_opt && !(cmd.part = ochre::parse_part(part))) {
-    std::cerr << "ochre: error: --part: expected I/N with integers 0 <= I < N, got '" << part << "'\n";
-    return 2;
-  }
-  if (*tile_opt && !(cmd.tile = ochre::parse_grid_tile(tile))) {
-    std::cerr << "ochre: error: --tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '"
-              << tile << "'\n";
-    return 2;
-  }
-  if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region))) {
-    std::cerr
-        << "ochre: error: --region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '"
-        << region << "'\n";
-    return 2;
-  }
+  if (*range_opt && !(cmd.sample_range = ochre::parse_sample_range(sample_range)))
+    throw ochre::InputError("--sample-range: expected A:B with integers 0 <= A < B < 2^32, got '" +
+                            sample_range + "'");
+  if (*part_opt && !(cmd.part = ochre::parse_part(part)))
+    throw ochre::InputError("--part: expected I/N with integers 0 <= I < N, got '" + part + "'");
+  if (*tile_opt && !(cmd.tile = ochre::parse_grid_tile(tile)))
+    throw ochre::InputError("--tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '" + tile +
+                            "'");
+  if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region)))
+    throw ochre::InputError("--region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '" +
+                            region + "'");
   for (const std::string& define : defines) {
     const size_t equals = define.find('=');
-    if (equals == std::string::npos || equals == 0) {
-      std::cerr << "ochre: error: -D: expected NAME=VALUE, got '" << define << "'\n";
-      return 2;
-    }
+    if (equals == std::string::npos || equals == 0)
+      throw ochre::InputError("-D: expected NAME=VALUE, got '" + define + "'");
     cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
   }
   if (*spp_opt) cmd.overrides.spp = spp;
@@ -225,34 +207,27 @@ int main(int argc, char** argv) {
   if (*preset_opt) cmd.overrides.preset = preset;
   if (*res_opt) {
     int w = 0, h = 0;
-    if (!parse_resolution(resolution, w, h) || w < 1 || h < 1) {
-      std::cerr << "ochre: error: --resolution: expected WxH with positive integers, got '" << resolution
-                << "'\n";
-      return 2;
-    }
+    if (!parse_resolution(resolution, w, h) || w < 1 || h < 1)
+      throw ochre::InputError("--resolution: expected WxH with positive integers, got '" + resolution + "'");
     cmd.overrides.width = w;
     cmd.overrides.height = h;
   }
-  if (*memory_opt && !(cmd.memory_limit = parse_memory_limit(memory_limit))) return 2;
+  if (*memory_opt) cmd.memory_limit = parse_memory_limit(memory_limit);
   if (const std::string error =
           ochre::check_frame_options(*frames_opt ? std::optional<uint64_t>(frames) : std::nullopt,
                                      *first_frame_opt ? std::optional<uint64_t>(first_frame) : std::nullopt,
                                      *fps_opt ? std::optional<double>(fps) : std::nullopt);
-      !error.empty()) {
-    std::cerr << "ochre: error: " << error << "\n";
-    return 2;
-  }
+      !error.empty())
+    throw ochre::InputError(error);
   if (*frames_opt) {
     // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
     for (const CLI::Option* single :
          {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt, resume_opt,
           render->get_option("--checkpoint"), render->get_option("--preview")})
-      if (*single) {
-        std::cerr << "ochre: error: " << single->get_name()
-                  << ": not with --frames (a sequence renders whole frames; render one frame at a time "
-                     "to split or checkpoint it)\n";
-        return 2;
-      }
+      if (*single)
+        throw ochre::InputError(single->get_name() +
+                                ": not with --frames (a sequence renders whole frames; render one frame at a "
+                                "time to split or checkpoint it)");
     cmd.frames = frames;
     cmd.first_frame = first_frame;
     cmd.fps = fps;
@@ -263,4 +238,10 @@ int main(int argc, char** argv) {
   if (*cs_opt) cmd.colorspace = colorspace;
   if (*exposure_opt) cmd.exposure = exposure;
   return ochre::run_render(cmd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre", [&] { return ochre_command(argc, argv); });
 }

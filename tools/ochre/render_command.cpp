@@ -22,8 +22,8 @@
 #include "renderer/util/progress.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
-#include "tools/cli/command_errors.h"
 #include "tools/cli/frame_names.h"
+#include "tools/cli/program.h"
 #include "tools/ochre/checkpoint_resume.h"
 #include "tools/ochre/render_part.h"
 
@@ -357,7 +357,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     if (!command.quiet)
       std::cerr << fmt::format("ochre: time limit reached; continue with: ochre render --resume {}\n",
                                checkpoints.path.string());
-    return 3;
+    return kExitTimeLimit;
   }
   // Finished: the checkpoint (this render's, or the one resumed) has served.
   std::error_code error;
@@ -383,10 +383,8 @@ int run_render(const RenderCommand& command) {
     // outputs asked for, an internal error while rendering (whose memory use does not grow with them).
     std::cerr << fmt::format("ochre: {}: {}: out of memory while {} (see --memory-limit in docs/cli.md)\n",
                              phase.from_input_size ? "error" : "internal error", command.scene, phase.what);
-    return phase.from_input_size ? 2 : 1;
-  } catch (...) {
-    return report_current_exception();
-  }
+    return phase.from_input_size ? kExitBadInput : kExitInternalError;
+  }  // any other exception: run_program (tools/cli/program.h)
 }
 
 }  // namespace ochre

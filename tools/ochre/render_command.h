@@ -1,7 +1,10 @@
 #pragma once
-// `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code:
-// 0 success, 2 bad input or a request larger than the memory limit (nothing written), 1 internal error,
-// 3 stopped at --time-limit with the image of the samples done and a checkpoint written.
+// `ochre render`: loads a scene, renders it, writes the outputs. Returns the process exit code
+// (docs/cli.md, "Exit codes"; tools/cli/program.h): 0 success, 2 memory exhausted while loading the scene or
+// allocating or writing the outputs (nothing written), 1 memory exhausted while rendering, 3 stopped at
+// --time-limit with the image of the samples done and a checkpoint written. Bad input (a request larger
+// than the memory limit included) throws InputError, GraphError or ImageError, as every other failure
+// throws: run_program reports it (exit 2 or 1).
 
 #include <cstdint>
 #include <optional>

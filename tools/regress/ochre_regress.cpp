@@ -4,15 +4,14 @@
 // Renders every DIR/*.json scene and compares its luminance with DIR/references/<name>.exr by a per-pixel
 // z-test with Sidak correction (renderer/compare/regression_compare.h); --html writes a report to look at
 // (tools/regress/html_report.h).
-// Exit codes: 0 = every scene passes, 1 = a scene fails, 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = every scene passes, 4 = a scene fails, 2 = bad input or usage,
+// 1 = internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <iostream>
-#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +27,8 @@
 #include "renderer/util/output_transaction.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/regress/html_report.h"
 #include "tools/regress/junit_report.h"
 #include "tools/regress/report_history.h"
@@ -284,12 +285,10 @@ int run(const RegressCommand& cmd) {
                (fs::path(cmd.html) / "index.html").string(), stats.files,
                static_cast<double>(stats.bytes) / 1024.0, stats.seconds);
   }
-  return all_passed ? 0 : 1;
+  return all_passed ? ochre::kExitDone : ochre::kExitCheckFailed;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int regress_command(int argc, char** argv) {
   CLI::App app{
       "ochre-regress: noise-aware image regression tests (per-pixel luminance z-test, Sidak "
       "correction)"};
@@ -315,20 +314,13 @@ int main(int argc, char** argv) {
                  "Earlier runs for the report's history: JUnit files, report directories or directories of "
                  "JUnit files (oldest first)")
       ->needs(html);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   ochre::install_signal_cleanup();
-  try {
-    return run(cmd);
-  } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "ochre-regress: error: out of memory while running the scenes of {}\n", cmd.dir);
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ochre-regress: {}\n", e.what());
-    return 2;
-  }
+  return run(cmd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-regress", [&] { return regress_command(argc, argv); });
 }

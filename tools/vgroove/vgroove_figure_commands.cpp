@@ -12,6 +12,7 @@
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
 #include "tools/cli/csv_columns.h"
+#include "tools/cli/program.h"
 #include "tools/cli/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_inputs.h"
@@ -75,9 +76,10 @@ int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
   if (!args.counts.empty()) script_args.push_back(outputs.add(args.counts).temp_path().string());
   const fs::path script = tool_script("plot_vgroove.py");
   if (!run_python(script, script_args)) {
-    std::cerr << fmt::format("ochre-vgroove: error: {} not written ({} failed; is matplotlib installed?)\n",
-                             args.output, script.string());
-    return 1;
+    std::cerr << fmt::format(
+        "ochre-vgroove: internal error: {} not written ({} failed; is matplotlib installed?)\n", args.output,
+        script.string());
+    return kExitInternalError;
   }
   outputs.commit();
   return 0;
@@ -135,9 +137,9 @@ int run_profile(const ProfileArgs& args) {
     if (!run_python(script, {"profile", csv_output.temp_path().string(),
                              outputs.add(args.png).temp_path().string(), title})) {
       std::cerr << fmt::format(
-          "ochre-vgroove: error: {} and {} not written ({} failed; is matplotlib installed?)\n", args.output,
-          args.png, script.string());
-      return 1;
+          "ochre-vgroove: internal error: {} and {} not written ({} failed; is matplotlib installed?)\n",
+          args.output, args.png, script.string());
+      return kExitInternalError;
     }
   }
   outputs.commit();
