@@ -87,7 +87,7 @@ TEST(OchreDiff, OnePixelChangedIsFoundAndShownRed) {
   rgb[changed + 1] = 0.95f;
   write_rgb_exr(dir / "test.exr", rgb);
 
-  const auto j = diff_json("test.exr ref.exr --max-error 0.1 --heatmap heat.png", dir, 1);
+  const auto j = diff_json("test.exr ref.exr --max-error 0.1 --heatmap heat.png", dir, 4);
   EXPECT_NEAR(j["max_error"].get<double>(), 0.95 - old_green, 1e-6);
   EXPECT_EQ(j["max_error_at"]["x"], 5);
   EXPECT_EQ(j["max_error_at"]["y"], 7);
@@ -98,7 +98,7 @@ TEST(OchreDiff, OnePixelChangedIsFoundAndShownRed) {
   ASSERT_EQ(j["exceeded"].size(), 1u);
 
   const DiffResult r = run_diff("test.exr ref.exr --max-error 0.1 --max-rmse 1", dir);
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 4);  // a threshold exceeded (docs/cli.md, "Exit codes")
   EXPECT_NE(r.output.find("threshold exceeded: max-error"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("exceeded: rmse"), std::string::npos) << r.output;
 
@@ -132,7 +132,7 @@ TEST(OchreDiff, FivePercentExposureChangeIsDetected) {
   write_rgb_exr(dir / "ref.exr", reference);
   write_rgb_exr(dir / "bright.exr", brighter);
 
-  const auto j = diff_json("bright.exr ref.exr --max-relmse 1e-4 --max-de 0.5", dir, 1);
+  const auto j = diff_json("bright.exr ref.exr --max-relmse 1e-4 --max-de 0.5", dir, 4);
   EXPECT_NEAR(j["relmse"].get<double>(), relmse, 1e-9);
   EXPECT_GT(j["mean_de00"].get<double>(), 0.5);  // +5 % is visible: about 1-2 dE00 on mid tones
   EXPECT_LT(j["mean_de00"].get<double>(), 5.0);

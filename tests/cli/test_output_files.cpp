@@ -244,7 +244,7 @@ TEST(OutputFiles, OutputsOfOchreVGroove) {
 }
 
 // A copy of ochre-vgroove in an installed tree whose plot script fails (the tools look in
-// share/ochre/scripts first, tools/tool_files.h): the plot fails after the other outputs were written.
+// share/ochre/scripts first, tools/cli/tool_files.h): the plot fails after the other outputs were written.
 fs::path vgroove_with_failing_plot(const fs::path& root) {
   fs::create_directories(root / "bin");
   fs::copy_file(bin_dir() / "ochre-vgroove", root / "bin" / "ochre-vgroove");

@@ -1,4 +1,4 @@
-// ochre-slurm on a real Slurm (label `slurm`): a one-node cluster (tools/slurm/one_node_cluster.sh: munge,
+// ochre-slurm on a real Slurm (label `slurm`): a one-node cluster (tools/scripts/one_node_cluster.sh: munge,
 // slurmctld and slurmd on 127.0.0.1, state in a temporary folder, stopped by PID) renders the Cornell box as
 // a 4-task job array whose merge job writes the image of a single-process render, bit for bit; a cancelled
 // task is reported by the merge and re-submitted alone. Skips with a message when Slurm is not installed
@@ -73,7 +73,7 @@ class Slurm : public ::testing::Test {
     ::unsetenv("SLURM_CONF");
   }
 
-  static std::string cluster_script() { return quoted(source_dir() / "tools/slurm/one_node_cluster.sh"); }
+  static std::string cluster_script() { return quoted(source_dir() / "tools/scripts/one_node_cluster.sh"); }
   std::string cluster(const std::string& command) const {
     return cluster_script() + " -d " + quoted(cluster_dir) + " " + command;
   }

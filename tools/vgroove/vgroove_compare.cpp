@@ -21,7 +21,7 @@
 #include "renderer/loader/scene_loader.h"
 #include "renderer/util/atomic_file.h"
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
+#include "tools/cli/csv_columns.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_compare_scene.h"
 #include "tools/vgroove/vgroove_inputs.h"

@@ -1,0 +1,247 @@
+// ochre command line: `ochre render SCENE.json -o OUT.exr [--png OUT.png] ...` (docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <regex>
+#include <tuple>
+
+#include "ochre/version.h"
+#include "spectra/byte_size.h"
+#include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/duration.h"
+#include "tools/cli/program.h"
+#include "tools/ochre/frame_options.h"
+#include "tools/ochre/merge_command.h"
+#include "tools/ochre/render_command.h"
+
+namespace {
+
+// "WxH" -> width, height.
+bool parse_resolution(const std::string& text, int& width, int& height) {
+  static const std::regex pattern(R"(^(\d{1,6})x(\d{1,6})$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, pattern)) return false;
+  width = std::stoi(m[1]);
+  height = std::stoi(m[2]);
+  return true;
+}
+
+// --memory-limit SIZE; throws InputError when malformed.
+uint64_t parse_memory_limit(const std::string& text) {
+  const auto bytes = ochre::parse_byte_size(text);
+  if (!bytes)
+    throw ochre::InputError("--memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '" +
+                            text + "'");
+  return *bytes;
+}
+
+// The whole command: its exit code (docs/cli.md, "Exit codes"); bad input throws InputError.
+int ochre_command(int argc, char** argv) {
+  CLI::App app{"ochre: spectral path tracer with Mueller-matrix polarization"};
+  app.set_version_flag("--version", "ochre " OCHRE_VERSION);
+  app.require_subcommand(1);
+
+  ochre::RenderCommand cmd;
+  std::string resolution, ocio, display, view, colorspace;
+  uint32_t spp = 0;
+  int threads = -1;
+  uint64_t seed = 0;
+  float exposure = 0.0f;
+  std::string polarization, sampler, preset;
+
+  CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
+  render->add_option(
+      "scene", cmd.scene,
+      "Scene file (JSON, docs/scene-format.md; or Mitsuba 3 XML, .xml); with --resume: the scene "
+      "moved");
+  std::vector<std::string> defines;
+  render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
+  render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
+  render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
+  auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
+  auto* threads_opt =
+      render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
+  auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
+  auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
+  auto* preset_opt = render->add_option("--preset", preset,
+                                        "Named variant from the scene's \"presets\" (e.g. fast, final); the "
+                                        "other options override it");
+  auto* pol_opt = render->add_option("--polarization", polarization, "auto | off | intensity | stokes")
+                      ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
+  auto* sampler_opt = render->add_option("--sampler", sampler, "independent | sobol")
+                          ->check(CLI::IsMember({"independent", "sobol"}));
+  auto* ocio_opt = render->add_option(
+      "--ocio-config", ocio, "OCIO config path, 'builtin' or 'none' (default: $OCIO, else built-in)");
+  auto* display_opt = render->add_option("--display", display, "OCIO display (default: the config's)");
+  auto* view_opt = render->add_option("--view", view, "OCIO view (default: the display's)");
+  auto* cs_opt = render->add_option("--colorspace", colorspace, "EXR working space: rec709 | acescg")
+                     ->check(CLI::IsMember({"rec709", "acescg"}));
+  auto* exposure_opt = render->add_option("--exposure", exposure, "Exposure of the display image, in stops")
+                           ->check(ochre::finite_range(-64.0, 64.0));  // as output.exposure
+  render->add_flag("-q,--quiet", cmd.quiet, "No progress or statistics");
+  render
+      ->add_option("--spectral-bins", cmd.spectral_bins, "Add N spectral radiance layers S0.<nm> to the EXR")
+      ->check(CLI::Range(1, 471));
+  render->add_flag("--aovs", cmd.aovs, "Add albedo, normal, depth and sample-count layers to the EXR");
+  render->add_flag("--stokes", cmd.stokes,
+                   "Add Stokes layers S0..S3 (XYZ-weighted; per spectral bin with --spectral-bins), DoLP and "
+                   "AoLP to the EXR (polarization mode stokes)");
+  render->add_option("--polarization-png", cmd.polarization_png,
+                     "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
+                     "polarization");
+  std::string memory_limit;
+  auto* memory_opt = render->add_option(
+      "--memory-limit", memory_limit,
+      "Refuse (exit 2) a film, mesh or image whose estimated memory exceeds SIZE, e.g. 8G, 512M "
+      "(default: the machine's memory)");
+
+  uint64_t frames = 0, first_frame = 1;
+  double fps = 24.0;
+  auto* frames_opt = render
+                         ->add_option("--frames", frames,
+                                      "Render a sequence of N frames in which flames flicker, written as "
+                                      "OUT.0001.exr ... (docs/cli.md#frame-sequences)")
+                         ->check(ochre::unsigned_64_check());
+  auto* first_frame_opt =
+      render
+          ->add_option("--first-frame", first_frame, "Number of the first frame of the sequence (default 1)")
+          ->check(ochre::unsigned_64_check());
+  auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
+
+  std::string sample_range, part, region, tile;
+  auto* range_opt = render->add_option(
+      "--sample-range", sample_range, "Render samples [A, B) of every pixel into partial sums (-o PART.exr)");
+  auto* part_opt =
+      render->add_option("--part", part, "Render the I-th of N equal sample ranges (I/N, from 0)")
+          ->excludes(range_opt);
+  auto* region_opt =
+      render->add_option("--region", region, "Render the pixels [x0, x1) x [y0, y1) into partial sums");
+  auto* tile_opt =
+      render->add_option("--tile", tile, "Render tile I (from 0, row by row) of a C x R grid (I/CxR)")
+          ->excludes(region_opt);
+
+  std::string checkpoint_interval, time_limit;
+  render->add_option("--checkpoint", cmd.checkpoint,
+                     "Checkpoint file (default: beside the output, NAME.checkpoint.exr)");
+  auto* interval_opt = render->add_option("--checkpoint-interval", checkpoint_interval,
+                                          "Write a checkpoint every DURATION (e.g. 600, 10m, 1h30m)");
+  auto* time_limit_opt =
+      render->add_option("--time-limit", time_limit,
+                         "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
+  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds");
+  render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
+
+  ochre::MergeCommand merge_cmd;
+  CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
+  merge->add_option("parts", merge_cmd.parts, "Partial-sum files (ochre render --sample-range/--region)")
+      ->required();
+  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)");
+  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)");
+  merge->add_option("--sums", merge_cmd.sums,
+                    "Write the merged partial sums, to merge again with more parts");
+  merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
+  merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 4 if any)");
+  merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
+  std::string merge_ocio, merge_display, merge_view, merge_memory;
+  float merge_exposure = 0.0f;
+  auto* merge_ocio_opt =
+      merge->add_option("--ocio-config", merge_ocio, "OCIO config (default: the render's)");
+  auto* merge_display_opt =
+      merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
+  auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
+  auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
+                                 ->check(ochre::finite_range(-64.0, 64.0));
+  auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
+
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
+
+  if (app.got_subcommand(merge)) {
+    if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
+    if (*merge_display_opt) merge_cmd.display = merge_display;
+    if (*merge_view_opt) merge_cmd.view = merge_view;
+    if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
+    if (*merge_memory_opt) merge_cmd.memory_limit = parse_memory_limit(merge_memory);
+    return ochre::run_merge(merge_cmd);
+  }
+
+  for (auto [option, text, value] : {std::tuple{interval_opt, &checkpoint_interval, &cmd.checkpoint_interval},
+                                     std::tuple{time_limit_opt, &time_limit, &cmd.time_limit}})
+    if (*option && !(*value = ochre::parse_duration(*text)))
+      throw ochre::InputError(
+          option->get_name() +
+          ": expected a duration such as 90, 90s, 10m, 1h30m or 1.5h (at most a year), got '" + *text + "'");
+  if (*resume_opt) {
+    // A resumed render is the render the checkpoint holds: what changes the image cannot change.
+    for (const CLI::Option* fixed :
+         {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt, part_opt, region_opt, tile_opt,
+          render->get_option("--spectral-bins"), render->get_option("--aovs"), render->get_option("--stokes"),
+          render->get_option("--define")})
+      if (*fixed)
+        throw ochre::InputError(fixed->get_name() +
+                                ": a resumed render keeps the settings of its checkpoint (give only outputs, "
+                                "display and checkpoint options, --threads, --memory-limit, -q)");
+  } else if (cmd.scene.empty()) {
+    throw ochre::InputError("render: give a scene file (or --resume CHECKPOINT)");
+  }
+  if (*range_opt && !(cmd.sample_range = ochre::parse_sample_range(sample_range)))
+    throw ochre::InputError("--sample-range: expected A:B with integers 0 <= A < B < 2^32, got '" +
+                            sample_range + "'");
+  if (*part_opt && !(cmd.part = ochre::parse_part(part)))
+    throw ochre::InputError("--part: expected I/N with integers 0 <= I < N, got '" + part + "'");
+  if (*tile_opt && !(cmd.tile = ochre::parse_grid_tile(tile)))
+    throw ochre::InputError("--tile: expected I/CxR with integers C, R >= 1 and 0 <= I < C R, got '" + tile +
+                            "'");
+  if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region)))
+    throw ochre::InputError("--region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '" +
+                            region + "'");
+  for (const std::string& define : defines) {
+    const size_t equals = define.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw ochre::InputError("-D: expected NAME=VALUE, got '" + define + "'");
+    cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
+  }
+  if (*spp_opt) cmd.overrides.spp = spp;
+  if (*threads_opt) cmd.overrides.threads = threads;
+  if (*seed_opt) cmd.overrides.seed = seed;
+  if (*pol_opt) cmd.overrides.polarization = polarization;
+  if (*sampler_opt) cmd.overrides.sampler = sampler;
+  if (*preset_opt) cmd.overrides.preset = preset;
+  if (*res_opt) {
+    int w = 0, h = 0;
+    if (!parse_resolution(resolution, w, h) || w < 1 || h < 1)
+      throw ochre::InputError("--resolution: expected WxH with positive integers, got '" + resolution + "'");
+    cmd.overrides.width = w;
+    cmd.overrides.height = h;
+  }
+  if (*memory_opt) cmd.memory_limit = parse_memory_limit(memory_limit);
+  if (const std::string error =
+          ochre::check_frame_options(*frames_opt ? std::optional<uint64_t>(frames) : std::nullopt,
+                                     *first_frame_opt ? std::optional<uint64_t>(first_frame) : std::nullopt,
+                                     *fps_opt ? std::optional<double>(fps) : std::nullopt);
+      !error.empty())
+    throw ochre::InputError(error);
+  if (*frames_opt) {
+    // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
+    for (const CLI::Option* single :
+         {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt, resume_opt,
+          render->get_option("--checkpoint"), render->get_option("--preview")})
+      if (*single)
+        throw ochre::InputError(single->get_name() +
+                                ": not with --frames (a sequence renders whole frames; render one frame at a "
+                                "time to split or checkpoint it)");
+    cmd.frames = frames;
+    cmd.first_frame = first_frame;
+    cmd.fps = fps;
+  }
+  if (*ocio_opt) cmd.ocio_config = ocio;
+  if (*display_opt) cmd.display = display;
+  if (*view_opt) cmd.view = view;
+  if (*cs_opt) cmd.colorspace = colorspace;
+  if (*exposure_opt) cmd.exposure = exposure;
+  return ochre::run_render(cmd);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre", [&] { return ochre_command(argc, argv); });
+}
