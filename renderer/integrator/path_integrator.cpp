@@ -240,7 +240,6 @@ template <class Sampler, class T>
 bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, const RayCone& cone,
                             const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
                             size_t arena_floor, bool own_lobes, PathStats& stats, FirstHit* first_hit) const {
-  const RenderSettings& settings = scene_.settings;
   const auto light_pmf = [&](int light) {
     return local_lights_ ? s.light_pmfs[light] : scene_.light_pmf(light);
   };
@@ -289,7 +288,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
     const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
     s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, s.L);
   }
-  if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) return false;
+  if (depth >= max_depth_ || !v.closure.has_lobes()) return false;
 
   const bool refracts = v.closure.has_transmission();
   v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
@@ -300,7 +299,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
     if (local_lights_) scene_.light_pmfs(v.sp.p, s.light_pmfs);
     direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, s.L);
-    if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
+    if (!scene_.mirror_lights.empty() && depth + 2 <= max_depth_)
       mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, s.L);
   }
   return true;
@@ -329,7 +328,7 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
   // renders stay deterministic. From rr_depth (default 5, as Mitsuba) on: terminating earlier costs
   // more variance than it saves time, most of all on caustic paths (docs/performance.md, "Time to
   // error against Cycles").
-  if (depth + 1 >= static_cast<uint32_t>(scene_.settings.rr_depth)) {
+  if (depth + 1 >= rr_depth_) {
     const float survival = std::sqrt(s.beta.m00().max_value());
     if (survival < 1.0f) {
       if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) >= survival) return false;

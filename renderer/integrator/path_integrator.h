@@ -36,11 +36,13 @@ struct PathState;
 
 class PathIntegrator {
  public:
-  PathIntegrator(const Scene& scene, PolarizationMode mode)
+  PathIntegrator(const Scene& scene, const RenderSettings& settings, PolarizationMode mode)
       : scene_(scene),
         mode_(mode),
-        local_lights_(scene.local_light_selection()),
-        branches_(static_cast<uint32_t>(std::max(1, scene.settings.branches))) {}
+        local_lights_(scene.local_light_selection(settings.light_selection)),
+        branches_(static_cast<uint32_t>(std::max(1, settings.branches))),
+        max_depth_(static_cast<uint32_t>(std::max(0, settings.max_depth))),
+        rr_depth_(static_cast<uint32_t>(std::max(0, settings.rr_depth))) {}
 
   // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
   // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
@@ -84,8 +86,10 @@ class PathIntegrator {
 
   const Scene& scene_;
   PolarizationMode mode_;
-  bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
-  uint32_t branches_;  // continuations of each camera sample from its first vertex (integrator.branches)
+  bool local_lights_;   // lights chosen per shading point (Scene::light_pmfs)
+  uint32_t branches_;   // continuations of each camera sample from its first vertex (integrator.branches)
+  uint32_t max_depth_;  // scattering events a path may have (integrator.max_depth)
+  uint32_t rr_depth_;   // bounces before Russian roulette (integrator.rr_depth)
 };
 
 }  // namespace ochre

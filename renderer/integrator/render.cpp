@@ -68,10 +68,9 @@ struct Tile {
 };
 
 template <class Sampler>
-void render_tile(const Scene& scene, const PathIntegrator& integrator, const Tile& tile,
-                 const PixelRect& rect, SampleRange samples, Film& film, TileCounters& counters,
-                 const ProgressCallback& progress, const std::atomic<bool>* cancel) {
-  const RenderSettings& s = scene.settings;
+void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrator& integrator,
+                 const Tile& tile, const PixelRect& rect, SampleRange samples, Film& film,
+                 TileCounters& counters, const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   thread_local LobeArena arena;
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
   const NonFiniteTally& nonfinite = thread_non_finite_tally();
@@ -120,28 +119,28 @@ void RenderStats::add(const RenderStats& pass) {
   threads = pass.threads;
 }
 
-PolarizationChoice polarization_for(const Scene& scene) {
-  return choose_polarization_mode(scene.settings.polarization,
-                                  scene.polarizing_materials || scene.polarizing_filters,
-                                  scene.outputs.stokes);
+PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
+  return choose_polarization_mode(job.settings.polarization,
+                                  scene.polarizing_materials || scene.polarizing_filters, job.outputs.stokes);
 }
 
-RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress,
+RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
-  const RenderSettings& s = scene.settings;
-  return render_range(scene, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
+  const RenderSettings& s = job.settings;
+  return render_range(scene, job, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
                       progress, cancel);
 }
 
-RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
-                         const ProgressCallback& progress, const std::atomic<bool>* cancel) {
-  const RenderSettings& s = scene.settings;
+RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, const PixelRect& rect,
+                         SampleRange samples, const ProgressCallback& progress,
+                         const std::atomic<bool>* cancel) {
+  const RenderSettings& s = job.settings;
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
-  const PathIntegrator integrator(scene, polarization_for(scene).mode);
+  const PathIntegrator integrator(scene, s, polarization_for(scene, job).mode);
   TileCounters counters;
   const int tiles_x = (rect.width() + kTileSize - 1) / kTileSize;
   const int tiles_y = (rect.height() + kTileSize - 1) / kTileSize;
@@ -155,11 +154,11 @@ RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, 
       tbb::blocked_range<int>(0, tiles_x * tiles_y),
       [&](const tbb::blocked_range<int>& range) {
         for (int t = range.begin(); t != range.end(); ++t)
-          if (s.sampler == "sobol")
-            render_tile<SobolSampler>(scene, integrator, tile_at(t), rect, samples, film, counters, progress,
-                                      cancel);
+          if (s.sampler == SamplerKind::kSobol)
+            render_tile<SobolSampler>(scene, s, integrator, tile_at(t), rect, samples, film, counters,
+                                      progress, cancel);
           else
-            render_tile<IndependentSampler>(scene, integrator, tile_at(t), rect, samples, film, counters,
+            render_tile<IndependentSampler>(scene, s, integrator, tile_at(t), rect, samples, film, counters,
                                             progress, cancel);
       },
       tbb::simple_partitioner());

@@ -90,8 +90,22 @@ std::array<double, 3> parse_white_balance(const JsonFields& f, const std::filesy
   return {double(xyz.x) / xyz.y, 1.0, double(xyz.z) / xyz.y};
 }
 
-void load_settings(const JsonFields& top, Scene& scene) {
-  RenderSettings& s = scene.settings;
+// A choice field of the scene (film.colorspace, integrator.sampler, ...): its enum value, or an error
+// naming the field and the known values.
+template <class Enum, size_t N>
+Enum parse_choice(const JsonFields& f, const char* key, const NamedChoices<Enum, N>& choices, Enum fallback,
+                  const char* what) {
+  if (!f.has(key)) return fallback;
+  const std::string text = f.required_string(key);
+  const std::optional<Enum> value = choices.parse(text);
+  if (!value) f.fail(key, fmt::format("unknown {} '{}' (known: {})", what, text, choices.list()));
+  return *value;
+}
+
+void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir, RenderJob& job,
+                   PixelFilter& pixel_filter) {
+  RenderSettings& s = job.settings;
+  OutputSettings& outputs = job.outputs;
   if (top.has("film")) {
     const JsonFields f(top.require("film"), top.child("film"));
     f.check_known({"resolution", "colorspace", "filter"});
@@ -101,9 +115,9 @@ void load_settings(const JsonFields& top, Scene& scene) {
       s.width = static_cast<int>(json_integer(r[0], where + "[0]", 1, kMaxResolution));
       s.height = static_cast<int>(json_integer(r[1], where + "[1]", 1, kMaxResolution));
     }
-    scene.outputs.colorspace = f.string("colorspace", scene.outputs.colorspace);
+    outputs.colorspace = parse_choice(f, "colorspace", kWorkingSpaces, outputs.colorspace, "colorspace");
     if (f.has("filter"))
-      scene.pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
+      pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
   }
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
@@ -115,44 +129,41 @@ void load_settings(const JsonFields& top, Scene& scene) {
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
-    s.light_selection = f.string("light_selection", s.light_selection);
-    if (s.light_selection != "local" && s.light_selection != "power")
-      f.fail("light_selection",
-             fmt::format("unknown light selection '{}' (known: local, power)", s.light_selection));
+    s.light_selection =
+        parse_choice(f, "light_selection", kLightSelections, s.light_selection, "light selection");
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
-    s.polarization = f.string("polarization", s.polarization);
-    s.sampler = f.string("sampler", s.sampler);
+    s.polarization = parse_choice(f, "polarization", kPolarizationSettings, s.polarization, "mode");
+    s.sampler = parse_choice(f, "sampler", kSamplerKinds, s.sampler, "sampler");
   }
   if (top.has("output")) {
     const JsonFields f(top.require("output"), top.child("output"));
     f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "white_balance", "aovs",
                    "spectral_bins", "spectral_range", "stokes", "polarization_png"});
-    const std::filesystem::path dir = scene.file.parent_path();
-    if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
-    if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
-    scene.outputs.ocio_config = f.string("ocio_config", "");
-    scene.outputs.display = f.string("display", "");
-    scene.outputs.view = f.string("view", "");
-    scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
-    if (f.has("white_balance")) scene.outputs.white_balance_xyz = parse_white_balance(f, dir);
-    scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
+    const std::filesystem::path& dir = scene_dir;
+    if (f.has("exr")) outputs.exr = (dir / f.required_string("exr")).string();
+    if (f.has("png")) outputs.png = (dir / f.required_string("png")).string();
+    outputs.ocio_config = f.string("ocio_config", "");
+    outputs.display = f.string("display", "");
+    outputs.view = f.string("view", "");
+    outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    if (f.has("white_balance")) outputs.white_balance_xyz = parse_white_balance(f, dir);
+    outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
       // Up to 1200 nm: a camera sensor may see beyond the visible (docs/cameras.md).
       const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 300.0, 1200.0, false);
       if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
-      scene.outputs.spectral_min = static_cast<float>(lo);
-      scene.outputs.spectral_max = static_cast<float>(hi);
+      outputs.spectral_min = static_cast<float>(lo);
+      outputs.spectral_max = static_cast<float>(hi);
     }
-    scene.outputs.stokes = f.boolean("stokes", scene.outputs.stokes);
+    outputs.stokes = f.boolean("stokes", outputs.stokes);
     if (f.has("polarization_png"))
-      scene.outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
-    scene.outputs.aovs = f.boolean("aovs", scene.outputs.aovs);
+      outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
+    outputs.aovs = f.boolean("aovs", outputs.aovs);
   }
 }
 
-void check_settings(const Scene& scene, const std::string& file) {
-  const RenderSettings& s = scene.settings;
+void check_settings(const RenderSettings& s, const std::string& file) {
   if (s.width < 1 || s.height < 1 || s.width > kMaxResolution || s.height > kMaxResolution)
     throw InputError(fmt::format("{}: film.resolution: must be between 1x1 and {}x{} (got {}x{})", file,
                                  kMaxResolution, kMaxResolution, s.width, s.height));
@@ -160,16 +171,6 @@ void check_settings(const Scene& scene, const std::string& file) {
   if (s.threads < 0 || s.threads > kMaxThreads)  // an override (the scene's own value is checked on reading)
     throw InputError(
         fmt::format("{}: integrator.threads: must be in [0, {}] (got {})", file, kMaxThreads, s.threads));
-  const std::string& p = s.polarization;
-  if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
-    throw InputError(fmt::format(
-        "{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)", file, p));
-  if (s.sampler != "independent" && s.sampler != "sobol")
-    throw InputError(fmt::format("{}: integrator.sampler: unknown sampler '{}' (known: independent, sobol)",
-                                 file, s.sampler));
-  const std::string& cs = scene.outputs.colorspace;
-  if (cs != "rec709" && cs != "acescg")
-    throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
 }
 
 // "polarizer": {"angle": degrees} on the camera: a linear analyzer whose transmission axis is turned by
@@ -422,12 +423,14 @@ void check_area_light_power(const Scene& scene, const JsonFields& top) {
   }
 }
 
-std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string& file,
-                                   const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
+                        const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
   if (!overrides.parameters.empty())
     throw InputError(fmt::format("{}: scene parameters ({}=...) apply to Mitsuba XML scenes only", file,
                                  overrides.parameters.front().first));
-  auto scene = std::make_unique<Scene>();
+  LoadedScene loaded{std::make_unique<Scene>(), RenderJob{}};
+  Scene* scene = loaded.scene.get();
+  RenderJob& job = loaded.job;
   scene->file = std::filesystem::absolute(scene_path);
   const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
   const JsonFields top(sources.root, file + ":");
@@ -437,18 +440,18 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
   if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
     top.fail("ochre", "expected a version string or number");
 
-  load_settings(top, *scene);
-  apply_overrides(overrides, scene->settings);
-  check_settings(*scene, file);
-  scene->camera = load_camera(top, scene->settings);
+  load_settings(top, scene->file.parent_path(), job, scene->pixel_filter);
+  apply_overrides(overrides, job.settings);
+  check_settings(job.settings, file);
+  scene->camera = load_camera(top, job.settings);
   if (top.has("camera")) {
     const JsonFields camera(top.require("camera"), top.child("camera"));
     scene->camera_analyzer = parse_camera_polarizer(camera);
     const CameraSensor sensor = parse_camera_sensor(camera, scene->file.parent_path());
     scene->sensor = sensor.response;
-    scene->outputs.sensor = sensor.name;
-    scene->outputs.camera_rgb = sensor.camera_rgb;
-    scene->outputs.sensor_to_xyz = sensor.sensor_to_xyz;
+    job.outputs.sensor = sensor.name;
+    job.outputs.camera_rgb = sensor.camera_rgb;
+    job.outputs.sensor_to_xyz = sensor.sensor_to_xyz;
   }
 
   scene->textures = std::make_unique<OiioTextureProvider>();
@@ -466,14 +469,13 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
     scene->needs_uv = scene->needs_uv || m->facts().needs_uv;
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
-  scene->build_lights();
+  scene->build_lights(job.settings.mirror_lights);
   check_area_light_power(*scene, top);
-  return scene;
+  return loaded;
 }
 
-std::unique_ptr<Scene> load_scene_checked(const nlohmann::json& root, const std::string& name,
-                                          const std::filesystem::path& scene_path,
-                                          const SceneOverrides& overrides) {
+LoadedScene load_scene_checked(const nlohmann::json& root, const std::string& name,
+                               const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
   try {
     return build_scene(root, name, scene_path, overrides);
   } catch (const GraphError& e) {
@@ -486,8 +488,7 @@ std::unique_ptr<Scene> load_scene_checked(const nlohmann::json& root, const std:
 
 // translate_mitsuba_scene, then load_scene_json with `overrides` (overrides.parameters are the $name
 // parameters); the loader's messages are told at the XML element the failing part came from.
-std::unique_ptr<Scene> load_mitsuba_scene(const std::filesystem::path& file,
-                                          const SceneOverrides& overrides) {
+LoadedScene load_mitsuba_scene(const std::filesystem::path& file, const SceneOverrides& overrides) {
   const MitsubaTranslation translation = translate_mitsuba_scene(file, overrides.parameters);
   SceneOverrides json_overrides = overrides;
   json_overrides.parameters.clear();
@@ -500,9 +501,8 @@ std::unique_ptr<Scene> load_mitsuba_scene(const std::filesystem::path& file,
 
 }  // namespace
 
-std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
-                                       const std::filesystem::path& scene_path,
-                                       const SceneOverrides& overrides) {
+LoadedScene load_scene_json(const nlohmann::json& root, const std::string& name,
+                            const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
   if (!overrides.preset) return load_scene_checked(root, name, scene_path, overrides);
   try {
     return load_scene_checked(root, name, scene_path, overrides);
@@ -515,7 +515,7 @@ std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::st
   }
 }
 
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+LoadedScene load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
   if (is_mitsuba_scene_file(path)) return load_mitsuba_scene(path, overrides);
   return load_scene_json(read_json_file(path, "scene file"), path.string(), path, overrides);
 }

@@ -63,25 +63,25 @@ const std::vector<std::string>& identity_field_names() {
   return names;
 }
 
-RenderIdentity render_identity(const Scene& scene, const std::string& content_hash) {
-  const RenderSettings& s = scene.settings;
-  const FilmLayers layers = film_layers(scene.outputs);
+RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const std::string& content_hash) {
+  const RenderSettings& s = job.settings;
+  const FilmLayers layers = film_layers(job.outputs);
   const std::map<std::string, std::string> values = {
       {"ochre.version", OCHRE_VERSION},
       {"ochre.sceneHash", content_hash},
       {"ochre.resolution", fmt::format("{}x{}", s.width, s.height)},
       {"ochre.spp", std::to_string(s.spp)},
       {"ochre.seed", std::to_string(s.seed)},
-      {"ochre.sampler", s.sampler},
-      {"ochre.polarization", polarization_mode_name(polarization_for(scene).mode)},
+      {"ochre.sampler", kSamplerKinds.name(s.sampler)},
+      {"ochre.polarization", polarization_mode_name(polarization_for(scene, job).mode)},
       {"ochre.maxDepth", std::to_string(s.max_depth)},
       {"ochre.rrDepth", std::to_string(s.rr_depth)},
       {"ochre.aovs", layers.aovs ? "1" : "0"},
       {"ochre.stokes", layers.stokes ? "1" : "0"},
       {"ochre.spectralBins", std::to_string(layers.spectral_bins)},
       {"ochre.spectralRange", fmt::format("{}-{}", layers.spectral_min, layers.spectral_max)},
-      {"ochre.colorspace", scene.outputs.colorspace},
-      {"ochre.sensor", sensor_identity(scene.outputs)},
+      {"ochre.colorspace", kWorkingSpaces.name(job.outputs.colorspace)},
+      {"ochre.sensor", sensor_identity(job.outputs)},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

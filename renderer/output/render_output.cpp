@@ -23,7 +23,7 @@ DisplayOptions display_options(const OutputSettings& o) {
   d.ocio_config = o.ocio_config;
   d.display = o.display;
   d.view = o.view;
-  d.working_space = o.colorspace;
+  d.working_space = kWorkingSpaces.name(o.colorspace);
   d.exposure_stops = o.exposure;
   d.white_balance_xyz = o.white_balance_xyz;
   return d;
@@ -32,8 +32,7 @@ DisplayOptions display_options(const OutputSettings& o) {
 namespace {
 // Layers "albedo.R/G/B" (working space), "normal.X/Y/Z" (world), "depth.Z" (distance along the camera
 // ray, 0 where nothing was hit) and "samples.Y" (samples per pixel).
-void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage& image) {
-  const ColorSpace space = parse_color_space(colorspace);
+void add_aov_channels(const Film& film, ColorSpace space, ExrImage& image) {
   const size_t n = static_cast<size_t>(film.width()) * film.height();
   std::vector<std::vector<float>> c(8, std::vector<float>(n));
   for (int y = 0; y < film.height(); ++y)
@@ -94,7 +93,7 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
 
 std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
   if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
-  const ColorSpace space = parse_color_space(outputs.colorspace);
+  const ColorSpace space = outputs.colorspace;
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -113,8 +112,7 @@ std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) 
   return rgb;
 }
 
-std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
-  const ColorSpace space = parse_color_space(colorspace);
+std::vector<float> film_to_rgb(const Film& film, ColorSpace space) {
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -130,7 +128,7 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) 
 ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
                           const RenderSettings& settings, const RenderStats& stats,
                           const std::string& scene_file) {
-  const std::string& colorspace = outputs.colorspace;
+  const ColorSpace colorspace = outputs.colorspace;
   ExrImage image;
   image.width = film.width();
   image.height = film.height();
@@ -146,14 +144,15 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   if (film.has_stokes()) add_stokes_channels(film, image);
   // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
   if (!outputs.camera_rgb)
-    image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+    image.chromaticities =
+        colorspace == ColorSpace::ACEScg ? acescg_chromaticities() : rec709_chromaticities();
   if (outputs.sensor != "cie1931") {
     image.string_attributes["ochre.sensor"] = outputs.sensor;
     image.string_attributes["ochre.sensorOutput"] = outputs.camera_rgb ? "camera_rgb" : "white_balanced";
   }
   image.string_attributes["software"] = "ochre " OCHRE_VERSION;
   image.string_attributes["ochre.scene"] = scene_file;
-  image.string_attributes["ochre.colorspace"] = colorspace;
+  image.string_attributes["ochre.colorspace"] = kWorkingSpaces.name(colorspace);
   image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
   image.string_attributes["ochre.sampleRange"] =
       fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
@@ -161,6 +160,16 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
   image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
   return image;
+}
+
+void check_stokes_mode(const RenderJob& job, const std::string& scene_name) {
+  const PolarizationSetting mode = job.settings.polarization;
+  if (!job.outputs.stokes || mode == PolarizationSetting::kAuto || mode == PolarizationSetting::kStokes)
+    return;
+  throw InputError(fmt::format(
+      "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
+      "needs polarization mode stokes or auto, not '{}'",
+      scene_name, kPolarizationSettings.name(mode)));
 }
 
 void check_outputs(const OutputSettings& outputs) {
@@ -233,10 +242,11 @@ std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film&
   if (!outputs.exr.empty()) {
     const ExrImage image = render_exr_image(film, rgb, outputs, settings, stats, scene_file);
     write_exr(transaction.add(outputs.exr), image);
-    written.push_back(
-        fmt::format("wrote {} ({}, {}x{})", outputs.exr,
-                    outputs.camera_rgb ? "camera RGB of " + outputs.sensor : "linear " + outputs.colorspace,
-                    image.width, image.height));
+    written.push_back(fmt::format("wrote {} ({}, {}x{})", outputs.exr,
+                                  outputs.camera_rgb
+                                      ? "camera RGB of " + outputs.sensor
+                                      : std::string("linear ") + kWorkingSpaces.name(outputs.colorspace),
+                                  image.width, image.height));
   }
   if (!outputs.polarization_png.empty() && film.has_stokes()) {
     write_polarization_png(transaction.add(outputs.polarization_png), film);

@@ -6,7 +6,7 @@
 
 namespace ochre {
 
-void Scene::build_lights() {
+void Scene::build_lights(bool mirror_lights_on) {
   mesh_light.assign(meshes.size(), -1);
   for (size_t m = 0; m < meshes.size(); ++m) {
     const CompiledMaterial& material = *materials[meshes[m].material];
@@ -20,13 +20,12 @@ void Scene::build_lights() {
   environment_light = -1;
   for (size_t i = 0; i < lights.size(); ++i)
     if (lights[i].get() == environment) environment_light = static_cast<int>(i);
-  if (settings.mirror_lights) mirror_lights.build(meshes, materials, lights.size(), environment_light);
+  if (mirror_lights_on) mirror_lights.build(meshes, materials, lights.size(), environment_light);
   update_light_selection();
 }
 
-void Scene::set_frame(uint64_t frame, double fps) {
-  for (const FlameLight& flame : flames)
-    apply_flame_state(flame, flame_state(flame, settings.seed, frame, fps));
+void Scene::set_frame(uint64_t frame, double fps, uint64_t seed) {
+  for (const FlameLight& flame : flames) apply_flame_state(flame, flame_state(flame, seed, frame, fps));
   update_light_selection();
 }
 

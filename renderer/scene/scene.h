@@ -1,5 +1,9 @@
 #pragma once
-// Scene: everything a render needs, built by load_scene() (scene_loader.h) from a JSON file.
+// Scene: what is rendered, built by load_scene() (renderer/loader/scene_loader.h) from a scene file: camera,
+// materials, meshes, the BVH, textures and lights, and the facts the integrator models from. How it is
+// rendered (samples, sampler, outputs) is the render job beside it (renderer/scene/render_settings.h).
+// After loading only the frame state changes: the flames' state at a frame of a sequence (set_frame) and the
+// light selection that follows their powers.
 
 #include <array>
 #include <filesystem>
@@ -27,8 +31,6 @@ namespace ochre {
 struct Scene {
   std::filesystem::path file;
   std::string description;  // the scene file's "description", shown by reports
-  RenderSettings settings;
-  OutputSettings outputs;
   Camera camera;
   PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
   SensorPtr sensor;          // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
@@ -59,11 +61,14 @@ struct Scene {
   bool polarizing_filters = false;
   bool needs_uv = false;
 
-  // Builds the light list and selection distribution (after meshes and materials exist).
-  void build_lights();
-  // Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per second
-  // (renderer/lights/flame_light.h) and updates the light selection to the new powers.
-  void set_frame(uint64_t frame, double fps);
+  // Builds the light list and selection distribution (after meshes and materials exist); with
+  // `mirror_lights`, the lights' images in planar mirrors too.
+  void build_lights(bool mirror_lights);
+
+  // Frame state. Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per
+  // second for the render seed `seed` (renderer/lights/flame_light.h) and updates the light selection to the
+  // new powers.
+  void set_frame(uint64_t frame, double fps, uint64_t seed);
   // The light selection distribution, proportional to the lights' powers.
   void update_light_selection();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
@@ -73,8 +78,8 @@ struct Scene {
   // power, integrated over the whole scene, dwarfs it. More lights: by power alone (light_selection).
   static constexpr size_t kMaxLocalLights = 8;
   using LightPmfs = std::array<float, kMaxLocalLights>;
-  bool local_light_selection() const {
-    return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
+  bool local_light_selection(LightSelection selection) const {
+    return selection == LightSelection::kLocal && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
   }
   // The probability of choosing each light at p: a quarter in proportion to the importance, three quarters by
   // power (a defensive mix: the estimates ignore occlusion and the receiver's orientation).

@@ -174,6 +174,21 @@ TEST_F(BadResume, AReferencedFileChangedSinceTheCheckpoint) {
                  "the scene or a file it references changed since the checkpoint");
 }
 
+// The checkpoint's header is read strictly: a value ochre render would not write is refused, naming the
+// checkpoint and the field.
+TEST_F(BadResume, HeaderValuesAreCheckedNotPartlyParsed) {
+  const fs::path checkpoint = dir / "out.checkpoint.exr";
+  ASSERT_TRUE(copy_with_string_attribute(checkpoint, dir / "exposure.exr", "ochre.display.exposure", "x"));
+  expect_refused("--resume exposure.exr",
+                 "exposure.exr: ochre.display.exposure: expected a number in [-64, 64], got 'x'");
+  ASSERT_TRUE(copy_with_string_attribute(checkpoint, dir / "sampler.exr", "ochre.sampler", "bogus"));
+  expect_refused("--resume sampler.exr",
+                 "sampler.exr: ochre.sampler: unknown value 'bogus' (known: independent, sobol)");
+  ASSERT_TRUE(copy_with_string_attribute(checkpoint, dir / "mode.exr", "ochre.polarization", "oXX"));
+  expect_refused("--resume mode.exr",
+                 "mode.exr: ochre.polarization: unknown value 'oXX' (known: auto, off, intensity, stokes)");
+}
+
 TEST_F(BadResume, ADamagedCheckpoint) {
   std::ifstream in(dir / "out.checkpoint.exr", std::ios::binary);
   const std::string bytes{std::istreambuf_iterator<char>(in), {}};

@@ -117,8 +117,8 @@ TEST(MitsubaImport, EveryElementOfTheTestSceneTranslates) {
 
   // The translated scene loads through ochre's JSON loader.
   const auto scene = load_scene(data_dir() / "elements.xml");
-  EXPECT_EQ(scene->meshes.size(), 8u);
-  EXPECT_EQ(scene->lights.size(), 4u);  // the emissive disk is an area light
+  EXPECT_EQ(scene.scene->meshes.size(), 8u);
+  EXPECT_EQ(scene.scene->lights.size(), 4u);  // the emissive disk is an area light
 }
 
 TEST(MitsubaImport, MaxDepthCountsSegmentsIncludingTheCameraRay) {
@@ -171,8 +171,8 @@ double mean_y(const Film& film, int x0, int y0, int x1, int y1) {
 std::unique_ptr<Film> render_xml(const std::string& text, const std::filesystem::path& dir) {
   test::write_text(dir / "scene.xml", text);
   auto scene = load_scene(dir / "scene.xml");
-  auto film = std::make_unique<Film>(scene->settings.width, scene->settings.height);
-  render(*scene, *film);
+  auto film = std::make_unique<Film>(scene.job.settings.width, scene.job.settings.height);
+  render(*scene.scene, scene.job, *film);
   return film;
 }
 

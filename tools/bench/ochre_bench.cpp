@@ -77,10 +77,11 @@ void print_raw(const char* what, const ochre::RawEmbreeResult& raw) {
 // Renders once more with the Accel timing its Embree queries: the share of the render's thread time spent
 // in traversal, the renderer's Embree cost per ray, and the ratio the renderer would reach if everything but
 // traversal were free (its own rays, traced at their own cost).
-void report_traversal_share(ochre::Scene& scene, const ochre::RawEmbreeResult& raw) {
-  ochre::Film film(scene.settings.width, scene.settings.height);
+void report_traversal_share(ochre::Scene& scene, const ochre::RenderJob& job,
+                            const ochre::RawEmbreeResult& raw) {
+  ochre::Film film(job.settings.width, job.settings.height);
   scene.accel->set_traversal_timing(true);
-  const ochre::RenderStats stats = ochre::render(scene, film);
+  const ochre::RenderStats stats = ochre::render(scene, job, film);
   const double traversal = scene.accel->traversal_seconds();
   scene.accel->set_traversal_timing(false);
   const double thread_seconds = stats.seconds * stats.threads;
@@ -110,20 +111,22 @@ double bench_scene(const BenchCommand& cmd, const std::string& file) {
   ochre::SceneOverrides overrides;
   overrides.spp = cmd.spp;
   if (cmd.threads > 0) overrides.threads = cmd.threads;
-  const auto scene = ochre::load_scene(file, overrides);
+  const ochre::LoadedScene loaded = ochre::load_scene(file, overrides);
+  const std::unique_ptr<ochre::Scene>& scene = loaded.scene;
+  const ochre::RenderSettings& settings = loaded.job.settings;
   size_t triangles = 0;
   for (const ochre::Mesh& mesh : scene->meshes) triangles += mesh.triangle_count();
   if (triangles == 0)
     throw ochre::InputError(file + ": the scene has no triangle to trace (ochre-bench compares ray rates)");
   fmt::print("{}: {} meshes, {} triangles, {}x{} at {} spp, {} round(s)\n", file, scene->meshes.size(),
-             triangles, scene->settings.width, scene->settings.height, scene->settings.spp, cmd.repeat);
+             triangles, settings.width, settings.height, settings.spp, cmd.repeat);
   std::fflush(stdout);
 
   std::vector<double> ratios, renderer_rates, raw_rates;
   ochre::RawEmbreeResult raw;
   for (int round = 0; round < cmd.repeat; ++round) {
-    ochre::Film film(scene->settings.width, scene->settings.height);
-    const ochre::RenderStats stats = ochre::render(*scene, film);
+    ochre::Film film(settings.width, settings.height);
+    const ochre::RenderStats stats = ochre::render(*scene, loaded.job, film);
     fmt::print("  renderer:  {:.3f} s on {} threads, {} samples/s, {} rays/s ({} intersect + {} occlusion)\n",
                stats.seconds, stats.threads, rate(stats.samples_per_second()), rate(stats.rays_per_second()),
                stats.rays, stats.shadow_rays);
@@ -153,7 +156,7 @@ double bench_scene(const BenchCommand& cmd, const std::string& file) {
       "defaults {:.1f} %\n",
       100.0 * ratio.median, 100.0 * ratio.min, 100.0 * ratio.max, 100.0 * kGoalRatio,
       ratio.median >= kGoalRatio ? "" : "  BELOW GOAL", 100.0 * plain_ratio);
-  report_traversal_share(*scene, raw);
+  report_traversal_share(*scene, loaded.job, raw);
   return ratio.median;
 }
 
@@ -168,16 +171,16 @@ double mean_luminance(const ochre::Film& film) {
 // Time per sample of the three polarization modes, and mode off's luminance against mode intensity's.
 void bench_modes(const BenchCommand& cmd, const std::string& file) {
   const std::array<const char*, 3> modes = {"off", "intensity", "stokes"};
-  std::array<std::unique_ptr<ochre::Scene>, 3> scenes;
+  std::array<ochre::LoadedScene, 3> scenes;
   for (size_t m = 0; m < modes.size(); ++m) {
     ochre::SceneOverrides overrides;
     overrides.spp = cmd.spp;
     if (cmd.threads > 0) overrides.threads = cmd.threads;
-    overrides.polarization = modes[m];
+    overrides.polarization = ochre::kPolarizationSettings.parse(modes[m]);
     scenes[m] = ochre::load_scene(file, overrides);
-    scenes[m]->outputs.stokes = m == 2;
+    scenes[m].job.outputs.stokes = m == 2;
   }
-  const ochre::RenderSettings& s = scenes[0]->settings;
+  const ochre::RenderSettings& s = scenes[0].job.settings;
   fmt::print("{}: polarization modes, {}x{} at {} spp, {} repetitions (interleaved)\n", file, s.width,
              s.height, s.spp, cmd.repeat);
   std::array<std::vector<double>, 3> ns_per_sample;
@@ -186,7 +189,7 @@ void bench_modes(const BenchCommand& cmd, const std::string& file) {
     for (size_t m = 0; m < modes.size(); ++m) {
       ochre::Film film(s.width, s.height);
       if (m == 2) film.enable_stokes();
-      const ochre::RenderStats stats = ochre::render(*scenes[m], film);
+      const ochre::RenderStats stats = ochre::render(*scenes[m].scene, scenes[m].job, film);
       ns_per_sample[m].push_back(1e9 * stats.seconds / static_cast<double>(stats.samples));
       luminance[m] = mean_luminance(film);
     }

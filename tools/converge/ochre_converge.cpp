@@ -83,8 +83,16 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
                                    spec, key, value));
     }
   };
+  // A choice value: its enum, or an error naming the variant, the setting and the known values.
+  const auto choice = [&](const auto& choices) {
+    const auto parsed = choices.parse(value);
+    if (!parsed)
+      throw InputError(
+          fmt::format("--variant '{}': unknown {} '{}' (known: {})", spec, key, value, choices.list()));
+    return *parsed;
+  };
   if (key == "sampler")
-    o.sampler = value;
+    o.sampler = choice(ochre::kSamplerKinds);
   else if (key == "seed")
     number(o.seed);
   else if (key == "threads")
@@ -94,7 +102,7 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
   else if (key == "height")
     number(o.height);
   else if (key == "polarization")
-    o.polarization = value;
+    o.polarization = choice(ochre::kPolarizationSettings);
   else if (key == "branches") {
     number(o.branches);
     if (*o.branches < 1 || *o.branches > ochre::RenderSettings::kMaxBranches)
@@ -140,26 +148,29 @@ ochre::SceneOverrides base_overrides(const ConvergeCommand& cmd) {
 }
 
 // Renders `scene` at `spp` samples per pixel; returns the linear RGB image and the wall-clock seconds.
-ochre::RgbImage render_image(ochre::Scene& scene, uint32_t spp, double* seconds) {
-  scene.settings.spp = spp;
-  scene.settings.sample_begin = 0;
-  ochre::Film film(scene.settings.width, scene.settings.height);
-  const ochre::RenderStats stats = ochre::render(scene, film);
+ochre::RgbImage render_image(ochre::LoadedScene& loaded, uint32_t spp, double* seconds) {
+  ochre::RenderJob& job = loaded.job;
+  job.settings.spp = spp;
+  job.settings.sample_begin = 0;
+  ochre::Film film(job.settings.width, job.settings.height);
+  const ochre::RenderStats stats = ochre::render(*loaded.scene, job, film);
   if (seconds) *seconds = stats.seconds;
-  return {film.width(), film.height(), ochre::film_to_rgb(film, scene.outputs), scene.outputs.colorspace};
+  return {film.width(), film.height(), ochre::film_to_rgb(film, job.outputs),
+          ochre::kWorkingSpaces.name(job.outputs.colorspace)};
 }
 
 ochre::RgbImage auto_reference(const ConvergeCommand& cmd) {
   ochre::SceneOverrides o = base_overrides(cmd);
-  auto scene = ochre::load_scene(cmd.scene, o);
+  ochre::LoadedScene loaded = ochre::load_scene(cmd.scene, o);
+  ochre::RenderSettings& settings = loaded.job.settings;
   const uint32_t spp = kAutoReferenceFactor * *std::max_element(cmd.spp.begin(), cmd.spp.end());
-  const uint64_t seed = scene->settings.seed + kReferenceSeedOffset;
-  scene->settings.seed = seed;
+  const uint64_t seed = settings.seed + kReferenceSeedOffset;
+  settings.seed = seed;
   fmt::print("reference: auto, rendered here at {} spp ({}x the largest) with seed {} (sampler {}, {}x{})\n",
-             spp, kAutoReferenceFactor, seed, scene->settings.sampler, scene->settings.width,
-             scene->settings.height);
+             spp, kAutoReferenceFactor, seed, ochre::kSamplerKinds.name(settings.sampler), settings.width,
+             settings.height);
   double seconds = 0;
-  ochre::RgbImage image = render_image(*scene, spp, &seconds);
+  ochre::RgbImage image = render_image(loaded, spp, &seconds);
   fmt::print("reference: {:.3f} s\n", seconds);
   return image;
 }
@@ -172,11 +183,11 @@ ochre::DisplayOptions no_ocio() {
 
 std::vector<Row> run_variant(const ConvergeCommand& cmd, const Variant& variant,
                              const ochre::RgbImage& reference) {
-  auto scene = ochre::load_scene(cmd.scene, variant.overrides);
+  ochre::LoadedScene loaded = ochre::load_scene(cmd.scene, variant.overrides);
   std::vector<Row> rows;
   for (uint32_t spp : cmd.spp) {
     Row row{variant.name, spp};
-    const ochre::RgbImage image = render_image(*scene, spp, &row.seconds);
+    const ochre::RgbImage image = render_image(loaded, spp, &row.seconds);
     ochre::check_comparable(image, reference,
                             fmt::format("{} (variant {}, {} spp)", cmd.scene, variant.name, spp),
                             cmd.reference);

@@ -35,11 +35,27 @@ const std::string& field(const PartialSumsFile& checkpoint, const std::string& n
   return *identity_field(checkpoint.header().identity, name);
 }
 
+// A choice recorded in the checkpoint (sampler, polarization mode, working space): its enum value, or an
+// InputError naming the file and the field when the text is not one of the known names.
+template <class Enum, size_t N>
+Enum choice(const PartialSumsFile& checkpoint, const std::string& name,
+            const NamedChoices<Enum, N>& choices) {
+  const std::string& text = field(checkpoint, name);
+  const std::optional<Enum> value = choices.parse(text);
+  if (!value)
+    throw InputError(fmt::format("{}: {}: unknown value '{}' (known: {})", checkpoint.path().string(), name,
+                                 text, choices.list()));
+  return *value;
+}
+
 template <class T>
 T number(const PartialSumsFile& checkpoint, const std::string& name) {
   const std::string& text = field(checkpoint, name);
   T value{};
-  std::from_chars(text.data(), text.data() + text.size(), value);  // checked when the file was read
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || text.empty())
+    throw InputError(
+        fmt::format("{}: {}: expected an integer, got '{}'", checkpoint.path().string(), name, text));
   return value;
 }
 
@@ -67,12 +83,13 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.seed = number<uint64_t>(checkpoint, "ochre.seed");
   r.overrides.width = h.image_width;
   r.overrides.height = h.image_height;
-  r.overrides.sampler = field(checkpoint, "ochre.sampler");
-  r.overrides.polarization = field(checkpoint, "ochre.polarization");  // the mode used, as chosen then
+  r.overrides.sampler = choice(checkpoint, "ochre.sampler", kSamplerKinds);
+  // The mode used, as chosen then (auto is recorded as the mode it chose).
+  r.overrides.polarization = choice(checkpoint, "ochre.polarization", kPolarizationSettings);
   r.aovs = h.layers.aovs;
   r.stokes = h.layers.stokes;
   r.spectral_bins = h.layers.spectral_bins;
-  r.colorspace = field(checkpoint, "ochre.colorspace");
+  r.colorspace = choice(checkpoint, "ochre.colorspace", kWorkingSpaces);
   if (r.exr.empty()) r.exr = required_note(checkpoint, "ochre.checkpoint.exr");
   if (r.png.empty()) r.png = required_note(checkpoint, "ochre.checkpoint.png");
   if (r.polarization_png.empty())
@@ -81,9 +98,14 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   if (!r.display) r.display = required_note(checkpoint, "ochre.display.display");
   if (!r.view) r.view = required_note(checkpoint, "ochre.display.view");
   if (!r.exposure) {
+    // As --exposure: a finite number in [-64, 64], the whole text of the note.
     const std::string& stops = required_note(checkpoint, "ochre.display.exposure");
     float exposure = 0.0f;
-    std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
+    const auto [end, error] = std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
+    if (error != std::errc() || end != stops.data() + stops.size() ||
+        !(exposure >= -64.0f && exposure <= 64.0f))
+      throw InputError(
+          fmt::format("{}: ochre.display.exposure: expected a number in [-64, 64], got '{}'", file, stops));
     r.exposure = exposure;
   }
   if (required_note(checkpoint, "ochre.checkpoint.partialSums") == "1") {

@@ -14,6 +14,7 @@
 #include "renderer/output/output_files.h"
 #include "renderer/output/partial_sums.h"
 #include "renderer/output/render_output.h"
+#include "renderer/scene/render_settings.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/memory_budget.h"
 #include "renderer/util/output_transaction.h"
@@ -69,68 +70,133 @@ CoverageReport check_parts_cover(const std::vector<PartialSumsFile>& parts, bool
   throw InputError(message);
 }
 
-std::string note_or_empty(const PartialSumsHeader& h, const std::string& name) {
-  const auto it = h.notes.find(name);
-  return it == h.notes.end() ? "" : it->second;
-}
+// The fields of a part's header that the merge applies, each read strictly: a value that `ochre render`
+// would not have written ("3abc", an exposure of 1e9, an unknown sampler) is bad input naming the part file
+// and the field, never a partial parse or a value out of range applied.
+class PartFields {
+ public:
+  explicit PartFields(const PartialSumsFile& part) : file_(part.path().string()), header_(part.header()) {}
 
-// The numbers of note `name` (space-separated, as fmt writes doubles: exact round trip); nothing when the
-// note is absent. Throws InputError naming the file when there are not N finite numbers.
-template <size_t N>
-std::optional<std::array<double, N>> note_numbers(const PartialSumsHeader& h, const std::string& name) {
-  const std::string text = note_or_empty(h, name);
-  if (text.empty()) return std::nullopt;
-  std::array<double, N> values{};
-  const char* p = text.data();
-  const char* end = text.data() + text.size();
-  for (size_t i = 0; i < N; ++i) {
-    while (p < end && *p == ' ') ++p;
-    const auto [next, error] = std::from_chars(p, end, values[i]);
-    if (error != std::errc() || !std::isfinite(values[i]))
-      throw InputError(fmt::format("{}: expected {} numbers, got '{}'", name, N, text));
-    p = next;
+  const PartialSumsHeader& header() const { return header_; }
+
+  [[noreturn]] void fail(const std::string& name, const std::string& message) const {
+    throw InputError(fmt::format("{}: {}: {}", file_, name, message));
   }
-  if (p != end) throw InputError(fmt::format("{}: expected {} numbers, got '{}'", name, N, text));
-  return values;
-}
+
+  // A note, "" when absent.
+  std::string note(const std::string& name) const {
+    const auto it = header_.notes.find(name);
+    return it == header_.notes.end() ? "" : it->second;
+  }
+
+  // N space-separated finite numbers within +-limit (as fmt writes doubles: exact round trip); nothing when
+  // the note is absent.
+  template <size_t N>
+  std::optional<std::array<double, N>> numbers(const std::string& name, double limit) const {
+    const std::string text = note(name);
+    if (text.empty()) return std::nullopt;
+    std::array<double, N> values{};
+    const char* p = text.data();
+    const char* end = text.data() + text.size();
+    for (size_t i = 0; i < N; ++i) {
+      while (p < end && *p == ' ') ++p;
+      const auto [next, error] = std::from_chars(p, end, values[i]);
+      if (error != std::errc() || !std::isfinite(values[i]) || std::fabs(values[i]) > limit)
+        fail(name, fmt::format("expected {} finite numbers within +-{:g}, got '{}'", N, limit, text));
+      p = next;
+    }
+    if (p != end)
+      fail(name, fmt::format("expected {} finite numbers within +-{:g}, got '{}'", N, limit, text));
+    return values;
+  }
+
+  // One number in [lo, hi]; `fallback` when the note is absent.
+  double number(const std::string& name, double lo, double hi, double fallback) const {
+    const std::string text = note(name);
+    if (text.empty()) return fallback;
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || !(value >= lo && value <= hi))
+      fail(name, fmt::format("expected a number in [{:g}, {:g}], got '{}'", lo, hi, text));
+    return value;
+  }
+
+  // A field of the render's identity.
+  const std::string& identity(const std::string& name) const {
+    const std::string* value = identity_field(header_.identity, name);
+    if (!value) fail(name, "missing");
+    return *value;
+  }
+
+  template <class Enum, size_t N>
+  Enum choice(const std::string& name, const NamedChoices<Enum, N>& choices) const {
+    const std::string& text = identity(name);
+    const std::optional<Enum> value = choices.parse(text);
+    if (!value) fail(name, fmt::format("unknown value '{}' (known: {})", text, choices.list()));
+    return *value;
+  }
+
+  uint64_t unsigned_integer(const std::string& name) const {
+    const std::string& text = identity(name);
+    uint64_t value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size() || text.empty())
+      fail(name, fmt::format("expected an integer in [0, 2^64), got '{}'", text));
+    return value;
+  }
+
+ private:
+  std::string file_;
+  const PartialSumsHeader& header_;
+};
 
 // The final outputs as the render that made the parts would have written them.
-OutputSettings merged_outputs(const MergeCommand& command, const PartialSumsHeader& h) {
+OutputSettings merged_outputs(const MergeCommand& command, const PartFields& part) {
+  const PartialSumsHeader& h = part.header();
   OutputSettings out;
   out.exr = command.exr;
   out.png = command.png;
-  out.colorspace = *identity_field(h.identity, "ochre.colorspace");
+  out.colorspace = part.choice("ochre.colorspace", kWorkingSpaces);
   out.aovs = h.layers.aovs;
   out.stokes = h.layers.stokes;
   out.spectral_bins = h.layers.spectral_bins;
   out.spectral_min = h.layers.spectral_min;
   out.spectral_max = h.layers.spectral_max;
-  out.ocio_config = command.ocio_config.value_or(note_or_empty(h, "ochre.display.ocioConfig"));
-  out.display = command.display.value_or(note_or_empty(h, "ochre.display.display"));
-  out.view = command.view.value_or(note_or_empty(h, "ochre.display.view"));
-  float exposure = 0.0f;
-  const std::string stops = note_or_empty(h, "ochre.display.exposure");
-  std::from_chars(stops.data(), stops.data() + stops.size(), exposure);
-  out.exposure = command.exposure.value_or(exposure);
+  out.ocio_config = command.ocio_config.value_or(part.note("ochre.display.ocioConfig"));
+  out.display = command.display.value_or(part.note("ochre.display.display"));
+  out.view = command.view.value_or(part.note("ochre.display.view"));
+  // As output.exposure and --exposure.
+  out.exposure =
+      command.exposure.value_or(static_cast<float>(part.number("ochre.display.exposure", -64.0, 64.0, 0.0)));
   // A camera sensor's film (docs/cameras.md): its name and output mode are part of the identity.
-  const std::string sensor = *identity_field(h.identity, "ochre.sensor");
+  const std::string& sensor = part.identity("ochre.sensor");
   const size_t space = sensor.rfind(' ');
   out.sensor = sensor.substr(0, space);
-  out.camera_rgb = space != std::string::npos && sensor.substr(space + 1) == "camera_rgb";
-  if (const auto m = note_numbers<9>(h, "ochre.sensorToXYZ")) out.sensor_to_xyz = Mat3{*m};
-  out.white_balance_xyz = note_numbers<3>(h, "ochre.display.whiteBalance");
+  if (space != std::string::npos) {
+    const std::string mode = sensor.substr(space + 1);
+    if (mode != "camera_rgb" && mode != "white_balanced")
+      part.fail("ochre.sensor", fmt::format("unknown output '{}' (known: camera_rgb, white_balanced)", mode));
+    out.camera_rgb = mode == "camera_rgb";
+  }
+  if (const auto m = part.numbers<9>("ochre.sensorToXYZ", 1e6)) out.sensor_to_xyz = Mat3{*m};
+  if (const auto xyz = part.numbers<3>("ochre.display.whiteBalance", 1e6)) {
+    // As output.white_balance: the XYZ of a colour.
+    if (!((*xyz)[0] > 0.0 && (*xyz)[1] > 0.0 && (*xyz)[2] > 0.0))
+      part.fail("ochre.display.whiteBalance", "the illuminant's X, Y and Z must be positive");
+    out.white_balance_xyz = xyz;
+  }
   return out;
 }
 
-RenderSettings merged_settings(const PartialSumsHeader& h) {
+RenderSettings merged_settings(const PartFields& part) {
+  const PartialSumsHeader& h = part.header();
   RenderSettings s;
   s.width = h.image_width;
   s.height = h.image_height;
   s.spp = h.spp;
   s.sample_begin = 0;
-  const std::string& seed = *identity_field(h.identity, "ochre.seed");
-  std::from_chars(seed.data(), seed.data() + seed.size(), s.seed);
-  s.sampler = *identity_field(h.identity, "ochre.sampler");
+  s.seed = part.unsigned_integer("ochre.seed");
+  s.sampler = part.choice("ochre.sampler", kSamplerKinds);
   return s;
 }
 
@@ -147,14 +213,15 @@ int merge(const MergeCommand& command) {
   check_same_render(parts);
   // Partial sums alone may miss samples: they are meant to be merged again with further parts.
   const CoverageReport coverage = check_parts_cover(parts, command.partial || command.check || !final_image);
-  const PartialSumsHeader& first = parts.front().header();
+  const PartFields fields(parts.front());
+  const PartialSumsHeader& first = fields.header();
   if (command.check) {
     for (const std::string& m : coverage.missing) std::cout << "missing: " << m << "\n";
     if (coverage.missing.empty()) std::cout << "complete: every sample of every pixel is held exactly once\n";
     return coverage.missing.empty() ? kExitDone : kExitCheckFailed;
   }
 
-  const OutputSettings out = merged_outputs(command, first);
+  const OutputSettings out = merged_outputs(command, fields);
   if (final_image) check_outputs(out);
   if (!command.sums.empty()) check_output_writable(command.sums);
   std::vector<std::filesystem::path> paths;
@@ -199,8 +266,8 @@ int merge(const MergeCommand& command) {
                                   seconds_since(write_start)));
   }
   if (final_image)
-    for (const std::string& line : add_outputs(transaction, film, out, merged_settings(first), stats,
-                                               note_or_empty(first, "ochre.scene")))
+    for (const std::string& line :
+         add_outputs(transaction, film, out, merged_settings(fields), stats, fields.note("ochre.scene")))
       written.push_back(line);
   transaction.commit();
   if (!command.quiet) {

@@ -202,8 +202,9 @@ int ochre_command(int argc, char** argv) {
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
-  if (*pol_opt) cmd.overrides.polarization = polarization;
-  if (*sampler_opt) cmd.overrides.sampler = sampler;
+  // CLI11 checked the names: the parses succeed.
+  if (*pol_opt) cmd.overrides.polarization = ochre::kPolarizationSettings.parse(polarization);
+  if (*sampler_opt) cmd.overrides.sampler = ochre::kSamplerKinds.parse(sampler);
   if (*preset_opt) cmd.overrides.preset = preset;
   if (*res_opt) {
     int w = 0, h = 0;
@@ -235,7 +236,7 @@ int ochre_command(int argc, char** argv) {
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;
   if (*view_opt) cmd.view = view;
-  if (*cs_opt) cmd.colorspace = colorspace;
+  if (*cs_opt) cmd.colorspace = ochre::kWorkingSpaces.parse(colorspace);
   if (*exposure_opt) cmd.exposure = exposure;
   return ochre::run_render(cmd);
 }

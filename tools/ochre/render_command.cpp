@@ -32,27 +32,27 @@ namespace ochre {
 namespace {
 
 // "auto" models only what the scene needs (docs/architecture.md, 'Design rules'): off when nothing polarizes.
-std::string polarization_mode(const Scene& scene) {
-  const PolarizationChoice choice = polarization_for(scene);
+std::string polarization_mode(const Scene& scene, const RenderJob& job) {
+  const PolarizationChoice choice = polarization_for(scene, job);
   return fmt::format("{} ({})", polarization_mode_name(choice.mode), choice.reason);
 }
 
-void print_summary(const Scene& scene) {
+void print_summary(const Scene& scene, const RenderJob& job) {
   size_t triangles = 0;
   for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
-  const RenderSettings& s = scene.settings;
+  const RenderSettings& s = job.settings;
   const std::string branches =
       s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel)", s.branches, s.spp * s.branches)
                      : "";
   std::cerr << fmt::format(
       "ochre: {}: {}x{}, {} spp{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
       scene.file.filename().string(), s.width, s.height, s.spp, branches, s.max_depth, scene.meshes.size(),
-      triangles, scene.lights.size(), s.seed, s.sampler);
+      triangles, scene.lights.size(), s.seed, kSamplerKinds.name(s.sampler));
   std::cerr << fmt::format(
       "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
       scene.accel->build_seconds(), scene.accel->memory_bytes() / 1e6,
       triangles ? static_cast<double>(scene.accel->memory_bytes()) / triangles : 0.0);
-  std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene));
+  std::cerr << fmt::format("ochre: polarization: {}\n", polarization_mode(scene, job));
   const std::vector<PlanarMirror>& mirrors = scene.mirror_lights.mirrors();
   if (!mirrors.empty()) {
     std::string names;
@@ -79,8 +79,8 @@ struct Phase {
 
 // Overrides the scene's output settings with the command line's and checks them (building the display
 // transform reads the OCIO config).
-void apply_output_options(const RenderCommand& command, Scene& scene) {
-  OutputSettings& out = scene.outputs;
+void apply_output_options(const RenderCommand& command, RenderJob& job) {
+  OutputSettings& out = job.outputs;
   if (command.split()) {
     // A part's display images are previews, written only when asked for: the scene's own paths are for the
     // final image, which `ochre merge` writes (with the Stokes layers a polarization PNG implies).
@@ -100,23 +100,17 @@ void apply_output_options(const RenderCommand& command, Scene& scene) {
   if (command.stokes) out.stokes = true;
   if (!command.polarization_png.empty()) out.polarization_png = command.polarization_png;
   if (!out.polarization_png.empty()) out.stokes = true;  // DoLP / AoLP need S1, S2
-  if (out.stokes && scene.settings.polarization != "auto" && scene.settings.polarization != "stokes")
-    throw InputError(fmt::format(
-        "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
-        "needs polarization mode stokes or auto, not '{}'",
-        command.scene, scene.settings.polarization));
-  if (out.colorspace != "rec709" && out.colorspace != "acescg")
-    throw InputError(fmt::format("--colorspace: unknown '{}' (known: rec709, acescg)", out.colorspace));
+  check_stokes_mode(job, command.scene);
   check_outputs(out);
 }
 
 // Renders the scene's current state (one frame of a sequence) into a film and writes `out`.
-RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const OutputSettings& out,
-                             const std::string& label, Phase& phase) {
+RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const RenderJob& job,
+                             const OutputSettings& out, const std::string& label, Phase& phase) {
+  const RenderSettings& s = job.settings;
   phase = {"allocating the film", true};
-  Film film(scene.settings.width, scene.settings.height, film_layers(out));
-  const uint64_t total =
-      static_cast<uint64_t>(scene.settings.width) * scene.settings.height * scene.settings.spp;
+  Film film(s.width, s.height, film_layers(out));
+  const uint64_t total = static_cast<uint64_t>(s.width) * s.height * s.spp;
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
     try {
@@ -126,14 +120,14 @@ RenderStats render_and_write(const RenderCommand& command, const Scene& scene, c
     }
   }
   phase = {"rendering", false};
-  const RenderStats stats = render(scene, film, [&](uint64_t done) {
+  const RenderStats stats = render(scene, job, film, [&](uint64_t done) {
     if (progress) progress->advance(done);
   });
   if (progress) progress->finish();
   if (!command.quiet) print_stats(stats);
 
   phase = {"writing the outputs", true};
-  for (const std::string& line : write_outputs(film, out, scene.settings, stats, scene.file.string()))
+  for (const std::string& line : write_outputs(film, out, s, stats, scene.file.string()))
     if (!command.quiet) std::cerr << "ochre: " << line << "\n";
   return stats;
 }
@@ -149,9 +143,9 @@ OutputSettings frame_outputs(const OutputSettings& out, uint64_t frame) {
 // A frame sequence (docs/cli.md#frame-sequences): each frame is its own render and its own all-or-nothing
 // set of files; the flames take their state at the frame's time (renderer/lights/flame_light.h), everything
 // else is the scene as loaded. Every frame's file names are checked before the first frame renders.
-int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog& inputs, Phase& phase,
-                  double load_seconds) {
-  const OutputSettings& out = scene.outputs;
+int render_frames(const RenderCommand& command, Scene& scene, const RenderJob& job,
+                  const InputFileLog& inputs, Phase& phase, double load_seconds) {
+  const OutputSettings& out = job.outputs;
   std::vector<std::filesystem::path> paths;
   for (uint64_t k = 0; k < *command.frames; ++k)
     for (const std::string& p : output_paths(frame_outputs(out, command.first_frame + k)))
@@ -159,20 +153,20 @@ int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog
   check_output_files(paths, inputs);
   const uint64_t last = command.first_frame + *command.frames - 1;
   if (!command.quiet) {
-    print_summary(scene);
+    print_summary(scene, job);
     std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
     std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n",
                              command.first_frame, last, command.fps, scene.flames.size());
   }
   phase = {"allocating the film", true};
-  check_render_memory(scene.settings.width, scene.settings.height, out);
+  check_render_memory(job.settings.width, job.settings.height, out);
   for (uint64_t frame = command.first_frame; frame <= last; ++frame) {
-    scene.set_frame(frame - 1, command.fps);
+    scene.set_frame(frame - 1, command.fps, job.settings.seed);
     if (!command.quiet)
       std::cerr << fmt::format("ochre: frame {} of {} (t = {:.4f} s)\n", frame, last,
                                static_cast<double>(frame - 1) / command.fps);
-    render_and_write(command, scene, frame_outputs(out, frame), fmt::format("frame {} of {}", frame, last),
-                     phase);
+    render_and_write(command, scene, job, frame_outputs(out, frame),
+                     fmt::format("frame {} of {}", frame, last), phase);
   }
   return 0;
 }
@@ -181,6 +175,7 @@ int render_frames(const RenderCommand& command, Scene& scene, const InputFileLog
 struct Checkpointing {
   std::filesystem::path path;
   const Scene* scene = nullptr;
+  const RenderJob* job = nullptr;
   std::string content_hash;
   RenderPart part;
   bool split = false;
@@ -190,7 +185,7 @@ struct Checkpointing {
 
   // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
   void write(const Film& film, uint32_t next, const RenderStats& stats) {
-    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    PartialSumsHeader header = partial_header(*scene, *job, content_hash, part, next, stats);
     add_checkpoint_notes(header, part, split, out);
     OutputTransaction transaction;
     write_partial_sums(transaction.add(path), header, film);
@@ -198,7 +193,7 @@ struct Checkpointing {
       OutputSettings png_only = out;
       png_only.exr.clear();
       png_only.polarization_png.clear();
-      add_outputs(transaction, film, png_only, scene->settings, stats, scene->file.string());
+      add_outputs(transaction, film, png_only, job->settings, stats, scene->file.string());
     }
     transaction.commit();
     written_at = next;
@@ -213,25 +208,28 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   const RenderCommand command = resumed ? resumed_command(given, *resumed) : given;
 
   InputFileLog inputs;
-  std::unique_ptr<Scene> scene;
+  LoadedScene loaded;
   {
     const InputFileLog::Recording recording(inputs);  // every file the scene reads
-    scene = load_scene(command.scene, command.overrides);
+    loaded = load_scene(command.scene, command.overrides);
   }
+  Scene* scene = loaded.scene.get();
+  RenderJob& job = loaded.job;
   // Only partial sums need the content hash (it reads every input file again).
   const bool partial_sums = command.split() || command.checkpointing();
   const std::string content_hash = partial_sums ? scene_content_hash(inputs.records()) : "";
   {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
-    apply_output_options(command, *scene);
+    apply_output_options(command, job);
   }
-  if (command.frames) return render_frames(command, *scene, inputs, phase, seconds_since(start));
-  if (resumed) check_resumable(*resumed, render_identity(*scene, content_hash));
-  const RenderPart part = select_part(command, *scene);
-  OutputSettings out = scene->outputs;
+  if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
+  if (resumed) check_resumable(*resumed, render_identity(*scene, job, content_hash));
+  const RenderPart part = select_part(command, job.settings);
+  OutputSettings out = job.outputs;
   Checkpointing checkpoints{
       command.checkpoint.empty() ? default_checkpoint_path(out) : std::filesystem::path(command.checkpoint),
-      scene.get(),
+      scene,
+      &job,
       content_hash,
       part,
       command.split(),
@@ -246,7 +244,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   check_output_files(paths, inputs);
 
   if (!command.quiet) {
-    print_summary(*scene);
+    print_summary(*scene, job);
     if (command.split())
       std::cerr << fmt::format("ochre: rendering samples {} of region {} into partial sums\n",
                                format_sample_range(part.samples), format_pixel_rect(part.rect));
@@ -281,7 +279,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   uint32_t next = part.samples.end;
   PassStop stop = PassStop::finished;
   if (!command.checkpointing()) {
-    stats.add(render_range(*scene, film, part.rect, {first, part.samples.end}, advance));
+    stats.add(render_range(*scene, job, film, part.rect, {first, part.samples.end}, advance));
   } else {
     GracefulStop signals;  // the first SIGINT / SIGTERM ends the render at a pass boundary
     PassSchedule schedule;
@@ -297,7 +295,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     }
     const RenderStats before = stats;
     const PassResult result = render_in_passes(
-        *scene, film, part.rect, {first, part.samples.end}, schedule, advance,
+        *scene, job, film, part.rect, {first, part.samples.end}, schedule, advance,
         [&](uint32_t at, const RenderStats& passes) {
           RenderStats so_far = before;
           so_far.add(passes);
@@ -327,7 +325,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   std::vector<std::string> written;
   if (stop == PassStop::deadline) {
     // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
-    PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    PartialSumsHeader header = partial_header(*scene, job, content_hash, part, next, stats);
     add_checkpoint_notes(header, part, command.split(), out);
     const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(checkpoints.path), header, film);
@@ -336,7 +334,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
                                   format_sample_range(part.samples), seconds_since(write_start)));
     if (command.split()) out.exr.clear();
   } else if (command.split()) {
-    const PartialSumsHeader header = partial_header(*scene, content_hash, part, next, stats);
+    const PartialSumsHeader header = partial_header(*scene, job, content_hash, part, next, stats);
     const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(out.exr), header, film);
     written.push_back(fmt::format("wrote {} (partial sums: samples {} of region {}, {:.2f} s)", out.exr,
@@ -344,7 +342,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
                                   seconds_since(write_start)));
     out.exr.clear();  // the display images of the part, when asked for, follow
   }
-  RenderSettings done = scene->settings;  // the EXR header names the samples it holds
+  RenderSettings done = job.settings;  // the EXR header names the samples it holds
   done.sample_begin = part.samples.begin;
   done.spp = next - part.samples.begin;
   if (!out.exr.empty() || !out.png.empty() || !out.polarization_png.empty())

@@ -19,7 +19,8 @@ struct RenderCommand {
   std::string scene;
   std::string exr, png;  // override the scene's outputs (relative to the working directory)
   SceneOverrides overrides;
-  std::optional<std::string> ocio_config, display, view, colorspace;
+  std::optional<std::string> ocio_config, display, view;
+  std::optional<ColorSpace> colorspace;
   std::optional<float> exposure;
   bool quiet = false;
   bool aovs = false;

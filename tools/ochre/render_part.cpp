@@ -11,8 +11,7 @@
 
 namespace ochre {
 
-RenderPart select_part(const RenderCommand& command, const Scene& scene) {
-  const RenderSettings& s = scene.settings;
+RenderPart select_part(const RenderCommand& command, const RenderSettings& s) {
   RenderPart part{{0, 0, s.width, s.height}, {0, s.spp}};
   if (command.part) {
     const auto [index, count] = *command.part;
@@ -49,21 +48,21 @@ RenderPart select_part(const RenderCommand& command, const Scene& scene) {
   return part;
 }
 
-PartialSumsHeader partial_header(const Scene& scene, const std::string& content_hash, const RenderPart& part,
-                                 uint32_t samples_done, const RenderStats& stats) {
+PartialSumsHeader partial_header(const Scene& scene, const RenderJob& job, const std::string& content_hash,
+                                 const RenderPart& part, uint32_t samples_done, const RenderStats& stats) {
   PartialSumsHeader h;
-  h.identity = render_identity(scene, content_hash);
-  h.image_width = scene.settings.width;
-  h.image_height = scene.settings.height;
-  h.spp = scene.settings.spp;
-  h.layers = film_layers(scene.outputs);
+  h.identity = render_identity(scene, job, content_hash);
+  h.image_width = job.settings.width;
+  h.image_height = job.settings.height;
+  h.spp = job.settings.spp;
+  h.layers = film_layers(job.outputs);
   h.rect = part.rect;
   if (samples_done > part.samples.begin) h.coverage = {{part.rect, {part.samples.begin, samples_done}}};
   h.discarded_samples = stats.discarded;
   h.nonfinite_values = stats.nonfinite_values;
   std::error_code error;
   h.notes["ochre.scene"] = std::filesystem::absolute(scene.file, error).lexically_normal().string();
-  const OutputSettings& out = scene.outputs;
+  const OutputSettings& out = job.outputs;
   const bool config_path =
       !out.ocio_config.empty() && out.ocio_config != "builtin" && out.ocio_config != "none";
   h.notes["ochre.display.ocioConfig"] =

@@ -16,12 +16,12 @@ struct RenderPart {
 };
 
 // InputError naming the option when the selection does not fit the scene or -o is missing.
-RenderPart select_part(const RenderCommand& command, const Scene& scene);
+RenderPart select_part(const RenderCommand& command, const RenderSettings& settings);
 
 // The header of the partial-sum file of `part` holding samples [part.samples.begin, samples_done): the
 // render's identity, where the pixels sit, the samples held, the NaN/Inf counts, and notes for
 // `ochre merge` (the scene, the display settings).
-PartialSumsHeader partial_header(const Scene& scene, const std::string& content_hash, const RenderPart& part,
-                                 uint32_t samples_done, const RenderStats& stats);
+PartialSumsHeader partial_header(const Scene& scene, const RenderJob& job, const std::string& content_hash,
+                                 const RenderPart& part, uint32_t samples_done, const RenderStats& stats);
 
 }  // namespace ochre

@@ -91,15 +91,16 @@ RenderedScene render_scene(const fs::path& file, uint32_t spp, uint64_t seed, st
   overrides.spp = spp;
   overrides.seed = seed;
   overrides.threads = threads;
-  const auto scene = ochre::load_scene(file, overrides);
+  const ochre::LoadedScene loaded = ochre::load_scene(file, overrides);
+  const ochre::RenderJob& job = loaded.job;
   RenderedScene r;
-  r.film = std::make_unique<ochre::Film>(scene->settings.width, scene->settings.height,
-                                         regress_film_layers(scene->outputs));
+  r.film = std::make_unique<ochre::Film>(job.settings.width, job.settings.height,
+                                         regress_film_layers(job.outputs));
   const auto start = std::chrono::steady_clock::now();
-  ochre::render(*scene, *r.film);
+  ochre::render(*loaded.scene, job, *r.film);
   r.seconds = seconds_since(start);
-  r.outputs = scene->outputs;
-  r.description = scene->description;
+  r.outputs = job.outputs;
+  r.description = loaded.scene->description;
   r.spp = spp;
   return r;
 }
@@ -137,7 +138,7 @@ std::vector<fs::path> scene_files(const RegressCommand& cmd) {
 
 // The scene's own spp and seed, read once without overrides.
 ochre::RenderSettings scene_settings(const fs::path& file) {
-  return ochre::load_scene(file)->settings;
+  return ochre::load_scene(file).job.settings;
 }
 
 void update_reference(const RegressCommand& cmd, const fs::path& file, const ochre::InputFileLog& inputs) {
@@ -168,7 +169,7 @@ ochre::SceneReport scene_report(const SceneOutcome& outcome, const RenderedScene
   report.result = std::move(result);
   report.reference = std::move(reference);
   report.render = std::move(render);
-  report.working_space = r.outputs.colorspace;
+  report.working_space = ochre::kWorkingSpaces.name(r.outputs.colorspace);
   report.display = ochre::display_options(r.outputs);
   report.timing = {r.seconds, static_cast<double>(r.spp)};
   ochre::compare_scene_images(report);
