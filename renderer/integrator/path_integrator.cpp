@@ -190,7 +190,8 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (scene_.accel->occluded(shadow)) return;  // before the mirror's material: occluded samples skip it
 
   const Mesh& mesh = scene_.meshes[hit->mesh];
-  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
+  const ShadingContext ctx =
+      shading_context(m.sp, scene_.origin.to_float(), lambda, scene_.textures.get(), &mesh);
   scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
   m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
   m.wo_local = m.frame.to_local(wo_m);
@@ -265,7 +266,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   const Mesh& mesh = scene_.meshes[hit->mesh];
   arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
   s.path_length += hit->t * length(s.ray.dir);
-  ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
+  ShadingContext ctx = shading_context(v.sp, scene_.origin.to_float(), lambda, scene_.textures.get(), &mesh);
   // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
   // units through the triangle's world-per-uv scale.
   ctx.footprint = cone.width_at(s.path_length);

@@ -30,13 +30,13 @@ const LightRegistry& LightRegistry::builtin() {
 }
 
 BuiltLight LightType::load(const JsonFields& f, const std::filesystem::path& dir, const Camera& camera,
-                           float scene_radius) const {
+                           const Vec3d& origin, float scene_radius) const {
   const FieldSpec type_field = string_field("type", true, "the light type");
   std::vector<const FieldSpec*> specs{&type_field};
   for (const FieldSpec& own : fields) specs.push_back(&own);
   const DeclaredFields declared(f, specs);
   declared.check_known();
-  return build(LightContext{declared, dir, camera, scene_radius});
+  return build(LightContext{declared, dir, camera, origin, scene_radius});
 }
 
 std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {

@@ -24,7 +24,13 @@ struct LightContext {
   const std::filesystem::path&
       dir;               // the folder of the file that holds the light: its paths are relative to it
   const Camera& camera;  // lights placed relative to the camera (camera_flash)
-  float scene_radius;    // lights at infinity estimate their power over the scene's bounding sphere
+  // The rendering origin in the scene's coordinates (renderer/scene/scene.h): a light at position p (read
+  // in double precision) is placed at p - origin.
+  const Vec3d& origin;
+  float scene_radius;  // lights at infinity estimate their power over the scene's bounding sphere
+
+  // The field `key` as a position in the coordinates the scene renders in.
+  Vec3 position(const char* key) const { return (fields.point(key) - origin).to_float(); }
 };
 
 struct BuiltLight {
@@ -45,7 +51,7 @@ struct LightType {
   // Reads `f` (a "lights" entry of this type) through the declarations, refusing unknown keys, and builds
   // the light. `dir`, `camera` and `scene_radius` as in LightContext.
   BuiltLight load(const JsonFields& f, const std::filesystem::path& dir, const Camera& camera,
-                  float scene_radius) const;
+                  const Vec3d& origin, float scene_radius) const;
 };
 
 // "polarizer": {"axis": [x, y, z]} in front of a light or an emissive shape: the world transmission axis

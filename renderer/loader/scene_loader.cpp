@@ -193,7 +193,9 @@ FovAxis parse_fov_axis(const JsonFields& f) {
   f.fail("fov_axis", fmt::format("unknown axis '{}' (known: smaller, larger, x, y, diagonal)", axis));
 }
 
-Camera load_camera(const JsonFields& top, const RenderSettings& s) {
+// The camera, placed at the rendering origin (Scene::origin, set here to the camera's position in the
+// scene's coordinates): what the camera sees is rendered in coordinates relative to it.
+Camera load_camera(const JsonFields& top, const RenderSettings& s, Vec3d& origin) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
   f.check_known(
@@ -209,22 +211,28 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   if (f.has("transform")) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
     const Transform t = parse_transform(f.require("transform"), f.child("transform"));
-    basis.eye = t.point({0, 0, 0});
-    if (!within_scene_limit(basis.eye)) f.fail("transform", "places the camera " + beyond_scene_limit());
+    origin = t.point_double(Vec3d{0, 0, 0});
+    if (!within_scene_limit(origin.to_float()))
+      f.fail("transform", "places the camera " + beyond_scene_limit());
+    basis.eye = {0, 0, 0};
     basis.forward = normalize(t.vector({0, 0, -1}));
     basis.up = normalize(t.vector({0, 1, 0}));
     basis.right = normalize(cross(basis.forward, basis.up));
     basis.up = cross(basis.right, basis.forward);
   } else {
-    const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
-               up = f.vec3("up", {0, 1, 0});
-    if (!within_scene_limit(eye)) f.fail("eye", "lies " + beyond_scene_limit());
-    if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
-    if (!std::isfinite(length(target - eye)))
+    const Vec3d eye = f.vec3d("eye", {0, 0, 5}), target = f.vec3d("target", {0, 0, 0});
+    const Vec3 up = f.vec3("up", {0, 1, 0});
+    if (!within_scene_limit(eye.to_float())) f.fail("eye", "lies " + beyond_scene_limit());
+    // The view direction from the two positions in double precision: a target 1 m from an eye at 5e6 keeps
+    // its direction.
+    const Vec3 view = (target - eye).to_float();
+    if (!(length(view) > 0.0f)) f.fail("target", "must differ from eye");
+    if (!std::isfinite(length(view)))
       f.fail("target", "is too far from eye (the distance overflows single precision)");
-    if (length(cross(normalize(target - eye), up)) < 1e-6f)
+    if (length(cross(normalize(view), up)) < 1e-6f)
       f.fail("up", "must not be parallel to the view direction");
-    basis = camera_basis_look_at(eye, target, up);
+    origin = eye;
+    basis = camera_basis_look_at({0, 0, 0}, view, up);
   }
   if (type == "perspective") return Camera::perspective(basis, fov, s.width, s.height);
   if (type == "orthographic") return Camera::orthographic(basis, size, s.width, s.height);
@@ -282,9 +290,13 @@ int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& 
   return index;
 }
 
-Transform shape_transform(const JsonFields& f) {
-  return f.has("transform") ? parse_transform(f.require("transform"), f.child("transform"))
-                            : Transform::identity();
+// The shape's "transform" followed by the shift to the rendering origin (Scene::origin), composed in double
+// precision: the vertices are rounded to single precision once, relative to the camera.
+Transform shape_transform(const JsonFields& f, const Vec3d& origin) {
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
+  return Transform::translate(-origin) * to_world;
 }
 
 // A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
@@ -295,10 +307,10 @@ std::vector<Mesh> load_material_parts(const DeclaredFields& f, const std::filesy
     if (f.has(key)) f.fail(key, "is not supported with \"materials\" (one mesh per file material)");
   const JsonFields map(f.fields().require("materials"), f.fields().child("materials"));
   const std::filesystem::path path = mesh_file(f, dir);
-  const Transform to_world = shape_transform(f.fields());
+  const Transform to_world = shape_transform(f.fields(), scene.origin);
   const MeshImportOptions options = mesh_import_options(f);
-  std::vector<MeshMaterialPart> parts =
-      f.fields().in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
+  std::vector<MeshMaterialPart> parts = f.fields().in_context(
+      "file", [&] { return import_mesh_by_material(path, to_world, options, &scene.warnings); });
   std::string file_materials;
   for (const MeshMaterialPart& part : parts)
     file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
@@ -329,8 +341,8 @@ std::vector<Mesh> load_material_parts(const DeclaredFields& f, const std::filesy
 // `dir`: the folder of the file that holds the shape (its paths are relative to it).
 Mesh load_shape(const DeclaredFields& f, const ShapeType& type, Scene& scene,
                 const MaterialTemplates& templates, const std::filesystem::path& dir) {
-  const Transform to_world = shape_transform(f.fields());
-  Mesh mesh = type.build(ShapeContext{f, to_world, dir, *scene.textures});
+  const Transform to_world = shape_transform(f.fields(), scene.origin);
+  Mesh mesh = type.build(ShapeContext{f, to_world, dir, *scene.textures, scene.origin, scene.warnings});
   // Every shape may face the other way; procedural ones may flip their uvs (meshes do it on import).
   if (f.boolean("flip_normals")) flip_normals(mesh);
   if (type.loader_flips_uv && f.boolean("flip_uv_v")) flip_uv_v(mesh);
@@ -383,7 +395,7 @@ void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) 
     const LightType& type = LightRegistry::builtin().type_of(f);
     if (type.one_per_scene && scene.environment)
       f.fail("type", fmt::format("only one {} light is allowed", type.name));
-    BuiltLight built = type.load(f, dir, scene.camera, scene_radius);
+    BuiltLight built = type.load(f, dir, scene.camera, scene.origin, scene_radius);
     if (!built.power_field.empty()) check_power(*built.light, f, built.power_field.c_str());
     if (type.one_per_scene) scene.environment = static_cast<const EnvironmentLight*>(built.light.get());
     if (built.flame) {
@@ -443,7 +455,7 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
   load_settings(top, scene->file.parent_path(), job, scene->pixel_filter);
   apply_overrides(overrides, job.settings);
   check_settings(job.settings, file);
-  scene->camera = load_camera(top, job.settings);
+  scene->camera = load_camera(top, job.settings, scene->origin);
   if (top.has("camera")) {
     const JsonFields camera(top.require("camera"), top.child("camera"));
     scene->camera_analyzer = parse_camera_polarizer(camera);

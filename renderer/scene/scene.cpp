@@ -11,7 +11,7 @@ void Scene::build_lights(bool mirror_lights_on) {
   for (size_t m = 0; m < meshes.size(); ++m) {
     const CompiledMaterial& material = *materials[meshes[m].material];
     if (!material.facts().is_emissive) continue;
-    auto light = std::make_unique<AreaLight>(meshes[m], material, textures.get());
+    auto light = std::make_unique<AreaLight>(meshes[m], material, textures.get(), origin.to_float());
     if (light->power() <= 0.0f) continue;
     if (m < mesh_polarizers.size()) light->polarizer_axis = mesh_polarizers[m];
     mesh_light[m] = static_cast<int>(lights.size());

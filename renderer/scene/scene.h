@@ -31,6 +31,15 @@ namespace ochre {
 struct Scene {
   std::filesystem::path file;
   std::string description;  // the scene file's "description", shown by reports
+  // The rendering origin: the camera's position in the scene's coordinates (in double precision). Every
+  // position the scene holds (vertices, lights, the camera at 0) is relative to it, rounded to single
+  // precision once, so that an image does not depend on where the scene sits (georeferenced scans 5e6 units
+  // from the origin render as at the origin; docs/scene-format.md, "Coordinate range"). Materials see world
+  // positions (origin + p).
+  Vec3d origin;
+  // What the scene loads but a user should know, one message each (a mesh file whose coordinates are too
+  // large for its detail in single precision, renderer/shapes/float_detail.h); the tools print them.
+  std::vector<std::string> warnings;
   Camera camera;
   PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
   SensorPtr sensor;          // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer

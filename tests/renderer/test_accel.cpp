@@ -190,8 +190,8 @@ TEST(Accel, SphereMeshIsWatertight) {
 TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
   for (float scale : {1e-3f, 1.0f, 1e3f}) {
     const Vec3 centre = Vec3(0.5f, -3, 7) * scale * 10.0f;
-    std::vector<Mesh> meshes = mesh_list(
-        placed(make_sphere(1, 48), Transform::translate(centre) * Transform::scale({scale, scale, scale})));
+    std::vector<Mesh> meshes = mesh_list(placed(
+        make_sphere(1, 48), Transform::translate(Vec3d(centre)) * Transform::scale({scale, scale, scale})));
     const Accel accel(meshes);
     Random random;
     int self_hits = 0, escaped_inward = 0, blocked_outward = 0;

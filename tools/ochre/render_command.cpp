@@ -215,6 +215,8 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   }
   Scene* scene = loaded.scene.get();
   RenderJob& job = loaded.job;
+  // Warnings show even with -q: they are about the image, not the progress.
+  for (const std::string& warning : scene->warnings) std::cerr << "ochre: warning: " << warning << "\n";
   // Only partial sums need the content hash (it reads every input file again).
   const bool partial_sums = command.split() || command.checkpointing();
   const std::string content_hash = partial_sums ? scene_content_hash(inputs.records()) : "";

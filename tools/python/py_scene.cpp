@@ -419,6 +419,9 @@ void register_scene(py::module_& m) {
       .def_property_readonly("mesh_count", [](const PyScene& p) { return p.scene().meshes.size(); })
       .def_property_readonly("light_count", [](const PyScene& p) { return p.scene().lights.size(); })
       .def_property_readonly("material_names", [](const PyScene& p) { return p.scene().material_names; })
+      .def_property_readonly(
+          "warnings", [](const PyScene& p) { return p.scene().warnings; },
+          "What the scene loads but a user should know (docs/scene-format.md)")
       .def(
           "polarization_mode",
           [](const PyScene& p, bool stokes) {
