@@ -16,13 +16,12 @@ namespace ochre {
 
 namespace {
 constexpr double kScale = 0x1p40;
-constexpr double kMaxMagnitude = 1e15;
 
 // Round to nearest (ties to even) in fixed point. Values below 2^62 / kScale (about 4e6, every
 // ordinary sample) take one cvtsd2si, which rounds by the same default mode as nearbyint; larger ones
 // the general 128-bit path (a library call). Both give the same integer.
 __int128 to_fixed(double v) {
-  v = std::clamp(v, -kMaxMagnitude, kMaxMagnitude);
+  v = std::clamp(v, -kMaxSampleMagnitude, kMaxSampleMagnitude);
   const double scaled = v * kScale;
 #if defined(__SSE2__)
   if (std::fabs(scaled) < 0x1p62) return _mm_cvtsd_si64(_mm_set_sd(scaled));

@@ -5,7 +5,8 @@
 // range is cut between processes. Each sample value is rounded once to a multiple of 2^-40
 // and summed in 128-bit integers: integer addition is associative, so any split of the sample
 // range, merged, gives the same bits as one run (docs/architecture.md, 'Film'). The rounding error per
-// sample (4.5e-13) is far below anything visible; magnitudes are clamped at 1e15.
+// sample (4.5e-13) is far below anything visible; magnitudes are clamped at kMaxSampleMagnitude (1e15),
+// and render() counts the samples it clamps (RenderStats::clamped) so that the tools report them.
 
 #include <array>
 #include <cstddef>
@@ -17,6 +18,9 @@
 #include "spectra/sampled_wavelengths.h"
 
 namespace ochre {
+
+// The largest magnitude a sample's value may add to the film; larger ones are clamped to it.
+inline constexpr double kMaxSampleMagnitude = 1e15;
 
 struct Vec3f {
   float x = 0, y = 0, z = 0;

@@ -21,7 +21,7 @@ namespace {
 constexpr int kTileSize = 16;
 
 struct TileCounters {
-  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, nonfinite_values{0};
+  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, clamped{0}, nonfinite_values{0};
 };
 
 // First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
@@ -34,14 +34,22 @@ void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWave
                       first.hit ? first.depth : 0.0f);
 }
 
-// Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
+// What became of a camera sample: added, discarded (NaN / Inf: counted, adds zero) or clamped to the film's
+// range (added at kMaxSampleMagnitude).
+enum class SampleFate { kAdded, kDiscarded, kClamped };
+
+bool beyond_film_range(const XYZ& v) {
+  return std::fabs(v.x) > kMaxSampleMagnitude || std::fabs(v.y) > kMaxSampleMagnitude ||
+         std::fabs(v.z) > kMaxSampleMagnitude;
+}
+
 // The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
 XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {
   return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
 }
 
-bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
-                const SensorResponse* sensor) {
+SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
+                      const SensorResponse* sensor) {
   XYZ xyz = sensor_value(sensor, S[0], lambda);
   std::array<XYZ, 3> s123{};
   bool finite = is_finite(xyz);
@@ -53,13 +61,15 @@ bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWa
   if (!finite) {
     film.add_sample(x, y, {0, 0, 0});
     if (film.has_stokes()) film.add_stokes_sample(x, y, {});
-    return true;
+    return SampleFate::kDiscarded;
   }
+  bool clamped = beyond_film_range(xyz);
+  for (const XYZ& s : s123) clamped = clamped || beyond_film_range(s);
   film.add_sample(x, y, xyz);
   if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
   if (film.spectral_bins() > 0)
     for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);
-  return false;
+  return clamped ? SampleFate::kClamped : SampleFate::kAdded;
 }
 
 // One tile of the rendered rectangle: image pixels [x0, x1) x [y0, y1).
@@ -78,7 +88,7 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
   const SensorResponse* sensor = scene.sensor.get();
-  uint64_t discarded = 0;
+  uint64_t discarded = 0, clamped = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
@@ -96,13 +106,16 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
         const SensorStokes S =
             integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
         if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
-        if (add_sample(film, fx, fy, S, lambda, sensor)) ++discarded;
+        const SampleFate fate = add_sample(film, fx, fy, S, lambda, sensor);
+        if (fate == SampleFate::kDiscarded) ++discarded;
+        if (fate == SampleFate::kClamped) ++clamped;
       }
     }
   }
   counters.rays += stats.rays;
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
+  counters.clamped += clamped;
   counters.nonfinite_values += nonfinite.values - nonfinite_before;
   if (progress) progress(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * samples.size());
 }
@@ -115,6 +128,7 @@ void RenderStats::add(const RenderStats& pass) {
   rays += pass.rays;
   shadow_rays += pass.shadow_rays;
   discarded += pass.discarded;
+  clamped += pass.clamped;
   nonfinite_values += pass.nonfinite_values;
   threads = pass.threads;
 }
@@ -168,6 +182,7 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   stats.rays = counters.rays;
   stats.shadow_rays = counters.shadow_rays;
   stats.discarded = counters.discarded;
+  stats.clamped = counters.clamped;
   stats.nonfinite_values = counters.nonfinite_values;
   stats.threads = threads;
   stats.cancelled = cancel && cancel->load();

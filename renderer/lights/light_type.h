@@ -36,8 +36,8 @@ struct LightContext {
 struct BuiltLight {
   std::unique_ptr<Light> light;
   std::optional<FlameLight> flame;  // a flame flickers in frame sequences; its light is `light`
-  // The field a message names when the light's power overflows single precision; empty: no check (the
-  // environment's power is bounded by its map).
+  // The field a message names when the light's power overflows single precision (a radiance of 3e38 would
+  // turn every sample it reaches into infinity); empty: no check.
   std::string power_field;
 };
 

@@ -158,6 +158,8 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
       fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
   image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
   image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+  // Written only when samples were clamped, so that every other image keeps its header.
+  if (stats.clamped > 0) image.string_attributes["ochre.clampedSamples"] = std::to_string(stats.clamped);
   image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
   return image;
 }

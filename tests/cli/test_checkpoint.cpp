@@ -104,9 +104,9 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
   const std::string cornell = scene("cornell-box.json") + " --resolution 40x24 --spp 2000 -q";
   ASSERT_EQ(run_ochre("render " + cornell + " -o single.exr --png single.png", dir).exit_code, 0);
   ASSERT_EQ(run_ochre("render " + cornell + " --part 0/2 -o p0.exr", dir).exit_code, 0);
-  // 0.6 s, of which 0.5 s are reserved for writing: far less than the part needs.
-  const CommandResult stopped =
-      run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 0.6", dir);
+  // 1 s, of which 0.5 s are reserved for writing: far less than the part needs, enough for some samples
+  // (a limit that leaves no sample done writes nothing, docs/cli.md).
+  const CommandResult stopped = run_ochre("render " + cornell + " --part 1/2 -o p1.exr --time-limit 1", dir);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
   EXPECT_FALSE(fs::exists(dir / "p1.exr")) << "a part's partial sums are written when complete";
   ASSERT_TRUE(fs::exists(dir / "p1.checkpoint.exr"));
@@ -126,7 +126,7 @@ class BadResume : public ::testing::Test {
   void SetUp() override {
     const CommandResult r =
         run_ochre("render '" + (copy / "cornell-box.json").string() +
-                      "' --resolution 32x16 --spp 100000 -o out.exr --png out.png --time-limit 0.6",
+                      "' --resolution 32x16 --spp 100000 -o out.exr --png out.png --time-limit 1",
                   dir);
     ASSERT_EQ(r.exit_code, 3) << r.output;
     ASSERT_TRUE(fs::exists(dir / "out.checkpoint.exr"));

@@ -75,4 +75,14 @@ inline CLI::Validator finite_positive() {
   return finite_number_check(0.0, std::numeric_limits<double>::max(), true, "a finite number > 0");
 }
 
+// A path option (an output, an input, a folder): a given but empty value is bad input, never read as
+// "not given" (which would fall back on a default path and write over a file there).
+inline CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "expected a path, got an empty string" : "";
+      },
+      "PATH");
+}
+
 }  // namespace ochre

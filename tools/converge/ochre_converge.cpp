@@ -332,14 +332,16 @@ int converge_command(int argc, char** argv) {
   app.add_option("scene", cmd.scene, "Scene (JSON)")->required();
   app.add_option("--reference", cmd.reference,
                  "Reference EXR, or 'auto' (rendered here at 16x the largest spp)")
-      ->required();
+      ->required()
+      ->check(ochre::non_empty_path());
   app.add_option("--spp", cmd.spp, "Sample counts, e.g. 1,4,16,64")->delimiter(',')->required();
   app.add_option("--variant", cmd.variant_specs,
                  "NAME:key=value,... with keys sampler, seed, threads, width, height, polarization, branches "
                  "(repeatable; default one variant 'base')");
-  app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds");
-  app.add_option("--plot", cmd.plot,
-                 "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
+  app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds")
+      ->check(ochre::non_empty_path());
+  app.add_option("--plot", cmd.plot, "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)")
+      ->check(ochre::non_empty_path());
   auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)")
                           ->check(CLI::Range(0, 4096));  // as ochre render
   auto* seed_opt =

@@ -55,8 +55,10 @@ int ochre_command(int argc, char** argv) {
       "moved");
   std::vector<std::string> defines;
   render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
-  render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
-  render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
+  render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)")
+      ->check(ochre::non_empty_path());
+  render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)")
+      ->check(ochre::non_empty_path());
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
   auto* threads_opt =
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
@@ -85,9 +87,11 @@ int ochre_command(int argc, char** argv) {
   render->add_flag("--stokes", cmd.stokes,
                    "Add Stokes layers S0..S3 (XYZ-weighted; per spectral bin with --spectral-bins), DoLP and "
                    "AoLP to the EXR (polarization mode stokes)");
-  render->add_option("--polarization-png", cmd.polarization_png,
-                     "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
-                     "polarization");
+  render
+      ->add_option("--polarization-png", cmd.polarization_png,
+                   "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
+                   "polarization")
+      ->check(ochre::non_empty_path());
   std::string memory_limit;
   auto* memory_opt = render->add_option(
       "--memory-limit", memory_limit,
@@ -120,24 +124,29 @@ int ochre_command(int argc, char** argv) {
           ->excludes(region_opt);
 
   std::string checkpoint_interval, time_limit;
-  render->add_option("--checkpoint", cmd.checkpoint,
-                     "Checkpoint file (default: beside the output, NAME.checkpoint.exr)");
+  render
+      ->add_option("--checkpoint", cmd.checkpoint,
+                   "Checkpoint file (default: beside the output, NAME.checkpoint.exr)")
+      ->check(ochre::non_empty_path());
   auto* interval_opt = render->add_option("--checkpoint-interval", checkpoint_interval,
                                           "Write a checkpoint every DURATION (e.g. 600, 10m, 1h30m)");
   auto* time_limit_opt =
       render->add_option("--time-limit", time_limit,
                          "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
-  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds");
+  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds")
+                         ->check(ochre::non_empty_path());
   render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
 
   ochre::MergeCommand merge_cmd;
   CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
   merge->add_option("parts", merge_cmd.parts, "Partial-sum files (ochre render --sample-range/--region)")
       ->required();
-  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)");
-  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)");
-  merge->add_option("--sums", merge_cmd.sums,
-                    "Write the merged partial sums, to merge again with more parts");
+  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)")
+      ->check(ochre::non_empty_path());
+  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)")
+      ->check(ochre::non_empty_path());
+  merge->add_option("--sums", merge_cmd.sums, "Write the merged partial sums, to merge again with more parts")
+      ->check(ochre::non_empty_path());
   merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
   merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 4 if any)");
   merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");

@@ -71,6 +71,21 @@ void print_stats(const RenderStats& stats) {
       stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
 }
 
+// Samples the image does not hold as rendered: said even with -q (the image is not what the scene gives).
+void warn_about_lost_samples(const RenderStats& stats) {
+  if (stats.discarded > 0)
+    std::cerr << fmt::format(
+        "ochre: warning: {} of {} samples were NaN or infinite and count as zero (a radiance or emission "
+        "beyond "
+        "single precision?): the image is darker than the scene\n",
+        stats.discarded, stats.samples);
+  if (stats.clamped > 0)
+    std::cerr << fmt::format(
+        "ochre: warning: {} of {} samples exceeded the film's range and were clamped to {:g}: the image is "
+        "darker than the scene\n",
+        stats.clamped, stats.samples, kMaxSampleMagnitude);
+}
+
 // What the command was doing, for an out-of-memory report.
 struct Phase {
   const char* what = "loading the scene";
@@ -85,6 +100,13 @@ void apply_output_options(const RenderCommand& command, RenderJob& job) {
     // A part's display images are previews, written only when asked for: the scene's own paths are for the
     // final image, which `ochre merge` writes (with the Stokes layers a polarization PNG implies).
     if (!out.polarization_png.empty()) out.stokes = true;
+    out.png.clear();
+    out.polarization_png.clear();
+  }
+  // An output on the command line decides where every output goes (as pbrt's --outfile): the scene's own
+  // output paths apply only when none is given (docs/cli.md, "Output files").
+  if (!command.exr.empty() || !command.png.empty() || !command.polarization_png.empty()) {
+    out.exr.clear();
     out.png.clear();
     out.polarization_png.clear();
   }
@@ -125,6 +147,7 @@ RenderStats render_and_write(const RenderCommand& command, const Scene& scene, c
   });
   if (progress) progress->finish();
   if (!command.quiet) print_stats(stats);
+  warn_about_lost_samples(stats);
 
   phase = {"writing the outputs", true};
   for (const std::string& line : write_outputs(film, out, s, stats, scene.file.string()))
@@ -321,7 +344,15 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   if (progress && stop == PassStop::finished) progress->finish();
   progress.reset();
   if (!command.quiet) print_stats(stats);
+  warn_about_lost_samples(stats);
 
+  if (stop == PassStop::deadline && next == first) {
+    // Not one sample finished: an image of no samples would replace the outputs with black.
+    std::cerr << fmt::format(
+        "ochre: time limit reached before any sample finished; nothing written{}\n",
+        resumed ? " (the checkpoint keeps what it held)" : " (existing outputs are kept)");
+    return kExitTimeLimit;
+  }
   phase = {"writing the outputs", true};
   OutputTransaction transaction;
   std::vector<std::string> written;

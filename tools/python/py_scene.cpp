@@ -154,6 +154,7 @@ class RenderResult {
     d["rays"] = stats_.rays;
     d["shadow_rays"] = stats_.shadow_rays;
     d["discarded"] = stats_.discarded;
+    d["clamped"] = stats_.clamped;
     d["nonfinite_values"] = stats_.nonfinite_values;
     d["threads"] = stats_.threads;
     d["samples_per_second"] = stats_.samples_per_second();
