@@ -1,6 +1,7 @@
 // Mitsuba 3 XML import (docs/mitsuba-import.md): what each element becomes in ochre's scene JSON, the
 // conventions that must agree with Mitsuba's (path depth, fov axis, uv orientation, environment map
 // orientation), and every kind of refusal naming the file, line and element.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -364,6 +365,38 @@ TEST(MitsubaImport, DeepNestingIsRefusedNotACrash) {
   text += "\n</scene>\n";
   const std::string message = test::input_error_of([&] { translate_mitsuba_scene(write_scene(text)); });
   EXPECT_NE(message.find("nested more than 100 deep"), std::string::npos) << message.substr(0, 300);
+}
+
+// Defaults that expand each other grow exponentially ($e is 64 x 16^4 bytes = 4 MiB here; the audit's
+// 673-byte file reached 53 MB, one level more 2 GB): substitution is bounded per attribute and per document.
+TEST(MitsubaImport, SelfExpandingParametersAreRefused) {
+  std::string defaults = "<default name=\"a\" value=\"" + std::string(64, 'x') + "\"/>\n";
+  for (const char* level : {"b", "c", "d", "e"}) {
+    std::string value;
+    for (int i = 0; i < 16; ++i) value += std::string("$") + char(level[0] - 1);
+    defaults += fmt::format("<default name=\"{}\" value=\"{}\"/>\n", level, value);
+  }
+  const std::string message = test::input_error_of([&] {
+    translate_mitsuba_scene(write_scene(scene_xml(defaults + R"(<bsdf type="diffuse" id="$e"/>)")));
+  });
+  EXPECT_NE(message.find("parameter substitution makes an attribute longer than 1048576 bytes"),
+            std::string::npos)
+      << message.substr(0, 300);
+  EXPECT_LT(message.size(), 2000u);
+}
+
+TEST(MitsubaImport, SubstitutionIsBoundedForTheWholeDocument) {
+  // $d is 256 KiB, under the per-attribute bound; 300 uses of it are 75 MiB, over the 64 MiB in all.
+  std::string text = "<default name=\"a\" value=\"" + std::string(64, 'x') + "\"/>\n";
+  for (const char* level : {"b", "c", "d"}) {
+    std::string value;
+    for (int i = 0; i < 16; ++i) value += std::string("$") + char(level[0] - 1);
+    text += fmt::format("<default name=\"{}\" value=\"{}\"/>\n", level, value);
+  }
+  for (int i = 0; i < 300; ++i) text += fmt::format("<bsdf type=\"diffuse\" id=\"m{}$d\"/>\n", i);
+  const std::string message =
+      test::input_error_of([&] { translate_mitsuba_scene(write_scene(scene_xml(text))); });
+  EXPECT_NE(message.find("longer than 67108864 bytes in all"), std::string::npos) << message.substr(0, 300);
 }
 
 TEST(MitsubaImport, IncludeCyclesAreRefused) {

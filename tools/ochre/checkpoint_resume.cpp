@@ -6,6 +6,7 @@
 
 #include "renderer/scene/render_settings.h"
 #include "spectra/input_error.h"
+#include "tools/cli/duration.h"
 
 namespace ochre {
 
@@ -62,12 +63,13 @@ T number(const PartialSumsFile& checkpoint, const std::string& name) {
 }  // namespace
 
 void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
-                          const OutputSettings& out) {
+                          const OutputSettings& out, std::optional<double> interval) {
   header.notes["ochre.checkpoint.target"] = format_sample_range(part.samples);
   header.notes["ochre.checkpoint.partialSums"] = std::string(split ? "1" : "0");
   header.notes["ochre.checkpoint.exr"] = absolute_or_empty(out.exr);
   header.notes["ochre.checkpoint.png"] = absolute_or_empty(out.png);
   header.notes["ochre.checkpoint.polarizationPng"] = absolute_or_empty(out.polarization_png);
+  header.notes["ochre.checkpoint.interval"] = interval ? fmt::format("{}s", *interval) : std::string();
 }
 
 RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile& checkpoint) {
@@ -113,6 +115,15 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
     if (h.rect != PixelRect{0, 0, h.image_width, h.image_height}) r.region = h.rect;
   }
   if (r.checkpoint.empty()) r.checkpoint = file;
+  // The interval the render was started with, unless the command line sets one (checkpoints written
+  // before the note existed have none).
+  const auto interval = h.notes.find("ochre.checkpoint.interval");
+  if (!r.checkpoint_interval && interval != h.notes.end() && !interval->second.empty()) {
+    r.checkpoint_interval = parse_duration(interval->second);
+    if (!r.checkpoint_interval)
+      throw InputError(fmt::format("{}: ochre.checkpoint.interval: expected a duration, got '{}'", file,
+                                   interval->second));
+  }
   return r;
 }
 

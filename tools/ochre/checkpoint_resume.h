@@ -4,6 +4,7 @@
 // render: the scene, its settings (the identity), the samples aimed at, the outputs.
 
 #include <filesystem>
+#include <optional>
 
 #include "renderer/output/partial_sums.h"
 #include "tools/ochre/render_command.h"
@@ -14,9 +15,10 @@ namespace ochre {
 struct OutputSettings;
 
 // Records the resume notes in a checkpoint's header: the samples aimed at (`part`), whether the outputs
-// are partial sums (`split`), the output paths (absolute).
+// are partial sums (`split`), the output paths (absolute), the checkpoint interval (seconds; none when
+// `interval` is empty), which a resumed render keeps unless its command line gives another.
 void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
-                          const OutputSettings& out);
+                          const OutputSettings& out, std::optional<double> interval);
 
 // The command a checkpoint continues: its scene (unless `given` names the scene at another path),
 // settings, layers and outputs, with what the resuming command line may set (outputs, display, threads,

@@ -202,14 +202,15 @@ struct Checkpointing {
   std::string content_hash;
   RenderPart part;
   bool split = false;
-  bool preview = false;  // refresh the display PNG with each checkpoint
+  bool preview = false;            // refresh the display PNG with each checkpoint
+  std::optional<double> interval;  // --checkpoint-interval, recorded for --resume
   OutputSettings out;
   uint32_t written_at = UINT32_MAX;  // the sample the last checkpoint written ends at
 
   // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
   void write(const Film& film, uint32_t next, const RenderStats& stats) {
     PartialSumsHeader header = partial_header(*scene, *job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, split, out);
+    add_checkpoint_notes(header, part, split, out, interval);
     OutputTransaction transaction;
     write_partial_sums(transaction.add(path), header, film);
     if (preview && !out.png.empty()) {
@@ -259,6 +260,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
       part,
       command.split(),
       command.preview,
+      command.checkpoint_interval,
       out};
   std::vector<std::filesystem::path> paths;
   for (const std::string& path : output_paths(out)) paths.emplace_back(path);
@@ -359,7 +361,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   if (stop == PassStop::deadline) {
     // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
     PartialSumsHeader header = partial_header(*scene, job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, command.split(), out);
+    add_checkpoint_notes(header, part, command.split(), out, command.checkpoint_interval);
     const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(checkpoints.path), header, film);
     written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {}, {:.2f} s)",

@@ -107,15 +107,16 @@ void register_errors(py::module_& m) {
   input_error.doc() =
       "Bad input: a malformed scene or material, a missing file, an out-of-range or non-finite value. The "
       "message names the file and the field (the command line exits with code 2 on the same errors).";
+  // Messages are cut like the command line's (message_excerpt): a file's 50 MB value is not quoted whole.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const GraphError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const ImageError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     }
   });
 }
