@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "renderer/film/noise_threshold.h"
 #include "renderer/geometry/surface_shading.h"
 #include "renderer/integrator/path_integrator.h"
 #include "spectra/cie.h"
@@ -21,7 +22,7 @@ namespace {
 constexpr int kTileSize = 16;
 
 struct TileCounters {
-  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, clamped{0}, nonfinite_values{0};
+  std::atomic<uint64_t> samples{0}, rays{0}, shadow_rays{0}, discarded{0}, clamped{0}, nonfinite_values{0};
 };
 
 // First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
@@ -82,13 +83,15 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
                  const Tile& tile, const PixelRect& rect, SampleRange samples, Film& film,
                  TileCounters& counters, const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   thread_local LobeArena arena;
+  // Progress counts every sample of the range, also those a pixel of a noise-threshold render skips.
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
   const NonFiniteTally& nonfinite = thread_non_finite_tally();
   const uint64_t nonfinite_before = nonfinite.values;
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
   const SensorResponse* sensor = scene.sensor.get();
-  uint64_t discarded = 0, clamped = 0;
+  uint64_t taken = 0, discarded = 0, clamped = 0;
+  const double threshold = s.noise_threshold;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
@@ -96,6 +99,8 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       const int fx = x - rect.x0, fy = y - rect.y0;
       for (uint32_t k = samples.begin; k < samples.end; ++k) {
+        if (threshold > 0.0 && !pixel_takes_sample(film, fx, fy, k, threshold)) break;
+        ++taken;
         const Sampler sampler(s.seed, pixel_index, k);
         const float u_lambda = sampler.get_1d(SampleDims::kWavelength);
         const SampledWavelengths lambda =
@@ -112,6 +117,7 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
       }
     }
   }
+  counters.samples += taken;
   counters.rays += stats.rays;
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
@@ -152,6 +158,9 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
+  // A pixel of a noise-threshold render decides from all its samples so far: the film holds [0, begin).
+  if (s.noise_threshold > 0.0 && s.sample_begin != 0)
+    throw std::invalid_argument("render_range: a noise-threshold render starts at sample 0");
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
   const PathIntegrator integrator(scene, s, polarization_for(scene, job).mode);
@@ -178,7 +187,7 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
       tbb::simple_partitioner());
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.samples = static_cast<uint64_t>(rect.width()) * rect.height() * samples.size();
+  stats.samples = counters.samples;
   stats.rays = counters.rays;
   stats.shadow_rays = counters.shadow_rays;
   stats.discarded = counters.discarded;

@@ -122,12 +122,13 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "branches", "seed", "threads", "polarization",
-                   "sampler", "mirror_lights", "light_selection"});
+                   "sampler", "mirror_lights", "light_selection", "noise_threshold"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    s.noise_threshold = f.number("noise_threshold", s.noise_threshold, 0.0, 1.0);
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.light_selection =
         parse_choice(f, "light_selection", kLightSelections, s.light_selection, "light selection");
@@ -421,6 +422,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.polarization) s.polarization = *o.polarization;
   if (o.sampler) s.sampler = *o.sampler;
   if (o.branches) s.branches = *o.branches;
+  if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 
 // An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power

@@ -55,6 +55,15 @@ void add_aov_channels(const Film& film, ColorSpace space, ExrImage& image) {
   for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
 }
 
+// "samples.Y" alone: where a noise-threshold render put its samples (with AOVs it is one of them).
+void add_sample_count_channel(const Film& film, ExrImage& image) {
+  std::vector<float> count(static_cast<size_t>(film.width()) * film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      count[static_cast<size_t>(y) * film.width() + x] = static_cast<float>(film.sample_count(x, y));
+  image.channels.emplace_back("samples.Y", std::move(count));
+}
+
 }  // namespace
 
 std::string spectral_channel_name(int component, float centre_nm) {
@@ -140,6 +149,7 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
     image.channels.emplace_back(names[c], std::move(channel));
   }
   if (film.has_aovs()) add_aov_channels(film, colorspace, image);
+  if (!film.has_aovs() && settings.noise_threshold > 0.0) add_sample_count_channel(film, image);
   if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   if (film.has_stokes()) add_stokes_channels(film, image);
   // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
@@ -157,6 +167,10 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   image.string_attributes["ochre.sampleRange"] =
       fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
   image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+  if (settings.noise_threshold > 0.0) {
+    image.string_attributes["ochre.noiseThreshold"] = fmt::format("{}", settings.noise_threshold);
+    image.string_attributes["ochre.samples"] = std::to_string(stats.samples);
+  }
   image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
   // Written only when samples were clamped, so that every other image keeps its header.
   if (stats.clamped > 0) image.string_attributes["ochre.clampedSamples"] = std::to_string(stats.clamped);

@@ -67,8 +67,11 @@ struct RenderSettings {
   int height = 512;
   uint32_t spp = 64;          // samples per pixel
   uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
-  int max_depth = 8;          // maximum number of scattering events on a path
-  int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
+  // > 0: each pixel stops sampling once its relative standard error is at most this; spp is then the
+  // maximum (renderer/film/noise_threshold.h). Requires sample_begin 0.
+  double noise_threshold = 0.0;
+  int max_depth = 8;  // maximum number of scattering events on a path
+  int rr_depth = 5;   // Russian roulette starts after this many bounces (docs/performance.md)
   // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
   // (docs/architecture.md#branched-paths).
   int branches = 1;

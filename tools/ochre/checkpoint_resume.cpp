@@ -86,6 +86,7 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.width = h.image_width;
   r.overrides.height = h.image_height;
   r.overrides.sampler = choice(checkpoint, "ochre.sampler", kSamplerKinds);
+  r.overrides.noise_threshold = h.noise_threshold;
   // The mode used, as chosen then (auto is recorded as the mode it chose).
   r.overrides.polarization = choice(checkpoint, "ochre.polarization", kPolarizationSettings);
   r.aovs = h.layers.aovs;

@@ -64,6 +64,12 @@ int ochre_command(int argc, char** argv) {
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
   auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
+  double noise_threshold = 0.0;
+  auto* noise_opt = render
+                        ->add_option("--noise-threshold", noise_threshold,
+                                     "Sample each pixel until its relative standard error is at most E "
+                                     "(e.g. 0.01), --spp at most; 0 = off (docs/cli.md#noise-threshold)")
+                        ->check(ochre::finite_range(0.0, 1.0));
   auto* preset_opt = render->add_option("--preset", preset,
                                         "Named variant from the scene's \"presets\" (e.g. fast, final); the "
                                         "other options override it");
@@ -209,6 +215,7 @@ int ochre_command(int argc, char** argv) {
     cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
   }
   if (*spp_opt) cmd.overrides.spp = spp;
+  if (*noise_opt) cmd.overrides.noise_threshold = noise_threshold;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
   // CLI11 checked the names: the parses succeed.

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <new>
 #include <optional>
 
@@ -44,9 +45,12 @@ void print_summary(const Scene& scene, const RenderJob& job) {
   const std::string branches =
       s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel)", s.branches, s.spp * s.branches)
                      : "";
+  const std::string spp = s.noise_threshold > 0.0
+                              ? fmt::format("noise threshold {}, at most {} spp", s.noise_threshold, s.spp)
+                              : fmt::format("{} spp", s.spp);
   std::cerr << fmt::format(
-      "ochre: {}: {}x{}, {} spp{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
-      scene.file.filename().string(), s.width, s.height, s.spp, branches, s.max_depth, scene.meshes.size(),
+      "ochre: {}: {}x{}, {}{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
+      scene.file.filename().string(), s.width, s.height, spp, branches, s.max_depth, scene.meshes.size(),
       triangles, scene.lights.size(), s.seed, kSamplerKinds.name(s.sampler));
   std::cerr << fmt::format(
       "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
@@ -69,6 +73,28 @@ void print_stats(const RenderStats& stats) {
       "{} discarded NaN/Inf samples, {} NaN/Inf shading values made finite\n",
       stats.seconds, stats.threads, stats.samples_per_second() * 1e-6, stats.rays_per_second() * 1e-6,
       stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
+}
+
+// Where a noise-threshold render put its samples: the mean per pixel and the share of pixels that stopped at
+// each decision point (the last one: at the maximum, not converged).
+void print_sample_counts(const Film& film, const RenderSettings& s) {
+  if (s.noise_threshold <= 0.0) return;
+  std::map<uint64_t, uint64_t> pixels_at;
+  uint64_t total = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      ++pixels_at[film.sample_count(x, y)];
+      total += film.sample_count(x, y);
+    }
+  const double pixels = static_cast<double>(film.width()) * film.height();
+  std::string shares;
+  for (const auto& [count, n] : pixels_at)
+    shares += fmt::format("{}{}{}: {:.1f} %", shares.empty() ? "" : ", ", count,
+                          count == s.spp ? " (the maximum)" : "", 100.0 * n / pixels);
+  std::cerr << fmt::format(
+      "ochre: noise threshold {}: {:.1f} samples per pixel on average (at most {}); "
+      "pixels by samples taken: {}\n",
+      s.noise_threshold, total / pixels, s.spp, shares);
 }
 
 // Samples the image does not hold as rendered: said even with -q (the image is not what the scene gives).
@@ -146,7 +172,10 @@ RenderStats render_and_write(const RenderCommand& command, const Scene& scene, c
     if (progress) progress->advance(done);
   });
   if (progress) progress->finish();
-  if (!command.quiet) print_stats(stats);
+  if (!command.quiet) {
+    print_stats(stats);
+    print_sample_counts(film, job.settings);
+  }
   warn_about_lost_samples(stats);
 
   phase = {"writing the outputs", true};
@@ -345,7 +374,10 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   }
   if (progress && stop == PassStop::finished) progress->finish();
   progress.reset();
-  if (!command.quiet) print_stats(stats);
+  if (!command.quiet) {
+    print_stats(stats);
+    print_sample_counts(film, job.settings);
+  }
   warn_about_lost_samples(stats);
 
   if (stop == PassStop::deadline && next == first) {
