@@ -57,10 +57,11 @@ std::string scene_content_hash(const std::vector<InputFileRecord>& scene_inputs)
 
 const std::vector<std::string>& identity_field_names() {
   static const std::vector<std::string> names = {
-      "ochre.version",  "ochre.sceneHash",    "ochre.resolution",     "ochre.spp",           "ochre.seed",
-      "ochre.sampler",  "ochre.polarization", "ochre.maxDepth",       "ochre.rrDepth",       "ochre.aovs",
-      "ochre.stokes",   "ochre.spectralBins", "ochre.spectralRange",  "ochre.colorspace",    "ochre.sensor",
-      "ochre.branches", "ochre.mirrorLights", "ochre.lightSelection", "ochre.noiseThreshold"};
+      "ochre.version",       "ochre.sceneHash",      "ochre.resolution",     "ochre.spp",
+      "ochre.seed",          "ochre.sampler",        "ochre.polarization",   "ochre.maxDepth",
+      "ochre.rrDepth",       "ochre.aovs",           "ochre.stokes",         "ochre.spectralBins",
+      "ochre.spectralRange", "ochre.colorspace",     "ochre.sensor",         "ochre.branches",
+      "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame"};
   return names;
 }
 
@@ -87,6 +88,7 @@ RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const s
       {"ochre.mirrorLights", s.mirror_lights ? "1" : "0"},
       {"ochre.lightSelection", kLightSelections.name(s.light_selection)},
       {"ochre.noiseThreshold", fmt::format("{}", s.noise_threshold)},
+      {"ochre.frame", s.frame ? fmt::format("{} at {} fps", *s.frame, s.fps) : std::string()},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

@@ -82,6 +82,10 @@ struct RenderSettings {
   int threads = 0;  // 0 = all cores
   SamplerKind sampler = SamplerKind::kSobol;
   PolarizationSetting polarization = PolarizationSetting::kAuto;
+  // The frame (1-based) of a flicker sequence at `fps` frames per second that a still render shows, for the
+  // render's identity (the flames' state is the scene's, Scene::set_frame); none: not a frame.
+  std::optional<uint64_t> frame;
+  double fps = 24.0;
 };
 
 struct OutputSettings {

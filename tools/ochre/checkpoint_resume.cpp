@@ -87,6 +87,21 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.height = h.image_height;
   r.overrides.sampler = choice(checkpoint, "ochre.sampler", kSamplerKinds);
   r.overrides.noise_threshold = h.noise_threshold;
+  // A frame of a sequence: "K at F fps" (its outputs are already numbered in the notes).
+  if (const std::string& frame = field(checkpoint, "ochre.frame"); !frame.empty()) {
+    uint64_t number = 0;
+    double fps = 0.0;
+    const size_t at = frame.find(" at ");
+    const bool parsed = at != std::string::npos && frame.ends_with(" fps") &&
+                        std::from_chars(frame.data(), frame.data() + at, number).ptr == frame.data() + at &&
+                        std::from_chars(frame.data() + at + 4, frame.data() + frame.size() - 4, fps).ptr ==
+                            frame.data() + frame.size() - 4;
+    if (!parsed || number < 1 || !(fps > 0.0 && fps <= 10000.0))
+      throw InputError(fmt::format("{}: ochre.frame: expected 'K at F fps', got '{}'", file, frame));
+    r.still_frame = number;
+    r.fps = fps;
+    r.number_outputs = false;
+  }
   // The mode used, as chosen then (auto is recorded as the mode it chose).
   r.overrides.polarization = choice(checkpoint, "ochre.polarization", kPolarizationSettings);
   r.aovs = h.layers.aovs;

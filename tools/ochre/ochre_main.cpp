@@ -1,4 +1,6 @@
 // ochre command line: `ochre render SCENE.json -o OUT.exr [--png OUT.png] ...` (docs/cli.md).
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <regex>
 #include <tuple>
@@ -237,17 +239,33 @@ int ochre_command(int argc, char** argv) {
       !error.empty())
     throw ochre::InputError(error);
   if (*frames_opt) {
-    // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
-    for (const CLI::Option* single :
-         {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt, resume_opt,
-          render->get_option("--checkpoint"), render->get_option("--preview")})
-      if (*single)
-        throw ochre::InputError(single->get_name() +
-                                ": not with --frames (a sequence renders whole frames; render one frame at a "
-                                "time to split or checkpoint it)");
-    cmd.frames = frames;
+    // A sequence renders whole frames; one frame of it may be split and checkpointed like a still.
+    const std::vector<const CLI::Option*> still_options = {range_opt,
+                                                           part_opt,
+                                                           region_opt,
+                                                           tile_opt,
+                                                           interval_opt,
+                                                           time_limit_opt,
+                                                           render->get_option("--checkpoint"),
+                                                           render->get_option("--preview")};
+    const CLI::Option* still = nullptr;
+    for (const CLI::Option* option : still_options)
+      if (*option && !still) still = option;
+    if (*resume_opt)
+      throw ochre::InputError("--frames: not with --resume (the checkpoint records the frame it renders)");
+    if (still && frames != 1)
+      throw ochre::InputError(fmt::format(
+          "{}: not with --frames {} (a sequence renders whole frames; split or checkpoint one frame at a "
+          "time: --frames 1 --first-frame K)",
+          still->get_name(), frames));
     cmd.first_frame = first_frame;
     cmd.fps = fps;
+    if (still) {
+      cmd.still_frame = first_frame;
+      cmd.number_outputs = true;
+    } else {
+      cmd.frames = frames;
+    }
   }
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;

@@ -278,6 +278,13 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     apply_output_options(command, job);
   }
   if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
+  if (command.still_frame) {
+    // One frame of a sequence, rendered like a still (the frame is part of the render's identity).
+    job.settings.frame = *command.still_frame;
+    job.settings.fps = command.fps;
+    scene->set_frame(*command.still_frame - 1, command.fps, job.settings.seed);
+    if (command.number_outputs) job.outputs = frame_outputs(job.outputs, *command.still_frame);
+  }
   if (resumed) check_resumable(*resumed, render_identity(*scene, job, content_hash));
   const RenderPart part = select_part(command, job.settings);
   OutputSettings out = job.outputs;
