@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
@@ -154,6 +155,19 @@ TEST(OchreDiff, BadInputExitsTwoNamingTheProblem) {
   EXPECT_EQ(size.exit_code, 2);
   EXPECT_NE(size.output.find("size mismatch: a.exr is 16x12, small.exr is 4x4"), std::string::npos)
       << size.output;
+
+  // A NaN in the reference would make every metric NaN: refused, naming the pixel. (In the test image it
+  // is a finding: the metrics are NaN and fail any threshold.)
+  std::vector<float> broken = gradient();
+  broken[3 * 17 + 1] = std::numeric_limits<float>::quiet_NaN();
+  write_rgb_exr(dir / "nan.exr", broken);
+  const DiffResult nan_reference = run_diff("a.exr nan.exr", dir);
+  EXPECT_EQ(nan_reference.exit_code, 2) << nan_reference.output;
+  EXPECT_NE(nan_reference.output.find("nan.exr: pixel (1, 1) channel G is nan: a reference must be finite"),
+            std::string::npos)
+      << nan_reference.output;
+  const DiffResult nan_test = run_diff("nan.exr a.exr --max-rmse 1", dir);
+  EXPECT_EQ(nan_test.exit_code, 4) << nan_test.output;
 
   EXPECT_EQ(run_diff("a.exr", dir).exit_code, 2);  // usage
   const DiffResult help = run_diff("--help", dir);
