@@ -124,7 +124,8 @@ TEST(FrameSequences, BadOptionValuesAreRefused) {
     const char* expected;
   } cases[] = {
       {"--frames 0", "--frames: must be between 1 and"},
-      {"--frames -1", "--frames"},
+      {"--frames -1", "--frames: must be between 1 and 1000000 (got -1)"},
+      {"--frames 2 --first-frame -3", "--first-frame: must be between 1 and 999999999 (got -3)"},
       {"--frames 2000000", "--frames: must be between 1 and"},
       {"--frames many", "--frames"},
       {"--frames 2 --fps 0", "--fps: must be a number in (0, 10000]"},

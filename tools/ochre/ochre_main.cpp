@@ -112,11 +112,11 @@ int ochre_command(int argc, char** argv) {
                          ->add_option("--frames", frames,
                                       "Render a sequence of N frames in which flames flicker, written as "
                                       "OUT.0001.exr ... (docs/cli.md#frame-sequences)")
-                         ->check(ochre::unsigned_64_check());
+                         ->check(ochre::unsigned_range_check(1, ochre::kMaxFrames));
   auto* first_frame_opt =
       render
           ->add_option("--first-frame", first_frame, "Number of the first frame of the sequence (default 1)")
-          ->check(ochre::unsigned_64_check());
+          ->check(ochre::unsigned_range_check(1, ochre::kMaxFrameNumber));
   auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
 
   std::string sample_range, part, region, tile;
