@@ -50,7 +50,7 @@ XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const S
 }
 
 SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
-                      const SensorResponse* sensor) {
+                      const SensorResponse* sensor, const SampledSpectrum* groups) {
   XYZ xyz = sensor_value(sensor, S[0], lambda);
   std::array<XYZ, 3> s123{};
   bool finite = is_finite(xyz);
@@ -67,6 +67,9 @@ SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const Sam
   bool clamped = beyond_film_range(xyz);
   for (const XYZ& s : s123) clamped = clamped || beyond_film_range(s);
   film.add_sample(x, y, xyz);
+  if (groups)
+    for (size_t g = 0; g < film.light_groups().size(); ++g)
+      film.add_group_sample(x, y, g, sensor_value(sensor, groups[g], lambda));
   if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
   if (film.spectral_bins() > 0)
     for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);
@@ -92,6 +95,10 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
   const SensorResponse* sensor = scene.sensor.get();
   uint64_t taken = 0, discarded = 0, clamped = 0;
   const double threshold = s.noise_threshold;
+  // Light groups: the S0 of each group's lights, per sample (docs/lights.md, "Light groups").
+  const size_t group_count = film.light_groups().size();
+  std::array<SampledSpectrum, Scene::kMaxLightGroups> groups;
+  SampledSpectrum* const group_sums = group_count > 0 ? groups.data() : nullptr;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
@@ -108,10 +115,11 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
         const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
-        const SensorStokes S =
-            integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
+        for (size_t g = 0; g < group_count; ++g) groups[g] = SampledSpectrum(0.0f);
+        const SensorStokes S = integrator.radiance(ray, cone, lambda, sampler, arena, stats,
+                                                   film.has_aovs() ? &first : nullptr, group_sums);
         if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
-        const SampleFate fate = add_sample(film, fx, fy, S, lambda, sensor);
+        const SampleFate fate = add_sample(film, fx, fy, S, lambda, sensor, group_sums);
         if (fate == SampleFate::kDiscarded) ++discarded;
         if (fate == SampleFate::kClamped) ++clamped;
       }
@@ -158,6 +166,8 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
+  if (!film.light_groups().empty() && film.light_groups() != scene.light_groups)
+    throw std::invalid_argument("render_range: the film's light groups are not the scene's");
   // A pixel of a noise-threshold render decides from all its samples so far: the film holds [0, begin).
   if (s.noise_threshold > 0.0 && s.sample_begin != 0)
     throw std::invalid_argument("render_range: a noise-threshold render starts at sample 0");

@@ -373,11 +373,15 @@ void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scen
       meshes.push_back(load_shape(fields, type, scene, templates, shape.file.parent_path()));
     }
     const std::optional<Vec3> polarizer = parse_light_polarizer(f);
+    const std::string group = parse_light_group(f, "light_group");
     for (Mesh& mesh : meshes) {
       if (polarizer && !scene.materials[mesh.material]->facts().is_emissive)
         f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+      if (!group.empty() && !scene.materials[mesh.material]->facts().is_emissive)
+        f.fail("light_group", "a light group holds lights: this shape's material does not emit");
       scene.meshes.push_back(std::move(mesh));
       scene.mesh_polarizers.push_back(polarizer);
+      scene.mesh_light_groups.push_back(group);
     }
   }
 }
@@ -484,7 +488,12 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
   scene->build_lights(job.settings.mirror_lights);
+  job.outputs.light_groups = scene->light_groups;
   check_area_light_power(*scene, top);
+  if (scene->light_groups.size() > Scene::kMaxLightGroups)
+    top.fail("lights",
+             fmt::format("{} light groups (with \"other\", the emitters that name none); at most {}",
+                         scene->light_groups.size(), Scene::kMaxLightGroups));
   return loaded;
 }
 

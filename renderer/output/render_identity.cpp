@@ -1,6 +1,7 @@
 #include "renderer/output/render_identity.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -61,7 +62,8 @@ const std::vector<std::string>& identity_field_names() {
       "ochre.seed",          "ochre.sampler",        "ochre.polarization",   "ochre.maxDepth",
       "ochre.rrDepth",       "ochre.aovs",           "ochre.stokes",         "ochre.spectralBins",
       "ochre.spectralRange", "ochre.colorspace",     "ochre.sensor",         "ochre.branches",
-      "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame"};
+      "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame",
+      "ochre.lightGroups"};
   return names;
 }
 
@@ -89,6 +91,7 @@ RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const s
       {"ochre.lightSelection", kLightSelections.name(s.light_selection)},
       {"ochre.noiseThreshold", fmt::format("{}", s.noise_threshold)},
       {"ochre.frame", s.frame ? fmt::format("{} at {} fps", *s.frame, s.fps) : std::string()},
+      {"ochre.lightGroups", fmt::format("{}", fmt::join(layers.light_groups, ","))},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

@@ -100,19 +100,46 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
   return nm;
 }
 
+namespace {
+
+// The working-space RGB of one film value (XYZ, or a camera sensor's R, G, B), as the image's R, G, B.
+RGB output_rgb(const XYZ& m, const OutputSettings& outputs) {
+  if (outputs.camera_rgb) return {m.x, m.y, m.z};
+  if (!outputs.sensor_to_xyz) return xyz_to_rgb(m, outputs.colorspace);
+  const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+  return xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                    outputs.colorspace);
+}
+
+void add_light_group_channels(const Film& film, const OutputSettings& outputs, ExrImage& image) {
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::string names;
+  for (size_t g = 0; g < film.light_groups().size(); ++g) {
+    std::array<std::vector<float>, 3> c{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        const RGB rgb = output_rgb(film.mean_group(x, y, g), outputs);
+        const size_t i = static_cast<size_t>(y) * film.width() + x;
+        c[0][i] = rgb.r;
+        c[1][i] = rgb.g;
+        c[2][i] = rgb.b;
+      }
+    const std::string& group = film.light_groups()[g];
+    for (int k = 0; k < 3; ++k)
+      image.channels.emplace_back(fmt::format("group.{}.{}", group, "RGB"[k]), std::move(c[k]));
+    names += (names.empty() ? "" : ",") + group;
+  }
+  image.string_attributes["ochre.lightGroups"] = names;
+}
+
+}  // namespace
+
 std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
   if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
-  const ColorSpace space = outputs.colorspace;
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
-      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
-      RGB c{m.x, m.y, m.z};
-      if (!outputs.camera_rgb) {
-        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
-        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
-                       space);
-      }
+      const RGB c = output_rgb(film.mean(x, y), outputs);  // the sensor's R, G, B, or XYZ from them
       const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
       rgb[i] = c.r;
       rgb[i + 1] = c.g;
@@ -152,6 +179,7 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   if (!film.has_aovs() && settings.noise_threshold > 0.0) add_sample_count_channel(film, image);
   if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   if (film.has_stokes()) add_stokes_channels(film, image);
+  if (!film.light_groups().empty()) add_light_group_channels(film, outputs, image);
   // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
   if (!outputs.camera_rgb)
     image.chromaticities =
@@ -213,6 +241,7 @@ FilmLayers film_layers(const OutputSettings& outputs) {
   layers.spectral_min = outputs.spectral_min;
   layers.spectral_max = outputs.spectral_max;
   layers.stokes = outputs.stokes || !outputs.polarization_png.empty();
+  if (exr) layers.light_groups = outputs.light_groups;
   return layers;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "spectra/color_space.h"
 #include "spectra/mat3.h"
@@ -107,6 +108,8 @@ struct OutputSettings {
   bool camera_rgb = false;
   std::optional<Mat3> sensor_to_xyz;
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
+  // The scene's light groups (Scene::light_groups): EXR layers group.<name>.R/G/B (docs/lights.md).
+  std::vector<std::string> light_groups;
   float spectral_min = 360.0f,
         spectral_max = 830.0f;  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
 };
