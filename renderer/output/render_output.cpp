@@ -130,6 +130,15 @@ void add_light_group_channels(const Film& film, const OutputSettings& outputs, E
     names += (names.empty() ? "" : ",") + group;
   }
   image.string_attributes["ochre.lightGroups"] = names;
+  // The display transform, for `ochre relight` to make the display image as the render did.
+  image.string_attributes["ochre.display.ocioConfig"] = outputs.ocio_config;
+  image.string_attributes["ochre.display.display"] = outputs.display;
+  image.string_attributes["ochre.display.view"] = outputs.view;
+  image.string_attributes["ochre.display.exposure"] = fmt::format("{}", outputs.exposure);
+  if (outputs.white_balance_xyz)
+    image.string_attributes["ochre.display.whiteBalance"] =
+        fmt::format("{} {} {}", (*outputs.white_balance_xyz)[0], (*outputs.white_balance_xyz)[1],
+                    (*outputs.white_balance_xyz)[2]);
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numeric>
 
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
@@ -40,16 +39,6 @@ std::string wall_scene(
                      torch, lamp_group);
 }
 
-const std::vector<float>& channel(const ExrImage& image, const std::string& name) {
-  const std::vector<float>* c = image.find_channel(name);
-  if (!c) throw std::runtime_error("no channel " + name);
-  return *c;
-}
-
-double mean(const std::vector<float>& v) {
-  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-
 TEST(LightGroups, TheGroupsSumToTheImage) {
   const fs::path dir = scratch_dir();
   write_text(dir / "scene.json", wall_scene());
@@ -58,18 +47,18 @@ TEST(LightGroups, TheGroupsSumToTheImage) {
   const ExrImage image = read_exr(dir / "out.exr");
   EXPECT_EQ(image.string_attributes.at("ochre.lightGroups"), "torch,lamp,orb,other");
   for (const char* c : {"R", "G", "B"}) {
-    const std::vector<float>& beauty = channel(image, c);
+    const std::vector<float>& beauty = exr_channel(image, c);
     for (size_t i = 0; i < beauty.size(); ++i) {
       double sum = 0;
       for (const char* group : {"torch", "lamp", "orb", "other"})
-        sum += channel(image, fmt::format("group.{}.{}", group, c))[i];
+        sum += exr_channel(image, fmt::format("group.{}.{}", group, c))[i];
       // Float rounding of four sums of the same samples (docs/lights.md: 1e-6 of the largest value).
       EXPECT_NEAR(sum, beauty[i], 1e-6 * 12.0) << c << " pixel " << i;
     }
   }
   // Each group holds light: none is empty.
   for (const char* group : {"torch", "lamp", "orb", "other"})
-    EXPECT_GT(mean(channel(image, fmt::format("group.{}.G", group))), 1e-3) << group;
+    EXPECT_GT(mean_of(exr_channel(image, fmt::format("group.{}.G", group))), 1e-3) << group;
 }
 
 TEST(LightGroups, SplitPartsMergeBitForBit) {
@@ -107,7 +96,8 @@ TEST(LightGroups, AGroupIsTheLightOfItsEmitters) {
   ASSERT_EQ(run_ochre("render lamp.json -o lamp.exr -q --seed 5", dir).exit_code, 0);
   const ExrImage all = read_exr(dir / "all.exr"), lamp = read_exr(dir / "lamp.exr");
   for (const char* c : {"R", "G", "B"}) {
-    const double group = mean(channel(all, fmt::format("group.lamp.{}", c))), alone = mean(channel(lamp, c));
+    const double group = mean_of(exr_channel(all, fmt::format("group.lamp.{}", c))),
+                 alone = mean_of(exr_channel(lamp, c));
     EXPECT_NEAR(group / alone, 1.0, 0.01) << c << ": " << group << " vs " << alone;
   }
 }

@@ -30,12 +30,6 @@ CommandResult ochre(const std::string& args, const fs::path& dir) {
   return r;
 }
 
-const std::vector<float>& channel(const ExrImage& image, const std::string& name) {
-  const std::vector<float>* c = image.find_channel(name);
-  if (!c) throw std::runtime_error("no channel " + name);
-  return *c;
-}
-
 bool is_power_of_two_from_16(float n) {
   const auto k = static_cast<uint64_t>(n);
   return static_cast<float>(k) == n && k >= 16 && (k & (k - 1)) == 0;
@@ -51,7 +45,7 @@ TEST(NoiseThreshold, PixelsStopAtPowersOfTwoAndTheImageSaysWhere) {
   EXPECT_TRUE(contains(r.output, "512 (the maximum): ")) << r.output;
   const ExrImage image = read_exr(dir / "a.exr");
   EXPECT_EQ(image.string_attributes.at("ochre.noiseThreshold"), "0.05");
-  const std::vector<float>& samples = channel(image, "samples.Y");
+  const std::vector<float>& samples = exr_channel(image, "samples.Y");
   double total = 0;
   int early = 0;
   for (float n : samples) {
@@ -124,8 +118,8 @@ TEST(NoiseThreshold, ABlackSceneStopsAtSixteen) {
   write_text(dir / "scene.json", scene_with("/lights", "[]"));
   ochre("render scene.json --spp 256 --noise-threshold 0.01 -o black.exr -q", dir);
   const ExrImage image = read_exr(dir / "black.exr");
-  for (float n : channel(image, "samples.Y")) EXPECT_EQ(n, 16.0f);
-  for (float v : channel(image, "G")) EXPECT_EQ(v, 0.0f);
+  for (float n : exr_channel(image, "samples.Y")) EXPECT_EQ(n, 16.0f);
+  for (float v : exr_channel(image, "G")) EXPECT_EQ(v, 0.0f);
 }
 
 // Pixels that stopped early hold what a long render holds, to within their error: the stopping rule's
@@ -135,8 +129,8 @@ TEST(NoiseThreshold, EarlyPixelsAgreeWithAReference) {
   ochre("render " + cornell() + " --resolution 24x24 --spp 4096 -q -o reference.exr --seed 7", dir);
   ochre("render " + cornell() + kAdaptive + " -o adaptive.exr", dir);
   const ExrImage reference = read_exr(dir / "reference.exr"), adaptive = read_exr(dir / "adaptive.exr");
-  const std::vector<float>&samples = channel(adaptive, "samples.Y"), &g = channel(adaptive, "G"),
-        &g_ref = channel(reference, "G");
+  const std::vector<float>&samples = exr_channel(adaptive, "samples.Y"), &g = exr_channel(adaptive, "G"),
+        &g_ref = exr_channel(reference, "G");
   int early = 0, within = 0;
   double signed_sum = 0;
   for (size_t i = 0; i < samples.size(); ++i) {

@@ -13,9 +13,34 @@
 #include "tools/cli/program.h"
 #include "tools/ochre/frame_options.h"
 #include "tools/ochre/merge_command.h"
+#include "tools/ochre/relight_command.h"
 #include "tools/ochre/render_command.h"
 
 namespace {
+
+// --ocio-config, --display, --view and --exposure of the commands that write the display image of an
+// earlier render (merge, relight): each defaults to the render's.
+struct DisplayOverrides {
+  std::string ocio, display, view;
+  float exposure = 0.0f;
+  CLI::Option *ocio_opt = nullptr, *display_opt = nullptr, *view_opt = nullptr, *exposure_opt = nullptr;
+
+  void add_to(CLI::App* app) {
+    ocio_opt = app->add_option("--ocio-config", ocio, "OCIO config (default: the render's)");
+    display_opt = app->add_option("--display", display, "OCIO display (default: the render's)");
+    view_opt = app->add_option("--view", view, "OCIO view (default: the render's)");
+    exposure_opt =
+        app->add_option("--exposure", exposure, "Exposure of the display image (default: the render's)")
+            ->check(ochre::finite_range(-64.0, 64.0));
+  }
+  template <class Command>
+  void apply(Command& command) const {
+    if (*ocio_opt) command.ocio_config = ocio;
+    if (*display_opt) command.display = display;
+    if (*view_opt) command.view = view;
+    if (*exposure_opt) command.exposure = exposure;
+  }
+};
 
 // "WxH" -> width, height.
 bool parse_resolution(const std::string& text, int& width, int& height) {
@@ -158,24 +183,37 @@ int ochre_command(int argc, char** argv) {
   merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
   merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 4 if any)");
   merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
-  std::string merge_ocio, merge_display, merge_view, merge_memory;
-  float merge_exposure = 0.0f;
-  auto* merge_ocio_opt =
-      merge->add_option("--ocio-config", merge_ocio, "OCIO config (default: the render's)");
-  auto* merge_display_opt =
-      merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
-  auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
-  auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
-                                 ->check(ochre::finite_range(-64.0, 64.0));
+  std::string merge_memory;
+  DisplayOverrides merge_display;
+  merge_display.add_to(merge);
   auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
+
+  ochre::RelightCommand relight_cmd;
+  CLI::App* relight = app.add_subcommand(
+      "relight", "Recombine a render's light groups with new intensities (docs/lights.md)");
+  relight->add_option("render", relight_cmd.render, "EXR of a render whose lights name groups")
+      ->required()
+      ->check(ochre::non_empty_path());
+  relight->add_option(
+      "--group", relight_cmd.groups,
+      "NAME:scale=S (times S), NAME:off or NAME:on; repeatable (the other groups: unchanged)");
+  relight->add_option("-o,--output", relight_cmd.exr, "Output EXR (the relit image and groups)")
+      ->check(ochre::non_empty_path());
+  relight->add_option("--png", relight_cmd.png, "Output display PNG (the render's display transform)")
+      ->check(ochre::non_empty_path());
+  relight->add_flag("-q,--quiet", relight_cmd.quiet, "No report");
+  DisplayOverrides relight_display;
+  relight_display.add_to(relight);
 
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
 
+  if (app.got_subcommand(relight)) {
+    relight_display.apply(relight_cmd);
+    return ochre::run_relight(relight_cmd);
+  }
+
   if (app.got_subcommand(merge)) {
-    if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
-    if (*merge_display_opt) merge_cmd.display = merge_display;
-    if (*merge_view_opt) merge_cmd.view = merge_view;
-    if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
+    merge_display.apply(merge_cmd);
     if (*merge_memory_opt) merge_cmd.memory_limit = parse_memory_limit(merge_memory);
     return ochre::run_merge(merge_cmd);
   }
