@@ -22,6 +22,9 @@ struct LightSample {
   Vec3 light_normal;  // geometric normal at the sampled point (area lights)
 };
 
+// The light group of the emitters that name none (docs/lights.md, "Light groups"): a reserved name.
+inline constexpr const char* kOtherLightGroup = "other";
+
 class Light {
  public:
   virtual ~Light() = default;

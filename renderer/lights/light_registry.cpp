@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "renderer/lights/light_type.h"
-#include "renderer/scene/scene.h"
 
 namespace ochre {
 
@@ -60,7 +59,7 @@ std::string parse_light_group(const JsonFields& f, const char* key) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
   });
   if (!valid) f.fail(key, fmt::format("'{}' is not a group name: 1 to 64 letters, digits, '_' or '-'", name));
-  if (name == Scene::kOtherLightGroup)
+  if (name == kOtherLightGroup)
     f.fail(key, fmt::format("'{}' is the group of the emitters that name none; choose another name", name));
   return name;
 }

@@ -74,7 +74,6 @@ struct Scene {
   std::vector<int> light_group_of;
   int other_light_group = -1;
   static constexpr size_t kMaxLightGroups = 16;
-  static constexpr const char* kOtherLightGroup = "other";
   // Fills light_groups, light_group_of and other_light_group from the lights' groups.
   void build_light_groups();
 
