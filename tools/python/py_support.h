@@ -40,5 +40,6 @@ void register_errors(py::module_& m);
 void register_scene(py::module_& m);
 void register_material(py::module_& m);
 void register_colour(py::module_& m);
+void register_relight(py::module_& m);
 
 }  // namespace ochre::python
