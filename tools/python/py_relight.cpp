@@ -52,12 +52,7 @@ void register_relight(py::module_& m) {
         const std::string png_path = png.is_none() ? "" : to_path(png).string();
         if (!exr_path.empty() || !png_path.empty())
           write_relit(relit, recorded_display(image, file.string()), exr_path, png_path, inputs);
-        py::dict channels;
-        for (const auto& [name, values] : relit.channels)
-          channels[py::str(name)] = float_array(values, {relit.height, relit.width});
-        py::dict attributes;
-        for (const auto& [key, value] : relit.string_attributes) attributes[py::str(key)] = value;
-        return py::make_tuple(channels, attributes);
+        return exr_to_python(relit);
       },
       py::arg("render"), py::kw_only(), py::arg("groups") = py::none(), py::arg("exr") = py::none(),
       py::arg("png") = py::none(),
