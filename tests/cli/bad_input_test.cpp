@@ -12,7 +12,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_bad_input {
+namespace ochre::test::bad_input_test {
 namespace {
 
 const char* kGoodMaterials = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
@@ -177,9 +177,9 @@ TEST(Cli, HelpExitsZero) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_bad_input
+}  // namespace ochre::test::bad_input_test
 
-namespace ochre::test::test_bad_input {
+namespace ochre::test::bad_input_test {
 namespace {
 
 TEST(BadInput, UnknownProgressStyle) {
@@ -198,4 +198,4 @@ TEST(BadInput, UnknownProgressStyle) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_bad_input
+}  // namespace ochre::test::bad_input_test

@@ -16,7 +16,7 @@
 #include "spectra/tabulated_spectrum.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_camera_sensors {
+namespace ochre::test::camera_sensors_test {
 namespace {
 
 // A grey (0.5) wall filling the view, in a uniform sky of `radiance`, seen through `sensor`.
@@ -153,4 +153,4 @@ TEST(CameraSensors, BadCsvSensorsAreNamed) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_camera_sensors
+}  // namespace ochre::test::camera_sensors_test

@@ -14,7 +14,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_cave_scene {
+namespace ochre::test::cave_scene_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -131,4 +131,4 @@ TEST(WhiteBalance, AColourlessIlluminantIsRejected) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_cave_scene
+}  // namespace ochre::test::cave_scene_test

@@ -17,7 +17,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_checkpoint {
+namespace ochre::test::checkpoint_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -259,4 +259,4 @@ TEST(CheckpointOptions, MalformedDurationsAndAMissingSceneAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_checkpoint
+}  // namespace ochre::test::checkpoint_test

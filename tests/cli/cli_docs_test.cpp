@@ -15,7 +15,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_cli_docs {
+namespace ochre::test::cli_docs_test {
 namespace {
 
 struct ToolDoc {
@@ -162,4 +162,4 @@ TEST(CliDocs, CheckerFindsMissingOptions) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_cli_docs
+}  // namespace ochre::test::cli_docs_test

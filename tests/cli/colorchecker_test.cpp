@@ -21,7 +21,7 @@
 #include "spectra/white_balance.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_colorchecker {
+namespace ochre::test::colorchecker_test {
 namespace {
 
 constexpr int kPatchPixels = 16;  // each patch is 16 x 16 pixels; the inner 12 x 12 are averaged
@@ -164,4 +164,4 @@ TEST(ColorChecker, ReferenceIsUpToDate) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_colorchecker
+}  // namespace ochre::test::colorchecker_test

@@ -14,7 +14,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_converge {
+namespace ochre::test::converge_test {
 namespace {
 
 struct ConvergeResult {
@@ -139,4 +139,4 @@ TEST(Converge, UnknownVariantSettingExitsTwoNamingIt) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_converge
+}  // namespace ochre::test::converge_test

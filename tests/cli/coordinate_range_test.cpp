@@ -15,7 +15,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_coordinate_range {
+namespace ochre::test::coordinate_range_test {
 namespace {
 
 // The Cornell box (millimetres) with every position moved by `offset`: the camera's eye and target, and a
@@ -111,4 +111,4 @@ TEST(CoordinateRange, AMeshFileTooFarFromItsOriginForItsDetailIsNamed) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_coordinate_range
+}  // namespace ochre::test::coordinate_range_test

@@ -8,7 +8,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_determinism {
+namespace ochre::test::determinism_test {
 namespace {
 
 ExrImage render_cornell(const std::string& args) {
@@ -44,4 +44,4 @@ TEST(Determinism, SeedChangesTheNoise) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_determinism
+}  // namespace ochre::test::determinism_test

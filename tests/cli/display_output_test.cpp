@@ -9,7 +9,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_display_output {
+namespace ochre::test::display_output_test {
 namespace {
 
 const char* kGreyPlane = R"({
@@ -72,9 +72,9 @@ TEST(DisplayOutput, MissingConfigIsBadInput) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_display_output
+}  // namespace ochre::test::display_output_test
 
-namespace ochre::test::test_display_output {
+namespace ochre::test::display_output_test {
 namespace {
 
 // --colorspace acescg writes AP1 primaries: the same render's pixels are the Rec.709 ones through
@@ -107,9 +107,9 @@ TEST(ExrOutput, AcesCgWorkingSpace) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_display_output
+}  // namespace ochre::test::display_output_test
 
-namespace ochre::test::test_display_output {
+namespace ochre::test::display_output_test {
 namespace {
 
 // --aovs adds first-hit layers: a 0.5 Lambert plane seen straight down from 5 units has albedo 0.5,
@@ -141,9 +141,9 @@ TEST(ExrOutput, AovLayers) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_display_output
+}  // namespace ochre::test::display_output_test
 
-namespace ochre::test::test_display_output {
+namespace ochre::test::display_output_test {
 namespace {
 
 // --spectral-bins writes the Fichet et al. layout: S0.<centre>nm channels with a decimal comma and
@@ -176,4 +176,4 @@ TEST(ExrOutput, SpectralLayers) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_display_output
+}  // namespace ochre::test::display_output_test

@@ -1,9 +1,9 @@
 // parse_duration: the DURATION values of --checkpoint-interval and --time-limit (docs/cli.md).
-#include <gtest/gtest.h>
-
 #include "tools/cli/duration.h"
 
-namespace ochre::test_duration {
+#include <gtest/gtest.h>
+
+namespace ochre::duration_test {
 namespace {
 
 TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
@@ -20,4 +20,4 @@ TEST(Duration, ParsesSecondsMinutesHoursAndCombinations) {
 }
 
 }  // namespace
-}  // namespace ochre::test_duration
+}  // namespace ochre::duration_test

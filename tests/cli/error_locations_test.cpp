@@ -10,7 +10,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_error_locations {
+namespace ochre::test::error_locations_test {
 namespace {
 
 std::string data_file(const char* name) {
@@ -155,4 +155,4 @@ TEST(ErrorLocations, StokesOutputNamesTheSceneAndTheMode) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_error_locations
+}  // namespace ochre::test::error_locations_test

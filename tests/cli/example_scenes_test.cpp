@@ -16,7 +16,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_example_scenes {
+namespace ochre::test::example_scenes_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -87,4 +87,4 @@ TEST(ExampleScenes, EveryShippedSceneRendersAtLowResolution) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_example_scenes
+}  // namespace ochre::test::example_scenes_test

@@ -3,7 +3,7 @@
 // negative number where a count or a finite value is expected exit 2 with "PROGRAM: error: ..." naming the
 // option or the file, writing nothing; a check the user asked for that does not pass exits 4 (ochre-diff's
 // thresholds, ochre-regress's scenes, ochre-brdf chi2, `ochre merge --check`). Exit 3 (`ochre render
-// --time-limit`) is tested in test_checkpoint.cpp, the end by a signal in test_signals.cpp.
+// --time-limit`) is tested in checkpoint_test.cpp, the end by a signal in signals_test.cpp.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -18,7 +18,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_exit_codes {
+namespace ochre::test::exit_codes_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -276,4 +276,4 @@ TEST(ExitCodesFailedCheck, ExitsFour) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_exit_codes
+}  // namespace ochre::test::exit_codes_test

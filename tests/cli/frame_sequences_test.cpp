@@ -10,7 +10,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_frame_sequences {
+namespace ochre::test::frame_sequences_test {
 namespace {
 
 // A wall lit by a torch and a grease lamp, 24x16 pixels.
@@ -160,4 +160,4 @@ TEST(FrameSequences, EveryFrameOutputIsCheckedFirst) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_frame_sequences
+}  // namespace ochre::test::frame_sequences_test

@@ -8,7 +8,7 @@
 #include "cli/exr_bits.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_fuzz_findings {
+namespace ochre::test::fuzz_findings_test {
 namespace {
 
 struct Rejection {
@@ -254,4 +254,4 @@ TEST(FuzzFindings, AHugeValueIsNotEchoedWhole) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_fuzz_findings
+}  // namespace ochre::test::fuzz_findings_test

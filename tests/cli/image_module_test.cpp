@@ -11,7 +11,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_image_module {
+namespace ochre::test::image_module_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -69,4 +69,4 @@ TEST(ImageModule, FoundBesideTheExecutableByDefault) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_image_module
+}  // namespace ochre::test::image_module_test

@@ -12,7 +12,7 @@
 #include "spectra/byte_size.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_input_files {
+namespace ochre::test::input_files_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -187,4 +187,4 @@ TEST(InputFiles, MaterialAndPairsOfOchreBrdfMustBeRegularFiles) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_input_files
+}  // namespace ochre::test::input_files_test

@@ -8,7 +8,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_json_types {
+namespace ochre::test::json_types_test {
 namespace {
 
 const char* kGrey = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
@@ -213,4 +213,4 @@ TEST(JsonTypes, NumbersThatOverflowSinglePrecision) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_json_types
+}  // namespace ochre::test::json_types_test

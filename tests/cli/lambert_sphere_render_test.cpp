@@ -13,7 +13,7 @@
 #include "cli/render_probe.h"
 #include "materials/core/pi.h"
 
-namespace ochre::test::test_lambert_sphere_render {
+namespace ochre::test::lambert_sphere_render_test {
 namespace {
 
 constexpr int kResolution = 64;
@@ -92,4 +92,4 @@ TEST(LambertSphereFurnace, KdIsTheRenderedBondAlbedo) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_lambert_sphere_render
+}  // namespace ochre::test::lambert_sphere_render_test

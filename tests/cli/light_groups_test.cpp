@@ -12,7 +12,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_light_groups {
+namespace ochre::test::light_groups_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -128,4 +128,4 @@ TEST(LightGroups, BadGroupsAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_light_groups
+}  // namespace ochre::test::light_groups_test

@@ -7,7 +7,7 @@
 #include "cli/bad_scene.h"
 #include "cli/render_probe.h"
 
-namespace ochre::test::test_light_presets {
+namespace ochre::test::light_presets_test {
 namespace {
 
 // A grey wall at z = 0 facing +z, seen from z = 4, lit by `light` only.
@@ -91,4 +91,4 @@ TEST(LightPresets, BadFieldsAreNamed) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_light_presets
+}  // namespace ochre::test::light_presets_test

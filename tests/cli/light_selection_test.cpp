@@ -8,7 +8,7 @@
 #include "cli/bad_scene.h"
 #include "cli/render_probe.h"
 
-namespace ochre::test::test_light_selection {
+namespace ochre::test::light_selection_test {
 namespace {
 
 // A point light (intensity I at height h) and a constant environment (radiance Le) over a Lambert plane of
@@ -65,4 +65,4 @@ TEST(LightSelection, UnknownChoiceIsRejected) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_light_selection
+}  // namespace ochre::test::light_selection_test

@@ -9,7 +9,7 @@
 
 #include "cli/render_probe.h"
 
-namespace ochre::test::test_mirror_lights {
+namespace ochre::test::mirror_lights_test {
 namespace {
 
 // Unpolarized Fresnel reflectance of a dielectric (relative index eta) at incidence cosine c.
@@ -161,4 +161,4 @@ TEST(MirrorLights, PolarizedLightThroughAGoldMirrorAgreesWithBsdfSampling) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_mirror_lights
+}  // namespace ochre::test::mirror_lights_test

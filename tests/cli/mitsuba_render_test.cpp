@@ -7,7 +7,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_mitsuba_render {
+namespace ochre::test::mitsuba_render_test {
 namespace {
 
 std::string elements_xml() {
@@ -64,4 +64,4 @@ TEST(MitsubaRender, BadXmlSceneWritesNothing) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_mitsuba_render
+}  // namespace ochre::test::mitsuba_render_test

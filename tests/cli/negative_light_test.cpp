@@ -11,7 +11,7 @@
 #include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_negative_light {
+namespace ochre::test::negative_light_test {
 namespace {
 
 const char* kGrey = R"("materials": {"grey": {"type": "lambert", "color": 0.5}})";
@@ -184,4 +184,4 @@ TEST(NegativeLight, TexturedEmissionIsClampedToZeroAtRunTime) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_negative_light
+}  // namespace ochre::test::negative_light_test

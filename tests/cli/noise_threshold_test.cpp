@@ -13,7 +13,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_noise_threshold {
+namespace ochre::test::noise_threshold_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -146,4 +146,4 @@ TEST(NoiseThreshold, EarlyPixelsAgreeWithAReference) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_noise_threshold
+}  // namespace ochre::test::noise_threshold_test

@@ -22,7 +22,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_nonfinite_values {
+namespace ochre::test::nonfinite_values_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -327,4 +327,4 @@ TEST(NonFiniteValues, SaturatingValuesAreRefusedOrReported) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_nonfinite_values
+}  // namespace ochre::test::nonfinite_values_test

@@ -8,7 +8,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_ochre_bench {
+namespace ochre::test::ochre_bench_test {
 namespace {
 
 TEST(OchreBench, RoundsGiveAMedianRatioWithItsRange) {
@@ -46,4 +46,4 @@ TEST(OchreBench, MissingSceneExitsTwoNamingIt) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_ochre_bench
+}  // namespace ochre::test::ochre_bench_test

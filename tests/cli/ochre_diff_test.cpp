@@ -13,7 +13,7 @@
 #include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_ochre_diff {
+namespace ochre::test::ochre_diff_test {
 namespace {
 
 struct DiffResult {
@@ -176,4 +176,4 @@ TEST(OchreDiff, BadInputExitsTwoNamingTheProblem) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_ochre_diff
+}  // namespace ochre::test::ochre_diff_test

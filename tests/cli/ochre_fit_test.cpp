@@ -25,7 +25,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_ochre_fit {
+namespace ochre::test::ochre_fit_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -509,4 +509,4 @@ TEST(OchreFit, BadSynthesizeOptionsNameTheOption) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_ochre_fit
+}  // namespace ochre::test::ochre_fit_test

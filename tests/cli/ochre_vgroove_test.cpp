@@ -22,7 +22,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_ochre_vgroove {
+namespace ochre::test::ochre_vgroove_test {
 namespace {
 
 const char* kTool = "ochre-vgroove";
@@ -597,4 +597,4 @@ TEST(OchreVGroove, BadCompareOptionsExitWithTwoAndLeaveNoFile) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_ochre_vgroove
+}  // namespace ochre::test::ochre_vgroove_test

@@ -11,7 +11,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_output_files {
+namespace ochre::test::output_files_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -351,4 +351,4 @@ TEST(OutputFiles, ATimeLimitBeforeAnySampleKeepsTheExistingOutputs) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_output_files
+}  // namespace ochre::test::output_files_test

@@ -12,7 +12,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_photogrammetry {
+namespace ochre::test::photogrammetry_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -232,4 +232,4 @@ TEST(Photogrammetry, PigmentProjectedOntoTheMontBegoScan) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_photogrammetry
+}  // namespace ochre::test::photogrammetry_test

@@ -20,7 +20,7 @@
 #include "spectra/ciede2000.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_pigments {
+namespace ochre::test::pigments_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -147,4 +147,4 @@ TEST(Pigments, InTheInfraredIronOxidesTurnLightAndCharcoalStaysDark) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_pigments
+}  // namespace ochre::test::pigments_test

@@ -12,7 +12,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_polarization_render {
+namespace ochre::test::polarization_render_test {
 namespace {
 
 struct Rendered {
@@ -193,9 +193,9 @@ TEST(PolarizationRender, PolarizationPngIsWritten) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_polarization_render
+}  // namespace ochre::test::polarization_render_test
 
-namespace ochre::test::test_polarization_render {
+namespace ochre::test::polarization_render_test {
 namespace {
 
 // Black glass (n = 1.5, refraction absorbed) seen at Brewster's angle atan(1.5) in the x-z plane,
@@ -282,9 +282,9 @@ TEST(PolarizationRender, RotationAboutTheViewAxisRotatesS1S2ByTwiceTheAngle) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_polarization_render
+}  // namespace ochre::test::polarization_render_test
 
-namespace ochre::test::test_polarization_render {
+namespace ochre::test::polarization_render_test {
 namespace {
 
 struct V3 {
@@ -368,9 +368,9 @@ TEST(PolarizationRender, GrooveWithHorizontalSegmentsMatchesTheExactReflectance)
 }
 
 }  // namespace
-}  // namespace ochre::test::test_polarization_render
+}  // namespace ochre::test::polarization_render_test
 
-namespace ochre::test::test_polarization_render {
+namespace ochre::test::polarization_render_test {
 namespace {
 
 // With unpolarized light, an intensity film and one polarizing bounce, the first row of the Mueller
@@ -427,9 +427,9 @@ TEST(PolarizationRender, CrossedPolarizersRemoveSpecularGlare) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_polarization_render
+}  // namespace ochre::test::polarization_render_test
 
-namespace ochre::test::test_polarization_render {
+namespace ochre::test::polarization_render_test {
 namespace {
 
 // Spectral Stokes layers (Fichet et al. 2021): S0..S3 per bin; light polarized along the image x axis has
@@ -449,4 +449,4 @@ TEST(PolarizationRender, SpectralStokesLayersFollowTheSpectralLayout) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_polarization_render
+}  // namespace ochre::test::polarization_render_test

@@ -19,7 +19,7 @@
 #include "spectra/cie.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_powder_render {
+namespace ochre::test::powder_render_test {
 namespace {
 
 PowderWavelength<double> default_hematite(double lambda_nm) {
@@ -113,4 +113,4 @@ TEST(PowderRender, OppositionEffectWithTheLightAtTheCamera) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_powder_render
+}  // namespace ochre::test::powder_render_test

@@ -10,7 +10,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_regress_html {
+namespace ochre::test::regress_html_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -285,4 +285,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<BadHistory>& info) { return info.param.name; });
 
 }  // namespace
-}  // namespace ochre::test::test_regress_html
+}  // namespace ochre::test::regress_html_test

@@ -18,7 +18,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_regression {
+namespace ochre::test::regression_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -188,4 +188,4 @@ TEST(OchreRegress, BadArguments) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_regression
+}  // namespace ochre::test::regression_test

@@ -13,7 +13,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_relight {
+namespace ochre::test::relight_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -111,4 +111,4 @@ TEST(Relight, BadChangesAreRefusedAndNothingIsWritten) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_relight
+}  // namespace ochre::test::relight_test

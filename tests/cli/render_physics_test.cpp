@@ -11,7 +11,7 @@
 #include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // One Lambert sphere (radius 1) filling the centre of an orthographic view, in a constant
@@ -154,9 +154,9 @@ TEST(AnalyticDirectLighting, ConstantEnvironmentOverPlane) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // A one-sided emissive disk of radius R and radiance L, facing down at height h over a Lambert
@@ -229,9 +229,9 @@ TEST(Textures, TexturedPlaneShowsTexelColours) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // A 256x256 black/white checker seen so that one pixel covers 32x32 texels: with the ray-cone
@@ -269,9 +269,9 @@ TEST(Textures, MinifiedTextureIsFiltered) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // A spot light straight above a Lambert plane: inside the inner cone the plane shows the point-light
@@ -306,9 +306,9 @@ TEST(AnalyticDirectLighting, SpotLightCone) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // An environment map of constant value renders the same image as the constant environment of that
@@ -345,9 +345,9 @@ TEST(EnvironmentMap, ConstantMapMatchesConstantEnvironment) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test
 
-namespace ochre::test::test_render_physics {
+namespace ochre::test::render_physics_test {
 namespace {
 
 // A Catmull-Clark subdivided cube (the scene's "subdivision" key) is a closed convex-ish surface:
@@ -386,4 +386,4 @@ TEST(Subdivision, DisplacementNeedsSubdivision) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_render_physics
+}  // namespace ochre::test::render_physics_test

@@ -16,7 +16,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_resource_limits {
+namespace ochre::test::resource_limits_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -195,4 +195,4 @@ TEST(ResourceLimits, OutOfMemoryDespiteTheEstimateIsReportedAsBadInput) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_resource_limits
+}  // namespace ochre::test::resource_limits_test

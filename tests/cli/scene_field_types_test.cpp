@@ -15,7 +15,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_scene_field_types {
+namespace ochre::test::scene_field_types_test {
 namespace {
 
 std::string data_file(const char* name) {
@@ -396,4 +396,4 @@ TEST(SceneFieldTypes, DocumentedKeysAllHaveACase) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_scene_field_types
+}  // namespace ochre::test::scene_field_types_test

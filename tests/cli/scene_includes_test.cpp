@@ -9,7 +9,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_scene_includes {
+namespace ochre::test::scene_includes_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -271,4 +271,4 @@ TEST(SceneIncludesBad, BadValueFromAPresetNamesThePreset) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_scene_includes
+}  // namespace ochre::test::scene_includes_test

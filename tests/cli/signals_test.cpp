@@ -17,7 +17,7 @@
 #include "cli/process_control.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_signals {
+namespace ochre::test::signals_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -105,4 +105,4 @@ TEST(Signals, SigtermWhileOchreVGrooveDrawsTheGridPanels) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_signals
+}  // namespace ochre::test::signals_test

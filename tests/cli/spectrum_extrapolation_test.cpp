@@ -8,7 +8,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_spectrum_extrapolation {
+namespace ochre::test::spectrum_extrapolation_test {
 namespace {
 
 std::string scene_with_sky(const std::string& radiance) {
@@ -59,4 +59,4 @@ TEST(SpectrumExtrapolation, UnknownValueIsBadInputNamingTheField) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_spectrum_extrapolation
+}  // namespace ochre::test::spectrum_extrapolation_test

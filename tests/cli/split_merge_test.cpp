@@ -15,7 +15,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_split_merge {
+namespace ochre::test::split_merge_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -325,4 +325,4 @@ TEST(SplitOptions, MalformedOrOutOfRangeValuesAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_split_merge
+}  // namespace ochre::test::split_merge_test

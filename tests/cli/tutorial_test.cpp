@@ -15,7 +15,7 @@
 #include "cli/cli_runner.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_tutorial {
+namespace ochre::test::tutorial_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -121,4 +121,4 @@ TEST(Tutorial, EveryCommandOfTheCavePaintingGuideRuns) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_tutorial
+}  // namespace ochre::test::tutorial_test

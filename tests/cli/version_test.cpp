@@ -12,7 +12,7 @@
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_version {
+namespace ochre::test::version_test {
 namespace {
 
 std::string cmake_project_version() {
@@ -46,4 +46,4 @@ TEST(Version, RenderedExrRecordsTheVersionOfCMakeLists) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_version
+}  // namespace ochre::test::version_test

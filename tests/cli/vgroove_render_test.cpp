@@ -16,7 +16,7 @@
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 
-namespace ochre::test::test_vgroove_render {
+namespace ochre::test::vgroove_render_test {
 namespace {
 
 struct Vec {
@@ -206,4 +206,4 @@ TEST(VGrooveRender, HugeTiltedMirrorRendersTheEnvironmentAtEveryPixel) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_vgroove_render
+}  // namespace ochre::test::vgroove_render_test

@@ -21,7 +21,7 @@
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_input_readers {
+namespace ochre::input_readers_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,4 +152,4 @@ TEST(InputReaders, OcioConfigThatIsAFifoIsRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test_input_readers
+}  // namespace ochre::input_readers_test

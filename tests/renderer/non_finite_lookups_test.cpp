@@ -1,6 +1,6 @@
 // The renderer's lookups given NaN, +-inf and huge coordinates (docs/nodes.md, "Non-finite values"):
 // texture lookups (resident MIP levels and OIIO's TextureSystem; MipPyramid itself in
-// test_mip_pyramid.cpp) and the environment map's cells
+// mip_pyramid_test.cpp) and the environment map's cells
 // give finite results from indices inside their tables, and huge periodic coordinates read the same texel
 // as 0. Meshes and environment maps holding NaN or infinities are rejected at load, naming what is wrong.
 
@@ -20,7 +20,7 @@
 #include "support/awkward_floats.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_non_finite_lookups {
+namespace ochre::test::non_finite_lookups_test {
 namespace {
 
 using test::awkward_floats;
@@ -135,4 +135,4 @@ TEST(NonFiniteLookups, MeshesRejectNonFiniteAttributes) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_non_finite_lookups
+}  // namespace ochre::test::non_finite_lookups_test

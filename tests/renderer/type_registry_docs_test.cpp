@@ -11,7 +11,7 @@
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_type_registry_docs {
+namespace ochre::test::type_registry_docs_test {
 namespace {
 
 // The text of the section "## `heading`" up to the next "## " heading.
@@ -112,4 +112,4 @@ TEST(TypeRegistryDocs, RegistriesRefuseDuplicates) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_type_registry_docs
+}  // namespace ochre::test::type_registry_docs_test

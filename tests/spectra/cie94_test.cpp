@@ -1,11 +1,11 @@
 // The CIE 1994 colour difference (spectra/cie94.h) against values worked by hand from its definition
 // (CIE 116-1995; graphic-arts constants kL = kC = kH = 1, K1 = 0.045, K2 = 0.015). The working is in
 // the comments so each expected value can be checked with a pocket calculator.
-#include <gtest/gtest.h>
-
 #include "spectra/cie94.h"
 
-namespace ochre::test_cie94 {
+#include <gtest/gtest.h>
+
+namespace ochre::cie94_test {
 namespace {
 
 TEST(Cie94, PureLightnessDifferenceIsDeltaL) {
@@ -48,4 +48,4 @@ TEST(Cie94, TextileConstants) {
 }
 
 }  // namespace
-}  // namespace ochre::test_cie94
+}  // namespace ochre::cie94_test

@@ -1,13 +1,13 @@
 // WavelengthMemo: a value is computed once per (key, wavelengths) and thread, recomputed when either
 // changes, and keys that share a table slot never see each other's values.
 
+#include "spectra/wavelength_memo.h"
+
 #include <gtest/gtest.h>
 
 #include <thread>
 
-#include "spectra/wavelength_memo.h"
-
-namespace ochre::test_wavelength_memo {
+namespace ochre::wavelength_memo_test {
 namespace {
 
 SampledSpectrum counting(int& calls, float v) {
@@ -57,4 +57,4 @@ TEST(WavelengthMemo, EachThreadHasItsOwnTable) {
 }
 
 }  // namespace
-}  // namespace ochre::test_wavelength_memo
+}  // namespace ochre::wavelength_memo_test

@@ -19,7 +19,7 @@
 #include "cli/exr_bits.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_slurm {
+namespace ochre::test::slurm_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -158,4 +158,4 @@ TEST_F(Slurm, ACancelledTaskIsReportedByTheMergeAndResubmittedAlone) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_slurm
+}  // namespace ochre::test::slurm_test

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/lobes/fresnel.h"
-#include "polarization_test_support.h"
+#include "materials/polarization_test_support.h"
 
 namespace ochre::test::jones_test {
 namespace {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "materials/core/pi.h"
-#include "polarization_test_support.h"
+#include "materials/polarization_test_support.h"
 #include "support/spectrum_lanes.h"
 
 namespace ochre::test::mueller_test {

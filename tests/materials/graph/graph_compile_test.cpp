@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "material_test_support.h"
 #include "materials/lobes/lambert.h"
+#include "materials/material_test_support.h"
 #include "materials/nodes/node_registry.h"
 
 namespace ochre::test::graph_compile_test {

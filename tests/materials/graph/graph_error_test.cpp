@@ -10,7 +10,7 @@
 #include <fstream>
 #include <limits>
 
-#include "material_test_support.h"
+#include "materials/material_test_support.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::graph_error_test {

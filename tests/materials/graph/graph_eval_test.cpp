@@ -6,8 +6,8 @@
 
 #include <fstream>
 
-#include "material_test_support.h"
 #include "materials/lobes/lambert.h"
+#include "materials/material_test_support.h"
 #include "materials/nodes/rgb_upsampling.h"
 #include "spectra/cie.h"
 #include "spectra/named_spectra.h"

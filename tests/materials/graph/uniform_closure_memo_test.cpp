@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "material_test_support.h"
+#include "materials/material_test_support.h"
 
 namespace ochre::test::uniform_closure_memo_test {
 namespace {

@@ -8,9 +8,9 @@
 
 #include <cmath>
 
-#include "material_test_support.h"
 #include "materials/lobes/conductor.h"
 #include "materials/lobes/lambert.h"
+#include "materials/material_test_support.h"
 #include "support/spectrum_lanes.h"
 
 namespace ochre::test::closure_test {

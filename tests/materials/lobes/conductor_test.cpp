@@ -8,12 +8,12 @@
 
 #include <cstdio>
 
-#include "chi2_test.h"
-#include "material_test_support.h"
+#include "materials/chi2_test.h"
 #include "materials/core/pcg32.h"
 #include "materials/graph/graph_error.h"
 #include "materials/lobes/fresnel.h"
-#include "polarization_test_support.h"
+#include "materials/material_test_support.h"
+#include "materials/polarization_test_support.h"
 #include "spectra/named_spectra.h"
 #include "support/spectrum_lanes.h"
 

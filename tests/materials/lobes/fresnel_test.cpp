@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "materials/core/pi.h"
-#include "polarization_test_support.h"
+#include "materials/polarization_test_support.h"
 
 namespace ochre::test::fresnel_test {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "chi2_test.h"
-#include "material_test_support.h"
+#include "materials/chi2_test.h"
 #include "materials/core/sampling.h"
 #include "materials/lobes/lambert.h"
+#include "materials/material_test_support.h"
 
 namespace ochre::test::lambert_chi2_test {
 namespace {

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "chi2_test.h"
-#include "material_test_support.h"
+#include "materials/chi2_test.h"
 #include "materials/core/pcg32.h"
 #include "materials/lobes/microfacet_ggx.h"
-#include "polarization_test_support.h"
+#include "materials/material_test_support.h"
+#include "materials/polarization_test_support.h"
 
 namespace ochre::test::microfacet_test {
 namespace {

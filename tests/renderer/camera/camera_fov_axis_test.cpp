@@ -6,7 +6,7 @@
 
 #include "renderer/camera/camera.h"
 
-namespace ochre::test_camera_fov_axis {
+namespace ochre::camera_fov_axis_test {
 namespace {
 
 double degrees(double radians) {
@@ -38,4 +38,4 @@ TEST(CameraFovAxis, TheFilmEdgeSeesTheGivenAngle) {
 }
 
 }  // namespace
-}  // namespace ochre::test_camera_fov_axis
+}  // namespace ochre::camera_fov_axis_test

@@ -1,17 +1,18 @@
 // Image comparison metrics (renderer/compare/image_metrics.h) on hand-made images with exact expected values,
 // and CIEDE2000 (spectra/ciede2000.h) against the published test data of Sharma, Wu, Dalal 2005.
+#include "renderer/compare/image_metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "renderer/compare/image_metrics.h"
 #include "renderer/image/display_image.h"
 #include "spectra/ciede2000.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_image_metrics {
+namespace ochre::image_metrics_test {
 namespace {
 
 struct Ciede2000Pair {
@@ -242,4 +243,4 @@ TEST(Heatmap, PngHoldsTheRamp) {
 }
 
 }  // namespace
-}  // namespace ochre::test_image_metrics
+}  // namespace ochre::image_metrics_test

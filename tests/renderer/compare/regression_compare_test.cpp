@@ -1,15 +1,16 @@
 // The per-pixel luminance z-test of ochre-regress on synthetic estimates: Sidak level, p-values, equal
 // images pass, a 5-sigma shift in one pixel fails, the reference round trip through EXR.
+#include "renderer/compare/regression_compare.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/compare/regression_compare.h"
 #include "renderer/image/exr_reader.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_regression_compare {
+namespace ochre::regression_compare_test {
 namespace {
 
 constexpr int kSize = 64;  // 4096 pixels
@@ -142,4 +143,4 @@ TEST(RegressionCompare, PValueImageChannels) {
 }
 
 }  // namespace
-}  // namespace ochre::test_regression_compare
+}  // namespace ochre::regression_compare_test

@@ -1,9 +1,9 @@
 // Coverage of split renders: text forms, and the check that parts hold every sample of every pixel once.
-#include <gtest/gtest.h>
-
 #include "renderer/film/coverage.h"
 
-namespace ochre::test_coverage {
+#include <gtest/gtest.h>
+
+namespace ochre::coverage_test {
 namespace {
 
 TEST(RenderSplit, ParsesAndFormatsRangesRectsAndParts) {
@@ -110,4 +110,4 @@ TEST(Coverage, NamesOverlapsWithBothFiles) {
 }
 
 }  // namespace
-}  // namespace ochre::test_coverage
+}  // namespace ochre::coverage_test

@@ -1,11 +1,11 @@
 // Film accumulation: exact, order-independent sums (split sample ranges merge bit for bit).
+#include "renderer/film/film.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "renderer/film/film.h"
-
-namespace ochre::test_film {
+namespace ochre::film_test {
 namespace {
 
 TEST(Film, MeanAndVariance) {
@@ -60,9 +60,9 @@ TEST(Film, SumIsIndependentOfOrderAndSplit) {
 }
 
 }  // namespace
-}  // namespace ochre::test_film
+}  // namespace ochre::film_test
 
-namespace ochre::test_film {
+namespace ochre::film_test {
 namespace {
 
 // The accumulators round-trip exactly (partial-sum files rely on it), also negative and 128-bit values.
@@ -103,4 +103,4 @@ TEST(Film, MergeAtAnOffsetPlacesATile) {
 }
 
 }  // namespace
-}  // namespace ochre::test_film
+}  // namespace ochre::film_test

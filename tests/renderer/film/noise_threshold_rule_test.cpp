@@ -7,7 +7,7 @@
 
 #include "renderer/film/noise_threshold.h"
 
-namespace ochre::test_noise_threshold_rule {
+namespace ochre::noise_threshold_rule_test {
 namespace {
 
 // A 1x1 film holding n samples of Y alternating between a and b.
@@ -58,4 +58,4 @@ TEST(NoiseThresholdRule, ZeroVarianceHasConvergedAndNegativeMeansUseTheirMagnitu
 }
 
 }  // namespace
-}  // namespace ochre::test_noise_threshold_rule
+}  // namespace ochre::noise_threshold_rule_test

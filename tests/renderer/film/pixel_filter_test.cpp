@@ -1,13 +1,13 @@
 // Pixel filters by filter importance sampling (renderer/film/pixel_filter.h, docs/scene-format.md, film): the
 // default box leaves the sample positions as they are (images of existing scenes keep their bits), a wider
 // box spreads them uniformly, and the gaussian draws them with Mitsuba 3's windowed gaussian density.
+#include "renderer/film/pixel_filter.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/film/pixel_filter.h"
-
-namespace ochre::test_pixel_filter {
+namespace ochre::pixel_filter_test {
 namespace {
 
 TEST(PixelFilter, PixelBoxKeepsThePositionBitForBit) {
@@ -72,4 +72,4 @@ TEST(PixelFilter, BadParametersAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test_pixel_filter
+}  // namespace ochre::pixel_filter_test

@@ -1,3 +1,5 @@
+#include "renderer/geometry/accel.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -5,13 +7,12 @@
 #include <random>
 #include <thread>
 
-#include "renderer/geometry/accel.h"
 #include "renderer/shapes/mesh_import.h"
 #include "renderer/shapes/procedural_shapes.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_accel {
+namespace ochre::accel_test {
 namespace {
 
 struct Random {
@@ -481,4 +482,4 @@ TEST(Accel, ScannedMeshesBuildStatistics) {
 }
 
 }  // namespace
-}  // namespace ochre::test_accel
+}  // namespace ochre::accel_test

@@ -1,12 +1,13 @@
+#include "renderer/geometry/transform.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/geometry/transform.h"
 #include "renderer/json/json_fields.h"
 #include "spectra/input_error.h"
 
-namespace ochre::test_transform {
+namespace ochre::transform_test {
 namespace {
 
 void expect_near(const Vec3& a, const Vec3& b, float tolerance = 1e-5f) {
@@ -150,4 +151,4 @@ TEST(JsonVec3, RejectsNonFiniteAndWrongShapes) {
 }
 
 }  // namespace
-}  // namespace ochre::test_transform
+}  // namespace ochre::transform_test

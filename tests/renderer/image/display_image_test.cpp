@@ -1,6 +1,8 @@
 // Display images: exact 8-bit values of the no-OCIO sRGB path, agreement of the built-in OCIO config
 // with it, the ACES cg config's tone mapping, and errors that name the config or the file.
 
+#include "renderer/image/display_image.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,12 +10,11 @@
 #include <fstream>
 #include <optional>
 
-#include "renderer/image/display_image.h"
 #include "renderer/image/ocio_display.h"
 #include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_display_image {
+namespace ochre::display_image_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -320,4 +321,4 @@ TEST(AcesCgConfig, UntoneMappedViewAgreesWithTheNoOcioPath) {
 }
 
 }  // namespace
-}  // namespace ochre::test_display_image
+}  // namespace ochre::display_image_test

@@ -1,6 +1,8 @@
 // EXR output and input: exact round trips of float channels with arbitrary names, string attributes and
 // chromaticities; failures name the file and leave the previous file intact.
 
+#include "renderer/image/exr_writer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,11 +10,10 @@
 #include <limits>
 
 #include "renderer/image/exr_reader.h"
-#include "renderer/image/exr_writer.h"
 #include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_exr_writer {
+namespace ochre::exr_writer_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -164,4 +165,4 @@ TEST(ExrReader, MissingOrInvalidFilesAreNamed) {
 }
 
 }  // namespace
-}  // namespace ochre::test_exr_writer
+}  // namespace ochre::exr_writer_test

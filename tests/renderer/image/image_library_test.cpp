@@ -2,6 +2,8 @@
 // PNG it wrote (header, exact 8-bit codes, floats scaled to [0, 1]), and a file replaced between the header
 // and the pixels is refused rather than read into a buffer of the old size.
 
+#include "renderer/image/image_library.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,10 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/image/image_library.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_image_library {
+namespace ochre::test::image_library_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -75,4 +76,4 @@ TEST(ImageLibrary, UnreadableFilesThrowWithTheLibrarysMessage) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_image_library
+}  // namespace ochre::test::image_library_test

@@ -12,7 +12,7 @@
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_branched_paths {
+namespace ochre::branched_paths_test {
 namespace {
 
 constexpr int kSize = 32;
@@ -149,4 +149,4 @@ TEST(BranchedPaths, BranchesLeaveTheFirstNonDeltaVertex) {
 }
 
 }  // namespace
-}  // namespace ochre::test_branched_paths
+}  // namespace ochre::branched_paths_test

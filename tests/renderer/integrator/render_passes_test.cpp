@@ -1,11 +1,12 @@
 // Renders in passes stop at clean sample boundaries and sum to the bits of one render.
+#include "renderer/integrator/render_passes.h"
+
 #include <gtest/gtest.h>
 
-#include "renderer/integrator/render_passes.h"
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_render_passes {
+namespace ochre::render_passes_test {
 namespace {
 
 LoadedScene small_cornell() {
@@ -74,4 +75,4 @@ TEST(RenderPasses, CheckpointsComeAtIntervalsAndNeverAfterTheLastPass) {
 }
 
 }  // namespace
-}  // namespace ochre::test_render_passes
+}  // namespace ochre::render_passes_test

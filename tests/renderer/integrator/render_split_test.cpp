@@ -5,7 +5,7 @@
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_render_split {
+namespace ochre::render_split_test {
 namespace {
 
 TEST(RenderSplit, MergedSampleRangesEqualOneRender) {
@@ -38,4 +38,4 @@ TEST(RenderSplit, MergedSampleRangesEqualOneRender) {
 }
 
 }  // namespace
-}  // namespace ochre::test_render_split
+}  // namespace ochre::render_split_test

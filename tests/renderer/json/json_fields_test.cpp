@@ -1,16 +1,17 @@
 // The typed readers of scene JSON (renderer/json/json_fields.h) and the duplicate-key check of the JSON
 // reader (renderer/json/json_duplicate_keys.h): wrong types, fractional, wrapping and out-of-range integers,
 // numbers outside single precision and repeated keys are InputErrors naming the field.
+#include "renderer/json/json_fields.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "renderer/json/json_duplicate_keys.h"
-#include "renderer/json/json_fields.h"
 #include "spectra/input_error.h"
 #include "support/input_error_of.h"
 
-namespace ochre::test_json_fields {
+namespace ochre::json_fields_test {
 namespace {
 
 using nlohmann::json;
@@ -119,4 +120,4 @@ TEST(JsonDuplicateKeys, EqualKeysInDifferentObjectsAndCommentsAreFine) {
 }
 
 }  // namespace
-}  // namespace ochre::test_json_fields
+}  // namespace ochre::json_fields_test

@@ -1,17 +1,18 @@
 // AreaLight: one-sided emission, and the per-thread reuse of a uniform material's emission for the
 // wavelengths it was evaluated at (it must always equal a fresh evaluation of the material).
 
+#include "renderer/lights/area_light.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "materials/lobes/closure.h"
 #include "materials/lobes/lobe_arena.h"
 #include "renderer/geometry/surface_shading.h"
-#include "renderer/lights/area_light.h"
 #include "renderer/shapes/procedural_shapes.h"
 #include "support/test_material.h"
 
-namespace ochre::test_area_light {
+namespace ochre::area_light_test {
 namespace {
 
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
@@ -87,4 +88,4 @@ TEST(AreaLight, EmitterWithTheMostAndLargestLobesIsEvaluated) {
 }
 
 }  // namespace
-}  // namespace ochre::test_area_light
+}  // namespace ochre::area_light_test

@@ -2,6 +2,8 @@
 // normalisation of pdf() over the sphere, RGB texels as RGBIlluminantSpectrum, scale and rotation, the
 // scene JSON factory and its errors, and the shared HDR maps (with the distribution's build time).
 
+#include "renderer/lights/environment_light.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -15,14 +17,13 @@
 
 #include "materials/lobes/sampling_check.h"
 #include "renderer/image/exr_writer.h"
-#include "renderer/lights/environment_light.h"
 #include "renderer/lights/light_type.h"
 #include "spectra/color_space.h"
 #include "spectra/input_error.h"
 #include "spectra/rgb_spectrum.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_environment_light {
+namespace ochre::environment_light_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -392,4 +393,4 @@ TEST(EnvironmentLight, SharedMuseumExr) {
 }
 
 }  // namespace
-}  // namespace ochre::test_environment_light
+}  // namespace ochre::environment_light_test

@@ -1,17 +1,18 @@
 // The flicker of flames in a frame sequence (renderer/lights/flicker_process.h, docs/lights.md#flicker): the
 // process has the preset's statistics (mean, relative standard deviation, correlation time), every frame is
 // a pure function of (seed, stream, frame), and the flame's state follows it.
+#include "renderer/lights/flicker_process.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "renderer/lights/flame_light.h"
-#include "renderer/lights/flicker_process.h"
 #include "renderer/lights/light_presets.h"
 #include "renderer/lights/sphere_light.h"
 
-namespace ochre::test_flicker_process {
+namespace ochre::flicker_process_test {
 namespace {
 
 struct SeriesStats {
@@ -138,4 +139,4 @@ TEST(LightPresets, KnownNamesAndValues) {
 }
 
 }  // namespace
-}  // namespace ochre::test_flicker_process
+}  // namespace ochre::flicker_process_test

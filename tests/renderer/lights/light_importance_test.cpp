@@ -12,7 +12,7 @@
 #include "spectra/cie.h"
 #include "spectra/constant_spectrum.h"
 
-namespace ochre::test_light_importance {
+namespace ochre::light_importance_test {
 namespace {
 
 SpectrumPtr constant(float v) {
@@ -77,4 +77,4 @@ TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
 }
 
 }  // namespace
-}  // namespace ochre::test_light_importance
+}  // namespace ochre::light_importance_test

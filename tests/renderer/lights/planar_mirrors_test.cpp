@@ -1,14 +1,15 @@
 // Planar mirrors (renderer/lights/planar_mirrors.h): which meshes qualify, the reflection geometry, and the
 // selection of (mirror, light) pairs.
 
+#include "renderer/lights/planar_mirrors.h"
+
 #include <gtest/gtest.h>
 
 #include "renderer/geometry/transform.h"
-#include "renderer/lights/planar_mirrors.h"
 #include "renderer/shapes/procedural_shapes.h"
 #include "support/test_material.h"
 
-namespace ochre::test_planar_mirrors {
+namespace ochre::planar_mirrors_test {
 namespace {
 
 std::shared_ptr<const CompiledMaterial> material(const char* json) {
@@ -106,4 +107,4 @@ TEST(PlanarMirrors, PairsAreChosenInProportionToTheLightsPower) {
 }
 
 }  // namespace
-}  // namespace ochre::test_planar_mirrors
+}  // namespace ochre::planar_mirrors_test

@@ -8,7 +8,7 @@
 #include "renderer/lights/spot_light.h"
 #include "spectra/constant_spectrum.h"
 
-namespace ochre::test_spot_light_falloff {
+namespace ochre::spot_light_falloff_test {
 namespace {
 
 Vec3 at_angle(double degrees) {
@@ -46,4 +46,4 @@ TEST(SpotLightFalloff, PowerIsTheProfileIntegratedOverTheSphere) {
 }
 
 }  // namespace
-}  // namespace ochre::test_spot_light_falloff
+}  // namespace ochre::spot_light_falloff_test

@@ -1,17 +1,18 @@
 // check_output_files (renderer/output/output_files.h): no output replaces an input, a link, a device, a FIFO
 // or a directory, and no two outputs are one file, whatever the spelling of the paths.
 
+#include "renderer/output/output_files.h"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <fstream>
 #include <string>
 
-#include "renderer/output/output_files.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_output_files {
+namespace ochre::output_files_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -91,4 +92,4 @@ TEST(OutputFiles, LinksDevicesFifosAndDirectoriesAreRefused) {
 }
 
 }  // namespace
-}  // namespace ochre::test_output_files
+}  // namespace ochre::output_files_test

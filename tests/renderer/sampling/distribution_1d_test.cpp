@@ -2,6 +2,8 @@
 // returns (images must not change with the acceleration), including zero-weight items, u close to 1
 // and u on bucket boundaries.
 
+#include "renderer/sampling/distribution_1d.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,9 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "renderer/sampling/distribution_1d.h"
-
-namespace ochre::test_distribution_1d {
+namespace ochre::distribution_1d_test {
 namespace {
 
 // Reference: the item below the first normalised CDF entry above u, skipping zero-weight items.
@@ -99,4 +99,4 @@ TEST(Distribution1D, AllZeroWeightsStillReturnAValidIndex) {
 }
 
 }  // namespace
-}  // namespace ochre::test_distribution_1d
+}  // namespace ochre::distribution_1d_test

@@ -2,6 +2,8 @@
 // (chi-square on a grid that is not a multiple of the block size), samples inside their cell, zero-weight
 // cells and blocks never chosen, the monotone map from u to the point, and a printed micro-benchmark.
 
+#include "renderer/sampling/distribution_2d.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,9 +16,8 @@
 
 #include "materials/core/pcg32.h"
 #include "materials/lobes/sampling_check.h"
-#include "renderer/sampling/distribution_2d.h"
 
-namespace ochre::test_distribution_2d {
+namespace ochre::distribution_2d_test {
 namespace {
 
 // 4 columns x 3 rows; row 1 is empty, cell (2, 0) too.
@@ -299,4 +300,4 @@ TEST(Distribution2D, MicroBenchmark1024x512) {
 }
 
 }  // namespace
-}  // namespace ochre::test_distribution_2d
+}  // namespace ochre::distribution_2d_test

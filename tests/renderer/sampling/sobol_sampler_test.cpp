@@ -1,5 +1,7 @@
 // SobolSampler: (0,2)-net structure, uniformity of the scrambled points, purity (determinism),
 // and its error advantage over IndependentSampler on smooth and discontinuous 2D integrands.
+#include "renderer/sampling/sobol_sampler.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,9 +12,8 @@
 #include <vector>
 
 #include "renderer/sampling/sampler.h"
-#include "renderer/sampling/sobol_sampler.h"
 
-namespace ochre::test_sobol_sampler {
+namespace ochre::sobol_sampler_test {
 namespace {
 
 constexpr uint64_t kSeed = 12345;
@@ -343,4 +344,4 @@ TEST(SobolSampler, CostPerGet2dComparedWithIndependent) {
 }
 
 }  // namespace
-}  // namespace ochre::test_sobol_sampler
+}  // namespace ochre::sobol_sampler_test

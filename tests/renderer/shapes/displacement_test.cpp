@@ -2,18 +2,19 @@
 // rises by scale * (h - offset) at every vertex and its normals tilt to the ramp's slope; errors and
 // option parsing.
 
+#include "renderer/shapes/displacement.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "renderer/image/exr_writer.h"
-#include "renderer/shapes/displacement.h"
 #include "renderer/shapes/subdivision.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_displacement {
+namespace ochre::displacement_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -214,4 +215,4 @@ TEST(Displacement, ParsesProceduralRock) {
 }
 
 }  // namespace
-}  // namespace ochre::test_displacement
+}  // namespace ochre::displacement_test

@@ -1,14 +1,14 @@
 // Explicit groove plates (renderer/shapes/groove_shapes.h): tiling the facets along the grooves changes the
 // triangles, not the surface.
+#include "renderer/shapes/groove_shapes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 #include <tuple>
 
-#include "renderer/shapes/groove_shapes.h"
-
-namespace ochre::test_groove_shapes {
+namespace ochre::groove_shapes_test {
 namespace {
 
 double area(const Mesh& mesh) {
@@ -61,4 +61,4 @@ TEST(GroovePlate, TileBoundariesAreSharedExactly) {
 }
 
 }  // namespace
-}  // namespace ochre::test_groove_shapes
+}  // namespace ochre::groove_shapes_test

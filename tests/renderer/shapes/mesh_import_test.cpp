@@ -1,13 +1,14 @@
+#include "renderer/shapes/mesh_import.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdio>
 
-#include "renderer/shapes/mesh_import.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_mesh_import {
+namespace ochre::mesh_import_test {
 namespace {
 
 std::filesystem::path data(const char* name) {
@@ -182,4 +183,4 @@ TEST(MeshImport, SharedScans) {
 }
 
 }  // namespace
-}  // namespace ochre::test_mesh_import
+}  // namespace ochre::mesh_import_test

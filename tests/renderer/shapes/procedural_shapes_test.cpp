@@ -1,11 +1,12 @@
+#include "renderer/shapes/procedural_shapes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "renderer/shapes/procedural_shapes.h"
 #include "spectra/input_error.h"
 
-namespace ochre::test_procedural_shapes {
+namespace ochre::procedural_shapes_test {
 namespace {
 
 Vec3 face_normal(const Mesh& m, size_t t) {
@@ -174,4 +175,4 @@ TEST(ProceduralShapes, BadParametersAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace ochre::test_procedural_shapes
+}  // namespace ochre::procedural_shapes_test

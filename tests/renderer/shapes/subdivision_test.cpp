@@ -3,6 +3,8 @@
 // positions (Hoppe et al. 1994 mask), triangle counts, face-varying uv continuity and seams, infinitely
 // sharp creases, limit normals, option parsing and a 1-million-triangle timing.
 
+#include "renderer/shapes/subdivision.h"
+
 #include <gtest/gtest.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -15,11 +17,10 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
-#include "renderer/shapes/subdivision.h"
 #include "spectra/input_error.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_subdivision {
+namespace ochre::subdivision_test {
 namespace {
 
 using namespace OpenSubdiv;
@@ -310,4 +311,4 @@ TEST(Subdivision, OneMillionTrianglesTiming) {
 }
 
 }  // namespace
-}  // namespace ochre::test_subdivision
+}  // namespace ochre::subdivision_test

@@ -1,16 +1,17 @@
 // MipPyramid: bilinear lookups at texel centres and between them, periodic wrap, the level chosen for a
 // footprint and the blend between two levels, on hand-made pyramids with known values.
 
+#include "renderer/texture/mip_pyramid.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-#include "renderer/texture/mip_pyramid.h"
 #include "support/awkward_floats.h"
 
-namespace ochre::test_mip_pyramid {
+namespace ochre::mip_pyramid_test {
 namespace {
 
 // Level 0: 4x2 single-channel ramp 0..7 (row 0 = top); level 1: 2x1 of 10, 20; level 2: 1x1 of 100.
@@ -102,4 +103,4 @@ TEST(MipPyramid, HugeCoordinatesWrapToZero) {
 }
 
 }  // namespace
-}  // namespace ochre::test_mip_pyramid
+}  // namespace ochre::mip_pyramid_test

@@ -3,6 +3,8 @@
 // written at test time: 8-bit sRGB PNGs with the display-image writer, linear EXRs with the EXR writer,
 // 8-bit grey as binary PGM (a 12-byte header, written here).
 
+#include "renderer/texture/texture_system.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -18,11 +20,10 @@
 
 #include "renderer/image/display_image.h"
 #include "renderer/image/exr_writer.h"
-#include "renderer/texture/texture_system.h"
 #include "spectra/color_space.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_texture_system {
+namespace ochre::texture_system_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -427,4 +428,4 @@ TEST(TextureSystem, LoadsSharedPhotoTexture) {
 }
 
 }  // namespace
-}  // namespace ochre::test_texture_system
+}  // namespace ochre::texture_system_test

@@ -1,12 +1,13 @@
 // AtomicDirectory (renderer/util/atomic_directory.h): a directory appears complete or not at all, and an
 // existing one is replaced only by commit().
+#include "renderer/util/atomic_directory.h"
+
 #include <gtest/gtest.h>
 
-#include "renderer/util/atomic_directory.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test::test_atomic_directory {
+namespace ochre::test::atomic_directory_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,4 +66,4 @@ TEST(AtomicDirectory, MissingParentIsAnError) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_atomic_directory
+}  // namespace ochre::test::atomic_directory_test

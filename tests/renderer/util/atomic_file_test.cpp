@@ -1,6 +1,8 @@
 // AtomicOutput and check_output_writable: files appear complete or not at all, old files survive
 // failures, bad output paths fail before any work.
 
+#include "renderer/util/atomic_file.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,12 +11,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "renderer/util/atomic_file.h"
 #include "renderer/util/image_error.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test_atomic_file {
+namespace ochre::atomic_file_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -138,4 +139,4 @@ TEST(CheckOutputWritable, ParentThatIsAFileOrOutputThatIsADirectoryIsRejected) {
 }
 
 }  // namespace
-}  // namespace ochre::test_atomic_file
+}  // namespace ochre::atomic_file_test

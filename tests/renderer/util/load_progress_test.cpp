@@ -1,14 +1,14 @@
 // LoadProgress: silent for quick steps and when not enabled; plain progress lines once a step is slow.
 
+#include "renderer/util/load_progress.h"
+
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
 #include <sstream>
 #include <thread>
 
-#include "renderer/util/load_progress.h"
-
-namespace ochre::test_load_progress {
+namespace ochre::load_progress_test {
 namespace {
 
 struct PlainProgress {
@@ -53,4 +53,4 @@ TEST(LoadProgress, SlowStepPrintsLinesWithTheElapsedTimeSinceItBegan) {
 }
 
 }  // namespace
-}  // namespace ochre::test_load_progress
+}  // namespace ochre::load_progress_test

@@ -1,6 +1,8 @@
 // Memory estimates (renderer/util/memory_budget.h) refuse what does not fit before allocating it: the film,
 // subdivided and tessellated meshes, procedural shapes.
 
+#include "renderer/util/memory_budget.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,12 +13,11 @@
 #include "renderer/shapes/groove_shapes.h"
 #include "renderer/shapes/procedural_shapes.h"
 #include "renderer/shapes/subdivision.h"
-#include "renderer/util/memory_budget.h"
 #include "spectra/byte_size.h"
 #include "spectra/input_error.h"
 #include "support/input_error_of.h"
 
-namespace ochre::test_memory_budget {
+namespace ochre::memory_budget_test {
 namespace {
 
 // Restores the default limit when a test ends.
@@ -128,4 +129,4 @@ TEST(MemoryBudget, TriangleEstimateRefusesMoreThanThirtyTwoBitIndicesWhateverThe
 }
 
 }  // namespace
-}  // namespace ochre::test_memory_budget
+}  // namespace ochre::memory_budget_test

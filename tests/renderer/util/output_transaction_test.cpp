@@ -1,5 +1,7 @@
 // OutputTransaction: several outputs are all replaced or none is.
 
+#include "renderer/util/output_transaction.h"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -8,11 +10,10 @@
 #include <stdexcept>
 
 #include "renderer/util/image_error.h"
-#include "renderer/util/output_transaction.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test_output_transaction {
+namespace ochre::output_transaction_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -94,4 +95,4 @@ TEST(OutputTransaction, AFailedRenamePutsBackTheFilesAlreadyReplaced) {
 }
 
 }  // namespace
-}  // namespace ochre::test_output_transaction
+}  // namespace ochre::output_transaction_test

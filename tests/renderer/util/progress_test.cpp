@@ -1,5 +1,7 @@
 // Progress formatting (pure functions, fixed numbers) and the reporter's output in each style.
 
+#include "renderer/util/progress.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -9,9 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/util/progress.h"
-
-namespace ochre::test_progress {
+namespace ochre::progress_test {
 namespace {
 
 TEST(ProgressFormat, PercentRoundsDown) {
@@ -162,4 +162,4 @@ TEST_F(ProgressReporterTest, EnvironmentOverridesTheStyle) {
 }
 
 }  // namespace
-}  // namespace ochre::test_progress
+}  // namespace ochre::progress_test

@@ -2,6 +2,8 @@
 // output behind, still ends by that signal, and a signal during the renames of an OutputTransaction
 // waits until the set is complete. Each case runs in a forked child.
 
+#include "renderer/util/signal_cleanup.h"
+
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -11,10 +13,9 @@
 
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/output_transaction.h"
-#include "renderer/util/signal_cleanup.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_signal_cleanup {
+namespace ochre::signal_cleanup_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,4 +124,4 @@ TEST(SignalCleanup, ReleasedRegistrationIsNotRemoved) {
 }
 
 }  // namespace
-}  // namespace ochre::test_signal_cleanup
+}  // namespace ochre::signal_cleanup_test

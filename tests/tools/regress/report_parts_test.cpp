@@ -13,7 +13,7 @@
 #include "tools/regress/report_images.h"
 #include "tools/regress/scene_report.h"
 
-namespace ochre::test::test_report_parts {
+namespace ochre::test::report_parts_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -140,4 +140,4 @@ TEST(ReportHistory, SourcesInOrderAndOnlyTheLastRuns) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_report_parts
+}  // namespace ochre::test::report_parts_test

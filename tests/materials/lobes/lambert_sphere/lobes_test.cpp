@@ -50,7 +50,7 @@ TEST(LambertSphereLobe, SamplingMatchesPdf) {
 }
 
 // The lobe uses the tabulated constants (lambert_sphere_constants_table.h; within 2e-4 of the direct
-// ones, tests/lambert_sphere/constants_table_test.cpp).
+// ones, tests/materials/lobes/lambert_sphere/constants_table_test.cpp).
 TEST(LambertSphereLobe, EvaluatesTheModelPerWavelength) {
   const SampledSpectrum c = lanes({0.0f, 0.5f, 0.9f, 1.0f});
   const LambertSphereLobe lobe(LambertSphereVariant::kFull, c);

@@ -14,7 +14,7 @@
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
-namespace ochre::test_mitsuba_cornell_box {
+namespace ochre::mitsuba_cornell_box_test {
 namespace {
 
 constexpr int kSize = 48;
@@ -103,4 +103,4 @@ TEST(MitsubaCornellBox, SpectralBoxRendersWithinNoiseOfOchresBox) {
 }
 
 }  // namespace
-}  // namespace ochre::test_mitsuba_cornell_box
+}  // namespace ochre::mitsuba_cornell_box_test

@@ -1,6 +1,8 @@
 // Mitsuba 3 XML import (docs/mitsuba-import.md): what each element becomes in ochre's scene JSON, the
 // conventions that must agree with Mitsuba's (path depth, fov axis, uv orientation, environment map
 // orientation), and every kind of refusal naming the file, line and element.
+#include "renderer/loader/mitsuba/mitsuba_import.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -8,13 +10,12 @@
 
 #include "renderer/image/exr_writer.h"
 #include "renderer/integrator/render.h"
-#include "renderer/loader/mitsuba/mitsuba_import.h"
 #include "renderer/loader/scene_loader.h"
 #include "support/input_error_of.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
-namespace ochre::test_mitsuba_import {
+namespace ochre::mitsuba_import_test {
 namespace {
 
 using nlohmann::json;
@@ -418,4 +419,4 @@ TEST(MitsubaImport, ErrorsInIncludedFilesNameThatFile) {
 }
 
 }  // namespace
-}  // namespace ochre::test_mitsuba_import
+}  // namespace ochre::mitsuba_import_test
