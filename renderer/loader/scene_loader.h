@@ -40,6 +40,12 @@ struct LoadedScene {
 
 LoadedScene load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
 
+// The render job of a scene file only: its film, integrator and output settings (includes and the preset
+// applied; an XML scene translated) with the overrides applied, checked as load_scene checks them. No
+// camera, material, shape or light is loaded, so this is cheap whatever the scene's size: for checking a
+// command line against a scene before any work (ochre render --check-settings, docs/cli.md).
+RenderJob load_render_job(const std::filesystem::path& file, const SceneOverrides& overrides = {});
+
 // A scene given as JSON: `name` names it in every message ("scene.json", "<dict>"); relative paths in it
 // resolve against the directory of `scene_path` (scene.file).
 LoadedScene load_scene_json(const nlohmann::json& root, const std::string& name,

@@ -8,7 +8,12 @@
 #include <cmath>
 #include <map>
 
+#include "renderer/output/output_files.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/output_transaction.h"
 #include "spectra/input_error.h"
+#include "spectra/input_file.h"
 
 namespace ochre {
 
@@ -157,6 +162,44 @@ DisplayOptions recorded_display(const ExrImage& image, const std::string& file) 
     d.white_balance_xyz = xyz;
   }
   return d;
+}
+
+std::vector<std::string> write_relit(const ExrImage& relit, const DisplayOptions& display,
+                                     const std::string& exr, const std::string& png,
+                                     const InputFileLog& inputs) {
+  if (exr.empty() && png.empty()) throw InputError("relight: no output: give an EXR and/or a PNG path");
+  std::vector<std::filesystem::path> paths;
+  std::vector<std::uint8_t> pixels;
+  try {
+    for (const std::string& path : {exr, png})
+      if (!path.empty()) {
+        check_output_writable(path);
+        paths.emplace_back(path);
+      }
+    if (!png.empty()) {
+      std::vector<float> rgb(static_cast<size_t>(relit.width) * relit.height * 3);
+      for (int c = 0; c < 3; ++c) {
+        const std::vector<float>& channel = *relit.find_channel(std::string(1, "RGB"[c]));
+        for (size_t i = 0; i < channel.size(); ++i) rgb[i * 3 + c] = channel[i];
+      }
+      pixels = to_display_rgb8(relit.width, relit.height, rgb, display);
+    }
+  } catch (const ImageError& e) {
+    throw InputError(e.what());
+  }
+  check_output_files(paths, inputs);
+  OutputTransaction transaction;
+  std::vector<std::string> written;
+  if (!exr.empty()) {
+    write_exr(transaction.add(exr), relit);
+    written.push_back("wrote " + exr);
+  }
+  if (!png.empty()) {
+    write_rgb8(transaction.add(png), "png", relit.width, relit.height, pixels, "relit display image");
+    written.push_back("wrote " + png);
+  }
+  transaction.commit();
+  return written;
 }
 
 }  // namespace ochre

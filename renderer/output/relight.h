@@ -12,6 +12,8 @@
 
 namespace ochre {
 
+class InputFileLog;
+
 // One --group of `ochre relight`: the group's layers times `scale` (0: off).
 struct GroupChange {
   std::string group;
@@ -32,5 +34,13 @@ ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes,
 
 // The display transform the render recorded (ochre.display.* attributes; the defaults where absent).
 DisplayOptions recorded_display(const ExrImage& image, const std::string& file);
+
+// Writes the relit image: the EXR `exr` and the display image `png` through `display` (either may be
+// empty), all or nothing. Checks first that each output can be written and replaces none of `inputs`
+// (InputError naming it; the display transform is built before anything is written). Returns the lines
+// that report what was written.
+std::vector<std::string> write_relit(const ExrImage& relit, const DisplayOptions& display,
+                                     const std::string& exr, const std::string& png,
+                                     const InputFileLog& inputs);
 
 }  // namespace ochre

@@ -136,8 +136,9 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
 }
 
 // A resumed render keeps the checkpoint interval it was started with (recorded in the checkpoint) unless
-// its command line gives another.
-TEST(Checkpoint, ResumeKeepsTheCheckpointInterval) {
+// its command line gives another. The rendering seconds a checkpoint records add up over the resumes, and
+// `ochre info` estimates the time left from them.
+TEST(Checkpoint, ResumeKeepsTheCheckpointIntervalAndAddsUpTheRenderingTime) {
   const fs::path dir = scratch_dir();
   const std::string args =
       "render " + scene("cornell-box.json") + " --resolution 32x16 --spp 100000 -o out.exr -q";
@@ -147,10 +148,27 @@ TEST(Checkpoint, ResumeKeepsTheCheckpointInterval) {
     return read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.checkpoint.interval");
   };
   EXPECT_EQ(interval(), "5400s");
+  auto seconds = [&] {
+    return std::stod(read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.checkpoint.seconds"));
+  };
+  const double first = seconds();
+  const std::string held = read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.coverage");
+  EXPECT_GT(first, 0.0);
+  const CommandResult info = run_ochre("info out.checkpoint.exr", dir);
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_TRUE(contains(info.output, "out.checkpoint.exr: checkpoint, region 0,0,32,16 of 32x16, samples 0:"))
+      << info.output;
+  EXPECT_TRUE(contains(info.output, " of 0:100000 (")) << info.output;
+  EXPECT_TRUE(contains(info.output, " s of rendering, about ")) << info.output;
   ASSERT_EQ(
       stop_at_a_time_limit("render --resume out.checkpoint.exr -q", dir, "out.checkpoint.exr", 1).exit_code,
       3);
   EXPECT_EQ(interval(), "5400s");
+  if (read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.coverage") != held) {
+    EXPECT_GT(seconds(), first) << "the seconds of the first run and of the resumed one";
+  } else {  // the resumed run's limit passed before a sample finished: the checkpoint was kept as it was
+    EXPECT_EQ(seconds(), first);
+  }
   ASSERT_EQ(stop_at_a_time_limit("render --resume out.checkpoint.exr -q --checkpoint-interval 2m", dir,
                                  "out.checkpoint.exr", 1)
                 .exit_code,

@@ -86,12 +86,16 @@ def base_commands():
 def run(bin_dir, program, args, cwd, timeout=None):
     timeout = TIMEOUT if timeout is None else timeout
     env = dict(os.environ, OCHRE_PROGRESS="off", OCHRE_CACHE_DIR=os.path.join(cwd, ".cache"))
-    try:
-        r = subprocess.run([os.path.join(bin_dir, program)] + args, cwd=cwd, env=env, capture_output=True,
-                           timeout=timeout, stdin=subprocess.DEVNULL)
-        return r.returncode, (r.stdout + r.stderr).decode("utf-8", "replace")
-    except subprocess.TimeoutExpired:
-        return None, "timeout"
+    for attempt in range(5):
+        try:
+            r = subprocess.run([os.path.join(bin_dir, program)] + args, cwd=cwd, env=env, capture_output=True,
+                               timeout=timeout, stdin=subprocess.DEVNULL)
+            return r.returncode, (r.stdout + r.stderr).decode("utf-8", "replace")
+        except subprocess.TimeoutExpired:
+            return None, "timeout"
+        except OSError:  # the program being rebuilt meanwhile (a long run beside a build): try again
+            time.sleep(2.0)
+    raise RuntimeError(f"cannot run {program}")
 
 
 def prepare(bin_dir, root):

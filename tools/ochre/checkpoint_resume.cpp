@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 
 #include "renderer/scene/render_settings.h"
 #include "spectra/input_error.h"
@@ -63,13 +64,26 @@ T number(const PartialSumsFile& checkpoint, const std::string& name) {
 }  // namespace
 
 void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
-                          const OutputSettings& out, std::optional<double> interval) {
+                          const OutputSettings& out, std::optional<double> interval,
+                          std::optional<double> seconds) {
   header.notes["ochre.checkpoint.target"] = format_sample_range(part.samples);
   header.notes["ochre.checkpoint.partialSums"] = std::string(split ? "1" : "0");
   header.notes["ochre.checkpoint.exr"] = absolute_or_empty(out.exr);
   header.notes["ochre.checkpoint.png"] = absolute_or_empty(out.png);
   header.notes["ochre.checkpoint.polarizationPng"] = absolute_or_empty(out.polarization_png);
   header.notes["ochre.checkpoint.interval"] = interval ? fmt::format("{}s", *interval) : std::string();
+  if (seconds) header.notes["ochre.checkpoint.seconds"] = fmt::format("{:.3f}", *seconds);
+}
+
+std::optional<double> recorded_seconds(const PartialSumsHeader& header) {
+  const auto it = header.notes.find("ochre.checkpoint.seconds");
+  if (it == header.notes.end()) return std::nullopt;
+  const std::string& text = it->second;
+  double seconds = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) || seconds < 0.0)
+    return std::nullopt;
+  return seconds;
 }
 
 RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile& checkpoint) {

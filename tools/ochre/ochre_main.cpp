@@ -12,6 +12,7 @@
 #include "tools/cli/duration.h"
 #include "tools/cli/program.h"
 #include "tools/ochre/frame_options.h"
+#include "tools/ochre/info_command.h"
 #include "tools/ochre/merge_command.h"
 #include "tools/ochre/relight_command.h"
 #include "tools/ochre/render_command.h"
@@ -169,6 +170,10 @@ int ochre_command(int argc, char** argv) {
   auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds")
                          ->check(ochre::non_empty_path());
   render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
+  auto* check_opt = render->add_flag(
+      "--check-settings", cmd.check_settings,
+      "Check the options against the scene's settings (no geometry, materials or lights are loaded), "
+      "print what would be rendered; render and write nothing");
 
   ochre::MergeCommand merge_cmd;
   CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
@@ -205,7 +210,15 @@ int ochre_command(int argc, char** argv) {
   DisplayOverrides relight_display;
   relight_display.add_to(relight);
 
+  ochre::InfoCommand info_cmd;
+  CLI::App* info = app.add_subcommand(
+      "info",
+      "What partial-sum files and checkpoints hold: frame, pixels, samples, time left (headers only)");
+  info->add_option("parts", info_cmd.parts, "Partial-sum files or checkpoints")->required();
+
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
+
+  if (app.got_subcommand(info)) return ochre::run_info(info_cmd);
 
   if (app.got_subcommand(relight)) {
     relight_display.apply(relight_cmd);
@@ -224,6 +237,9 @@ int ochre_command(int argc, char** argv) {
       throw ochre::InputError(
           option->get_name() +
           ": expected a duration such as 90, 90s, 10m, 1h30m or 1.5h (at most a year), got '" + *text + "'");
+  if (*check_opt && *resume_opt)
+    throw ochre::InputError(
+        "--check-settings: not with --resume (a resumed render takes its settings from the checkpoint)");
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed :

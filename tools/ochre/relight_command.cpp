@@ -5,11 +5,7 @@
 #include <iostream>
 
 #include "renderer/image/exr_reader.h"
-#include "renderer/output/output_files.h"
 #include "renderer/output/relight.h"
-#include "renderer/util/atomic_file.h"
-#include "renderer/util/image_error.h"
-#include "renderer/util/output_transaction.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
@@ -35,41 +31,11 @@ int run_relight(const RelightCommand& command) {
   if (command.view) display.view = *command.view;
   if (command.exposure) display.exposure_stops = *command.exposure;
 
-  std::vector<std::filesystem::path> paths;
-  try {
-    for (const std::string& path : {command.exr, command.png})
-      if (!path.empty()) {
-        check_output_writable(path);
-        paths.emplace_back(path);
-      }
-  } catch (const ImageError& e) {
-    throw InputError(e.what());
-  }
-  check_output_files(paths, inputs);
-  std::vector<float> rgb(static_cast<size_t>(relit.width) * relit.height * 3);
-  for (int c = 0; c < 3; ++c) {
-    const std::vector<float>& channel = *relit.find_channel(std::string(1, "RGB"[c]));
-    for (size_t i = 0; i < channel.size(); ++i) rgb[i * 3 + c] = channel[i];
-  }
-  // The display transform is built before anything is written: a bad config or view is bad input.
-  std::vector<std::uint8_t> png;
-  if (!command.png.empty()) {
-    try {
-      png = to_display_rgb8(relit.width, relit.height, rgb, display);
-    } catch (const ImageError& e) {
-      throw InputError(e.what());
-    }
-  }
-  OutputTransaction transaction;
-  if (!command.exr.empty()) write_exr(transaction.add(command.exr), relit);
-  if (!command.png.empty())
-    write_rgb8(transaction.add(command.png), "png", relit.width, relit.height, png, "relit display image");
-  transaction.commit();
+  const std::vector<std::string> written = write_relit(relit, display, command.exr, command.png, inputs);
   if (!command.quiet) {
     std::cerr << fmt::format("ochre: relit {}: {}\n", command.render,
                              relit.string_attributes.at("ochre.relight"));
-    for (const std::string& path : {command.exr, command.png})
-      if (!path.empty()) std::cerr << "ochre: wrote " << path << "\n";
+    for (const std::string& line : written) std::cerr << "ochre: " << line << "\n";
   }
   return 0;
 }

@@ -234,12 +234,20 @@ struct Checkpointing {
   bool preview = false;            // refresh the display PNG with each checkpoint
   std::optional<double> interval;  // --checkpoint-interval, recorded for --resume
   OutputSettings out;
+  // The rendering seconds of the samples a resumed checkpoint held (0 for a new render; none when it did not
+  // record them): the checkpoints record the total.
+  std::optional<double> earlier_seconds = 0.0;
   uint32_t written_at = UINT32_MAX;  // the sample the last checkpoint written ends at
+
+  // The rendering seconds of the samples held after this run's `stats`.
+  std::optional<double> seconds(const RenderStats& stats) const {
+    return earlier_seconds ? std::optional<double>(*earlier_seconds + stats.seconds) : std::nullopt;
+  }
 
   // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
   void write(const Film& film, uint32_t next, const RenderStats& stats) {
     PartialSumsHeader header = partial_header(*scene, *job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, split, out, interval);
+    add_checkpoint_notes(header, part, split, out, interval, seconds(stats));
     OutputTransaction transaction;
     write_partial_sums(transaction.add(path), header, film);
     if (preview && !out.png.empty()) {
@@ -253,7 +261,29 @@ struct Checkpointing {
   }
 };
 
+// --check-settings: what the render would be, from the scene's settings alone (docs/cli.md). The checks are
+// those of a render before its first sample that need no geometry: the options and settings (the split
+// against the resolution and samples, a noise threshold against --part).
+int check_settings_only(const RenderCommand& command) {
+  const RenderJob job = load_render_job(command.scene, command.overrides);
+  const RenderSettings& s = job.settings;
+  const RenderPart part = select_part(command, s);
+  std::string line = fmt::format("{}: {}x{}, {} spp, noise threshold {}", command.scene, s.width, s.height,
+                                 s.spp, s.noise_threshold);
+  if (command.still_frame)
+    line += fmt::format(", frame {} at {} fps", *command.still_frame, command.fps);
+  else if (command.frames)
+    line += fmt::format(", frames {} to {} at {} fps", command.first_frame,
+                        command.first_frame + *command.frames - 1, command.fps);
+  if (command.split())
+    line += fmt::format(", samples {} of region {} (partial sums)", format_sample_range(part.samples),
+                        format_pixel_rect(part.rect));
+  std::cout << line << "\n";
+  return 0;
+}
+
 int render_scene(const RenderCommand& given, Phase& phase) {
+  if (given.check_settings) return check_settings_only(given);
   const auto start = std::chrono::steady_clock::now();
   // A resumed render takes its scene, settings and outputs from the checkpoint.
   std::optional<PartialSumsFile> resumed;
@@ -297,7 +327,8 @@ int render_scene(const RenderCommand& given, Phase& phase) {
       command.split(),
       command.preview,
       command.checkpoint_interval,
-      out};
+      out,
+      resumed ? recorded_seconds(resumed->header()) : std::optional<double>(0.0)};
   std::vector<std::filesystem::path> paths;
   for (const std::string& path : output_paths(out)) paths.emplace_back(path);
   if (command.checkpointing()) {
@@ -400,7 +431,8 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   if (stop == PassStop::deadline) {
     // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
     PartialSumsHeader header = partial_header(*scene, job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, command.split(), out, command.checkpoint_interval);
+    add_checkpoint_notes(header, part, command.split(), out, command.checkpoint_interval,
+                         checkpoints.seconds(stats));
     const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(checkpoints.path), header, film);
     written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {}, {:.2f} s)",

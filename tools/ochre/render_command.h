@@ -56,6 +56,9 @@ struct RenderCommand {
   // has the numbered names from its checkpoint).
   std::optional<std::uint64_t> still_frame;
   bool number_outputs = false;
+  // --check-settings: check the command line against the scene's settings (load_render_job: no geometry,
+  // materials or lights), print what would be rendered, render and write nothing (docs/cli.md).
+  bool check_settings = false;
 };
 
 int run_render(const RenderCommand& command);

@@ -234,6 +234,7 @@ class PyScene {
     layers.spectral_bins = o.spectral_bins;
     layers.spectral_min = o.spectral_range.first;
     layers.spectral_max = o.spectral_range.second;
+    layers.light_groups = scene.light_groups;  // docs/lights.md, "Light groups"
     auto film = std::make_unique<Film>(s.width, s.height, layers);
 
     const uint64_t total = uint64_t(s.width) * s.height * s.spp;

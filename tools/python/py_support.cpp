@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "materials/graph/graph_error.h"
+#include "renderer/image/exr_writer.h"
 #include "renderer/util/image_error.h"
 #include "spectra/input_error.h"
 
@@ -100,6 +101,15 @@ py::array_t<float> float_array(const std::vector<float>& values, const std::vect
   py::array_t<float> a(shape);
   std::copy(values.begin(), values.end(), a.mutable_data());
   return a;
+}
+
+py::tuple exr_to_python(const ExrImage& image) {
+  py::dict channels;
+  for (const auto& [name, values] : image.channels)
+    channels[py::str(name)] = float_array(values, {image.height, image.width});
+  py::dict attributes;
+  for (const auto& [key, value] : image.string_attributes) attributes[py::str(key)] = value;
+  return py::make_tuple(channels, attributes);
 }
 
 void register_errors(py::module_& m) {
