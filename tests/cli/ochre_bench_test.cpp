@@ -1,5 +1,6 @@
 // ochre-bench end to end: the ratio against raw Embree over interleaved rounds, with its median and range,
-// and bad input (a missing scene) as exit 2 naming the file. Timings are printed, never asserted.
+// the micro-benchmarks (--micro), and bad input (a missing scene, files or options --micro does not take) as
+// exit 2 naming what is wrong. Timings are printed, never asserted.
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,36 @@ TEST(OchreBench, MissingSceneExitsTwoNamingIt) {
   const CommandResult r = run_tool("ochre-bench", "no_such_scene.json --seconds 0.05", scratch_dir());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("no_such_scene.json"), std::string::npos) << r.output;
+}
+
+TEST(OchreBench, EveryMicroBenchmarkPrintsItsFigures) {
+  const std::string mesh = (source_dir() / "tests" / "data" / "octahedron.obj").string();
+  const CommandResult r =
+      run_tool("ochre-bench", "--micro all \"" + mesh + "\" --repeat 1 --threads 1", {}, true);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* figure :
+       {"  sobol        ", "ns per get_2d", "  one wavelength, exact", "exact table: 97500 bytes",
+        "1024000 triangles", "octahedron.obj: 1 mesh(es), 8 triangles", "BVH build ",
+        "incoherent rays, 1 thread: "})
+    EXPECT_NE(r.output.find(figure), std::string::npos) << figure << "\n" << r.output;
+}
+
+TEST(OchreBench, MicroRefusesWhatItDoesNotTake) {
+  const std::string scene = (source_dir() / "scenes" / "furnace" / "furnace.json").string();
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"--micro sobol \"" + scene + "\"", "--micro sobol reads no file"},
+      {"--micro nope", "nope not in {sobol,lambert-sphere,subdivision,bvh-build,all}"},
+      {"--micro sobol --seconds 1", "--seconds excludes --micro"},
+      {"--micro sobol --modes", "--modes excludes --micro"},
+      {"--micro bvh-build no_such_mesh.obj", "no_such_mesh.obj"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r = run_tool("ochre-bench", c.arguments, scratch_dir());
+    EXPECT_EQ(r.exit_code, 2) << c.arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.arguments << "\n" << r.output;
+  }
 }
 
 }  // namespace

@@ -79,6 +79,7 @@ def base_commands():
         ("ochre-fit", ["powder", "--synthesize", "synthetic.csv"]),
         ("ochre-halfspace", ["--c", "0.5", "--mu", "0.5", "--phi", "0", "--paths", "200", "--output", "h.csv"]),
         ("ochre-bench", ["scene.json", "--spp", "1", "--seconds", "0.05", "--repeat", "1", "--threads", "1"]),
+        ("ochre-bench", ["--micro", "bvh-build", "scene.json", "--repeat", "1", "--threads", "1"]),
     ]
 
 

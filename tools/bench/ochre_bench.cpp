@@ -1,13 +1,16 @@
 // ochre-bench: renderer throughput against raw Embree on the same triangles (docs/tools.md).
 //   ochre-bench [SCENE.json ...] [--spp N] [--threads N] [--seconds S] [--repeat N]
 //   ochre-bench --modes [SCENE.json ...] [--repeat N]
+//   ochre-bench --micro NAME [FILE ...] [--repeat N] [--threads N]
 // For each scene: renders it (samples/s, rays/s counting intersect and occlusion queries), then traces
 // random incoherent rays through an Embree BVH of the same meshes, built with the renderer's options (robust,
 // high quality) and with Embree's defaults (tools/bench/raw_embree_benchmark.h)
 // and prints renderer rays/s / raw rays/s: the median and range over N interleaved rounds. With --modes:
 // renders each scene in polarization modes off, intensity and stokes (interleaved, N times), prints the
 // median time per sample of each as a ratio to off (goals: intensity <= 1.3x, stokes <= 2x) and the
-// difference mode off makes to the mean luminance. Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad
+// difference mode off makes to the mean luminance. With --micro: the micro-benchmarks of one part each
+// (tools/bench/micro_benchmarks.h): sobol, lambert-sphere, subdivision, bvh-build (of FILEs: meshes or
+// scenes), or all of them. Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad
 // input or usage, 1 = internal error.
 #include <fmt/format.h>
 
@@ -27,6 +30,7 @@
 #include "renderer/scene/polarization_mode.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
+#include "tools/bench/micro_benchmarks.h"
 #include "tools/bench/raw_embree_benchmark.h"
 #include "tools/cli/command_line.h"
 #include "tools/cli/program.h"
@@ -46,6 +50,7 @@ struct BenchCommand {
   double seconds = 2.0;
   uint64_t seed = 1;
   bool modes = false;
+  std::vector<std::string> micro;
   int repeat = 3;
 };
 
@@ -96,14 +101,8 @@ void report_traversal_share(ochre::Scene& scene, const ochre::RenderJob& job,
       1e9 * raw.threads / raw.rays_per_second(), 100.0 * ceiling);
 }
 
-// Median and range of a set of measurements.
-struct Spread {
-  double median = 0, min = 0, max = 0;
-};
-Spread spread(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return {v[v.size() / 2], v.front(), v.back()};
-}
+using ochre::bench::Spread;
+using ochre::bench::spread;
 
 // Returns the median renderer / raw ratio of one scene over --repeat rounds. Each round renders the scene
 // and then traces the raw rays, so a change in the machine's load hits both halves of its ratio.
@@ -207,6 +206,29 @@ void bench_modes(const BenchCommand& cmd, const std::string& file) {
              100.0 * (luminance[0] / luminance[1] - 1.0));
 }
 
+// --micro: the named micro-benchmarks, in the order given (all: every one). Only bvh-build reads files
+// (default: the default scenes).
+int micro_command(const BenchCommand& cmd) {
+  std::vector<std::string> names;
+  for (const std::string& name : cmd.micro)
+    if (name == "all")
+      names.insert(names.end(), ochre::bench::micro_benchmark_names().begin(),
+                   ochre::bench::micro_benchmark_names().end());
+    else
+      names.push_back(name);
+  const bool reads_files = std::find(names.begin(), names.end(), "bvh-build") != names.end();
+  if (!cmd.scenes.empty() && !reads_files)
+    throw ochre::InputError("--micro " + names.front() +
+                            " reads no file (only --micro bvh-build measures the meshes or scenes given)");
+  ochre::bench::MicroOptions options;
+  options.repeat = cmd.repeat;
+  options.threads = cmd.threads;
+  options.files = cmd.scenes.empty() ? default_scenes() : cmd.scenes;
+  if (reads_files) ochre::install_signal_cleanup();  // loading a textured scene writes converted textures
+  for (const std::string& name : names) ochre::bench::run_micro_benchmark(name, options);
+  return ochre::kExitDone;
+}
+
 int bench_command(int argc, char** argv) {
   CLI::App app{"ochre-bench: renderer rays/s against raw Embree rays/s on the same geometry"};
   app.set_version_flag("--version", "ochre-bench " OCHRE_VERSION);
@@ -215,18 +237,36 @@ int bench_command(int argc, char** argv) {
   app.add_option("scenes", cmd.scenes, "Scenes (JSON; default scenes/default and scenes/cornell-box)");
   auto* spp_opt =
       app.add_option("--spp", spp, "Samples per pixel (default: the scene's)")->check(CLI::PositiveNumber);
-  app.add_option("--threads", cmd.threads, "Threads for both (default: all cores)")
+  app.add_option(
+         "--threads", cmd.threads,
+         "Threads of the render and the raw Embree run, or of the BVH build with --micro (default: all "
+         "cores)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--seconds", cmd.seconds, "Minimum duration of the raw Embree run (default 2)")
-      ->check(ochre::finite_positive());
-  app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays")->check(ochre::unsigned_64_check());
-  app.add_flag("--modes", cmd.modes, "Time the polarization modes off / intensity / stokes instead");
+  auto* seconds_opt =
+      app.add_option("--seconds", cmd.seconds, "Minimum duration of the raw Embree run (default 2)")
+          ->check(ochre::finite_positive());
+  auto* seed_opt =
+      app.add_option("--seed", cmd.seed, "Seed of the raw Embree rays")->check(ochre::unsigned_64_check());
+  auto* modes_opt =
+      app.add_flag("--modes", cmd.modes, "Time the polarization modes off / intensity / stokes instead");
+  std::vector<std::string> micro_names = ochre::bench::micro_benchmark_names();
+  micro_names.push_back("all");
+  app.add_option("--micro", cmd.micro,
+                 "Run a micro-benchmark instead: sobol, lambert-sphere, subdivision, bvh-build (of the files "
+                 "given: meshes or scenes) or all; may be repeated")
+      ->allow_extra_args(false)  // one name per --micro: the files after it stay files
+      ->check(CLI::IsMember(micro_names))
+      ->excludes(modes_opt)
+      ->excludes(spp_opt)
+      ->excludes(seconds_opt)
+      ->excludes(seed_opt);
   app.add_option("--repeat", cmd.repeat,
-                 "Rounds per scene (render + raw Embree), or per mode with --modes; medians are reported "
-                 "(default 3)")
+                 "Rounds per scene (render + raw Embree), per mode with --modes, per figure with --micro; "
+                 "medians are reported (default 3)")
       ->check(CLI::PositiveNumber);
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   if (*spp_opt) cmd.spp = spp;
+  if (!cmd.micro.empty()) return micro_command(cmd);
   if (cmd.scenes.empty())
     cmd.scenes = cmd.modes ? std::vector<std::string>{polarized_scene()} : default_scenes();
   ochre::install_signal_cleanup();  // loading a textured scene writes converted textures to the cache

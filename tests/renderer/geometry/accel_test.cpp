@@ -3,14 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdio>
 #include <random>
 #include <thread>
 
-#include "renderer/shapes/mesh_import.h"
 #include "renderer/shapes/procedural_shapes.h"
 #include "spectra/input_error.h"
-#include "support/test_paths.h"
 
 namespace ochre::accel_test {
 namespace {
@@ -437,48 +434,6 @@ TEST(Accel, ConcurrentQueriesMatchSerialOnes) {
   tb.join();
   EXPECT_EQ(a, serial);
   EXPECT_EQ(b, serial);
-}
-
-// Build statistics on the scanned meshes (printed, never asserted: tests do not time).
-void report_build(const char* name, const Mesh& mesh) {
-  std::vector<Mesh> meshes;
-  meshes.push_back(mesh);
-  meshes[0].reserve_vertex_padding();
-  const Accel accel(meshes);
-  EXPECT_EQ(accel.copied_vertex_buffers(), 0u);
-  const double triangles = static_cast<double>(mesh.triangle_count());
-  // Incoherent rays through the bounding box, as a throughput sanity figure.
-  Vec3 lo = mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) lo = min(lo, p), hi = max(hi, p);
-  const Vec3 centre = (lo + hi) * 0.5f;
-  const float radius = 0.5f * length(hi - lo);
-  Random random;
-  std::vector<Ray> rays(200000);
-  for (Ray& ray : rays) {
-    const Vec3 origin = centre + random.direction() * (2 * radius);
-    ray = {origin, centre + random.in_ball(0.5f * radius) - origin};
-  }
-  const int ray_count = static_cast<int>(rays.size());
-  int hits = 0;
-  const auto start = std::chrono::steady_clock::now();
-  for (const Ray& ray : rays) hits += accel.intersect(ray).has_value();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf(
-      "[ info ] %s: %.0f triangles, BVH build %.3f s (%.2f M tri/s), memory %.1f MB = %.1f bytes/triangle "
-      "(incl. %.1f of shared mesh arrays), %.2f Mrays/s incoherent (1 thread, %d%% hit)\n",
-      name, triangles, accel.build_seconds(), triangles / accel.build_seconds() * 1e-6,
-      accel.memory_bytes() * 1e-6, accel.memory_bytes() / triangles,
-      (mesh.positions.size() * 12.0 + mesh.indices.size() * 4.0) / triangles, ray_count / seconds * 1e-6,
-      100 * hits / ray_count);
-  EXPECT_GT(hits, ray_count / 4);
-}
-
-TEST(Accel, ScannedMeshesBuildStatistics) {
-  OCHRE_REQUIRE_SHARED();
-  report_build("stanford-bunny.obj",
-               import_mesh(test::shared_dir() / "assets/meshes/stanford-bunny.obj", Transform::identity()));
-  report_build("gargo.ply",
-               import_mesh(test::shared_dir() / "assets/meshes/3dhop/gargo.ply", Transform::identity()));
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -316,31 +315,6 @@ TEST(SobolSampler, PaddedDimensionsAreNotCorrelated) {
       EXPECT_LT(sobol, 1.6 * monte_carlo) << c.name << " N=" << n;
     }
   }
-}
-
-TEST(SobolSampler, CostPerGet2dComparedWithIndependent) {
-  // Informative only: printed, not asserted (timings depend on the machine load).
-  constexpr int kSamples = 1 << 20;
-  constexpr uint32_t kDims[4] = {1, 7, 15, 23};
-  auto time_ns = [&](auto make) {
-    double sink = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < kSamples; ++i) {
-      const auto s = make(static_cast<uint64_t>(i));
-      for (uint32_t d : kDims) {
-        const Vec2 v = s.get_2d(d);
-        sink += v.x + v.y;
-      }
-    }
-    const double ns =
-        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_GT(sink, 0);
-    return ns / (kSamples * 4.0);
-  };
-  const double sobol = time_ns([](uint64_t i) { return SobolSampler(kSeed, i >> 6, i); });
-  const double indep = time_ns([](uint64_t i) { return IndependentSampler(kSeed, i >> 6, i); });
-  std::printf("[ sobol ] get_2d cost (incl. 1/4 constructor): sobol %.1f ns, independent %.1f ns\n", sobol,
-              indep);
 }
 
 }  // namespace
