@@ -43,27 +43,12 @@ Prepared prepare_spectrum(const PrepareArgs& args) {
   return p;
 }
 
-// Outside the CSV table: hold the end values or give 0 (docs/scene-format.md, 'Spectra').
-ParamDef extrapolate_param() {
-  ParamDef p = string_param(
-      "extrapolate",
-      "outside the CSV table: \"clamp\" (default) holds the end values, \"zero\" gives 0 (file only)");
-  p.choices = {"clamp", "zero"};
-  return p;
-}
-
 }  // namespace
 
 NodeDefinition spectrum_node() {
   NodeDefinition d;
   d.name = "spectrum";
   d.doc = "A spectrum from a CSV file or by name, times a scale. Give exactly one of file and name.";
-  ParamDef scale;
-  scale.name = "scale";
-  scale.kind = ParamKind::kFloat;
-  scale.default_value = 1.0;
-  scale.min = 0.0;
-  scale.doc = "factor applied to every value (>= 0)";
   d.params = {string_param("file", "CSV file (wavelength in nm, then values), relative to the scene file"),
               string_param("name",
                            "named spectrum: CIE illuminants (\"D65\", \"A\", \"E\", ...) and others of "
@@ -71,7 +56,11 @@ NodeDefinition spectrum_node() {
               string_param("column",
                            "value column of the CSV file, by header name (default: the first after "
                            "the wavelength)"),
-              extrapolate_param(), scale};
+              // Outside the CSV table: hold the end values or give 0 (docs/scene-format.md, 'Spectra').
+              optional_choice_param("extrapolate", {"clamp", "zero"},
+                                    "outside the CSV table: \"clamp\" (default) holds the end values, "
+                                    "\"zero\" gives 0 (file only)"),
+              number_param("scale", 1.0, 0.0, std::nullopt, "factor applied to every value (>= 0)")};
   d.outputs = {{"spectrum", SocketType::kSpectrum, false, "the spectrum"}};
   d.prepare = prepare_spectrum;
   return d;

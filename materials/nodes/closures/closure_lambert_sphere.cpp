@@ -80,22 +80,13 @@ NodeDefinition lambert_sphere_node() {
   d.doc =
       "Lambertian-sphere BRDF (d'Eon): a half space of sparse white-Lambertian spheres; strong "
       "backscattering, saturated colours. A depolarizer.";
-  SocketDef kd;
-  kd.name = "kd";
-  kd.type = SocketType::kSpectrum;
-  kd.default_value = NodeValue::of_float(0.8f);
-  kd.role = SpectralRole::kReflectance;
-  kd.min = 0.0f;
-  kd.max = 1.0f;
-  kd.clamped = true;
-  kd.doc = "bond (spherical) albedo, the diffuse colour; mapped to the particle albedo by `mapping`";
-  SocketDef c;
-  c.name = "particle_albedo";
-  c.type = SocketType::kSpectrum;
-  c.default_value = NodeValue::of_float(-1.0f);
-  c.role = SpectralRole::kReflectance;
-  c.doc = "albedo c of the spheres; when >= 0 it is used instead of kd (default -1: use kd)";
-  d.inputs = {kd, c};
+  d.inputs = {
+      reflectance_input("kd", 0.8f, clamped_range(0.0f, 1.0f),
+                        "bond (spherical) albedo, the diffuse colour; mapped to the particle albedo by "
+                        "`mapping`"),
+      reflectance_input("particle_albedo", -1.0f, kAnyValue,
+                        "albedo c of the spheres; when >= 0 it is used instead of kd (default -1: use "
+                        "kd)")};
   d.params = {choice_param("variant", "full", {"full", "fast", "exact"},
                            "full: exact single + corrected fitted multiple scattering; fast: Eq 48 (not "
                            "energy conserving); exact: tabulated converged half-space solution"),

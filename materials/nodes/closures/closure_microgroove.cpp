@@ -78,13 +78,6 @@ NodeDefinition microgroove_node() {
       "bottom, rounded, or a mix of V angles) traced facet by facet with a Fresnel reflection at each; a "
       "delta BSDF, polarizing in the rigorous and sp models.";
   d.inputs = groove_facet_and_direction_inputs();
-  ParamDef segments;
-  segments.name = "segments";
-  segments.kind = ParamKind::kInt;
-  segments.default_value = 32;
-  segments.min = 2;
-  segments.max = GrooveProfile::kMaxSegments;
-  segments.doc = "rounded: chords approximating the arc";
   d.params = {
       choice_param("profile", "v", {"v", "asymmetric_v", "flat_bottom", "rounded", "v_mix"},
                    "cross-section of one groove"),
@@ -94,7 +87,7 @@ NodeDefinition microgroove_node() {
       number_param("slope1", 45.0, 1.0, 89.0, "asymmetric_v: slope of the left facet in degrees"),
       number_param("slope2", 45.0, 1.0, 89.0, "asymmetric_v: slope of the right facet in degrees"),
       number_param("bottom", 0.3, 0.0, 0.99, "flat_bottom: the fraction of the V's depth cut flat"),
-      segments,
+      integer_param("segments", 32, 2, GrooveProfile::kMaxSegments, "rounded: chords approximating the arc"),
       number_param("alpha_min", 45.0, 1.0, 179.9, "v_mix: smallest dihedral angle in degrees"),
       number_param("alpha_max", 90.0, 1.0, 179.9,
                    "v_mix: largest dihedral angle in degrees (grooves of equal width, angles uniform)")};

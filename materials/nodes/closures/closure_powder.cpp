@@ -109,24 +109,24 @@ NodeDefinition powder_node() {
       "Dry powder (pigments such as hematite): enhanced-backscattering BRDF of Gerardin, Martinetto and "
       "Holzschuch 2023; the grains' albedo from Mie theory and the pigment's optical constants. A "
       "depolarizer.";
-  SocketDef rho = float_input(
-      "rho", SocketType::kSpectrum, -1.0f, std::nullopt, 1.0f,
-      "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo (default -1)");
-  rho.clamped = false;
-  d.inputs = {float_input("volume_amplitude", SocketType::kSpectrum, 1.0f, 0.0f, std::nullopt,
-                          "A_v: scale of the volume terms (1 = physically normalised)"),
-              float_input("g", SocketType::kSpectrum, 0.0f, -0.99f, 0.99f,
-                          "Henyey-Greenstein anisotropy of the grains"),
-              float_input("kappa", SocketType::kSpectrum, 0.25f, 1e-6f, 1e6f, "extinction coefficient, 1/um"),
-              float_input("radius", SocketType::kFloat, 0.05f, 1e-6f, 1e6f,
-                          "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
-              float_input("surface_amplitude", SocketType::kSpectrum, 3e-6f, 0.0f, std::nullopt,
-                          "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
-              float_input("correlation_length", SocketType::kFloat, 2.0f, 1e-6f, 1e6f,
-                          "surface correlation length l_c, um"),
-              float_input("thickness", SocketType::kFloat, 1e30f, 1e-9f, 1e30f,
-                          "layer thickness d in um (single scattering only); default 1e30: infinite"),
-              rho};
+  d.inputs = {
+      float_input("volume_amplitude", SocketType::kSpectrum, 1.0f, clamped_range(0.0f, std::nullopt),
+                  "A_v: scale of the volume terms (1 = physically normalised)"),
+      float_input("g", SocketType::kSpectrum, 0.0f, clamped_range(-0.99f, 0.99f),
+                  "Henyey-Greenstein anisotropy of the grains"),
+      float_input("kappa", SocketType::kSpectrum, 0.25f, clamped_range(1e-6f, 1e6f),
+                  "extinction coefficient, 1/um"),
+      float_input("radius", SocketType::kFloat, 0.05f, clamped_range(1e-6f, 1e6f),
+                  "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
+      float_input("surface_amplitude", SocketType::kSpectrum, 3e-6f, clamped_range(0.0f, std::nullopt),
+                  "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
+      float_input("correlation_length", SocketType::kFloat, 2.0f, clamped_range(1e-6f, 1e6f),
+                  "surface correlation length l_c, um"),
+      float_input("thickness", SocketType::kFloat, 1e30f, clamped_range(1e-9f, 1e30f),
+                  "layer thickness d in um (single scattering only); default 1e30: infinite"),
+      float_input("rho", SocketType::kSpectrum, -1.0f, constant_range(std::nullopt, 1.0f),
+                  "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo "
+                  "(default -1)")};
   d.params = {
       choice_param("pigment", "hematite", PigmentTable::names(),
                    "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "

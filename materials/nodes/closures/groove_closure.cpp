@@ -84,38 +84,27 @@ ClosureTraits groove_traits(const GrooveFacetSettings& s) {
 }
 
 std::vector<SocketDef> groove_facet_and_direction_inputs() {
-  SocketDef direction;
-  direction.name = "direction";
-  direction.type = SocketType::kVector;
-  direction.default_value = NodeValue::of_vector({1.0f, 0.0f, 0.0f});
-  direction.doc = "reference groove direction in object or world space (see direction_space); ignored for uv";
   return {named_spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
           named_spectrum_input("k", "metal-Cu-k",
                                "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
-          float_input("angle", SocketType::kFloat, 0.0f, std::nullopt, std::nullopt,
+          float_input("angle", SocketType::kFloat, 0.0f, kAnyValue,
                       "groove direction: degrees from the reference direction, counter-clockwise about "
                       "the normal (may be textured)"),
-          direction};
+          vector_input("direction", {1.0f, 0.0f, 0.0f},
+                       "reference groove direction in object or world space (see direction_space); ignored "
+                       "for uv")};
 }
 
 std::vector<ParamDef> groove_common_params() {
-  ParamDef metal = choice_param("metal", "", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
+  return {optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
                                 "built-in optical constants of the facets (mirror: reflectance 1, no "
-                                "retardance); when given, eta and k are ignored");
-  metal.default_value = nullptr;  // absent: the eta and k inputs
-  ParamDef max_reflections;
-  max_reflections.name = "max_reflections";
-  max_reflections.kind = ParamKind::kInt;
-  max_reflections.default_value = 0;
-  max_reflections.min = 0;
-  max_reflections.max = 100000;
-  max_reflections.doc = "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit";
-  return {metal,
+                                "retardance); when given, eta and k are ignored"),
           choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
                        "polarization treatment: rigorous Mueller chain; unpolarized (product of "
                        "unpolarized reflectances); sp (s and p reflected separately, averaged); "
                        "paper_literal (the printed Eq 33, for comparison only)"),
-          max_reflections,
+          integer_param("max_reflections", 0, 0, 100000,
+                        "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit"),
           choice_param("direction_space", "uv", {"uv", "object", "world"},
                        "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
                        "or world space")};
