@@ -25,6 +25,7 @@
 namespace ochre {
 
 class ResourceResolver;
+struct NodeDefinition;
 
 // What a node reads from the ShadingContext besides its inputs (facts, and no constant folding).
 enum ContextUsage : uint32_t {
@@ -80,6 +81,7 @@ class NodeError : public std::runtime_error {
 struct PrepareArgs {
   const nlohmann::json& params;  // every declared parameter present in the scene, others absent
   ResourceResolver& resolver;
+  const NodeDefinition& node;  // the node's own definition (its declared choices: node_choices.h)
 };
 
 struct Prepared {

@@ -1,9 +1,11 @@
 // spectrum(file | name, column, extrapolate, scale): a tabulated or named spectrum, built once at compile
 // time (the node is always folded: its consumers sample the pre-built spectrum).
 
+#include <array>
 #include <memory>
 
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/spectrum_source.h"
 #include "spectra/scaled_spectrum.h"
@@ -12,14 +14,15 @@ namespace ochre {
 
 namespace {
 
-SpectrumPtr load(const PrepareArgs& args, bool from_file) {
+// Outside the CSV table: hold the end values or give 0 (docs/scene-format.md, 'Spectra').
+constexpr std::array kExtrapolations{Choice{"clamp", TableExtrapolation::kClamp},
+                                     Choice{"zero", TableExtrapolation::kZero}};
+
+SpectrumPtr load(const PrepareArgs& args, bool from_file, TableExtrapolation extrapolation) {
   try {
     if (!from_file) return spectrum_by_name(args.params.at("name").get<std::string>());
     const std::string column =
         args.params.contains("column") ? args.params.at("column").get<std::string>() : "";
-    const TableExtrapolation extrapolation = args.params.contains("extrapolate")
-                                                 ? table_extrapolation(args.params.at("extrapolate"))
-                                                 : TableExtrapolation::kClamp;
     return spectrum_from_file(args.params.at("file").get<std::string>(), column, args.resolver,
                               extrapolation);
   } catch (const std::runtime_error& e) {
@@ -28,13 +31,16 @@ SpectrumPtr load(const PrepareArgs& args, bool from_file) {
 }
 
 Prepared prepare_spectrum(const PrepareArgs& args) {
+  const TableExtrapolation extrapolation = args.params.contains("extrapolate")
+                                               ? choice_value(args, "extrapolate", kExtrapolations)
+                                               : TableExtrapolation::kClamp;
   const bool has_file = args.params.contains("file"), has_name = args.params.contains("name");
   if (has_file == has_name) throw NodeError(has_file ? "name" : "", "give exactly one of 'file' and 'name'");
   for (const char* file_only : {"column", "extrapolate"})
     if (has_name && args.params.contains(file_only))
       throw NodeError(file_only, std::string("'") + file_only + "' applies to 'file' only");
 
-  SpectrumPtr s = load(args, has_file);
+  SpectrumPtr s = load(args, has_file, extrapolation);
   const float scale = args.params.contains("scale") ? args.params.at("scale").get<float>() : 1.0f;
   if (scale != 1.0f) s = std::make_shared<ScaledSpectrum>(std::move(s), scale);
 
@@ -56,8 +62,7 @@ NodeDefinition spectrum_node() {
               string_param("column",
                            "value column of the CSV file, by header name (default: the first after "
                            "the wavelength)"),
-              // Outside the CSV table: hold the end values or give 0 (docs/scene-format.md, 'Spectra').
-              optional_choice_param("extrapolate", {"clamp", "zero"},
+              optional_choice_param("extrapolate", choice_names(kExtrapolations),
                                     "outside the CSV table: \"clamp\" (default) holds the end values, "
                                     "\"zero\" gives 0 (file only)"),
               number_param("scale", 1.0, 0.0, std::nullopt, "factor applied to every value (>= 0)")};

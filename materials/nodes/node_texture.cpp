@@ -5,6 +5,7 @@
 #include <string>
 
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/resource_resolver.h"
 
@@ -19,10 +20,12 @@ struct TextureData {
 };
 
 Prepared prepare_texture(const PrepareArgs& args) {
+  // The word goes to the renderer as it is (ResourceResolver::texture), which decodes it with the file.
+  const std::string colorspace = *choice_name(args, "colorspace");
   const std::filesystem::path path = args.resolver.resolve(args.params.at("file").get<std::string>());
   auto data = std::make_shared<TextureData>();
   try {
-    data->id = args.resolver.texture(path, args.params.at("colorspace").get<std::string>(), data->channels);
+    data->id = args.resolver.texture(path, colorspace, data->channels);
   } catch (const std::exception& e) {
     throw NodeError("file", "cannot open texture '" + path.string() + "': " + e.what());
   }

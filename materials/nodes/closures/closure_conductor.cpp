@@ -10,6 +10,7 @@
 
 #include "materials/lobes/conductor.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "spectra/named_spectra.h"
 #include "spectra/non_finite.h"
@@ -24,10 +25,10 @@ struct NamedMetal {
 
 Prepared prepare_conductor(const PrepareArgs& args) {
   Prepared p;
-  if (!args.params.contains("metal")) return p;
-  const std::string metal = args.params.at("metal").get<std::string>();
+  const std::optional<std::string> metal = choice_name(args, "metal");
+  if (!metal) return p;
   p.payload = std::make_shared<NamedMetal>(
-      NamedMetal{named_spectrum("metal-" + metal + "-eta"), named_spectrum("metal-" + metal + "-k")});
+      NamedMetal{named_spectrum("metal-" + *metal + "-eta"), named_spectrum("metal-" + *metal + "-k")});
   return p;
 }
 

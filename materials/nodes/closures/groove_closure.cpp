@@ -1,26 +1,24 @@
 #include "materials/nodes/closures/groove_closure.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "materials/core/frame.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "spectra/named_spectra.h"
 
 namespace ochre {
 
-std::string string_param(const PrepareArgs& args, const char* name, const char* fallback) {
-  return args.params.contains(name) ? args.params.at(name).get<std::string>() : fallback;
-}
-
 namespace {
 
-ChainModel parse_model(const std::string& model) {
-  if (model == "unpolarized") return ChainModel::kUnpolarized;
-  if (model == "sp") return ChainModel::kSeparateSP;
-  if (model == "paper_literal") return ChainModel::kPaperLiteral;
-  return ChainModel::kRigorous;
-}
+constexpr std::array kChainModels{
+    Choice{"rigorous", ChainModel::kRigorous}, Choice{"unpolarized", ChainModel::kUnpolarized},
+    Choice{"sp", ChainModel::kSeparateSP}, Choice{"paper_literal", ChainModel::kPaperLiteral}};
+constexpr std::array kDirectionSpaces{Choice{"uv", DirectionSpace::kUV},
+                                      Choice{"object", DirectionSpace::kObject},
+                                      Choice{"world", DirectionSpace::kWorld}};
 
 // The reference direction in world space.
 Vec3 reference_direction(const NodeArgs& a, DirectionSpace space, int direction_input) {
@@ -42,19 +40,16 @@ Vec3 tangent_of(const Vec3& n, const Vec3& t) {
 
 GrooveFacetSettings parse_groove_settings(const PrepareArgs& args) {
   GrooveFacetSettings s;
-  const std::string metal = string_param(args, "metal", "");
-  if (metal == "mirror") {
+  s.model = choice_value(args, "model", kChainModels);
+  s.space = choice_value(args, "direction_space", kDirectionSpaces);
+  if (const std::optional<std::string> metal = choice_name(args, "metal"); metal == "mirror") {
     s.mirror = true;
-  } else if (!metal.empty()) {
-    s.eta = named_spectrum("metal-" + metal + "-eta");
-    s.k = named_spectrum("metal-" + metal + "-k");
+  } else if (metal) {
+    s.eta = named_spectrum("metal-" + *metal + "-eta");
+    s.k = named_spectrum("metal-" + *metal + "-k");
   }
-  s.model = parse_model(string_param(args, "model", "rigorous"));
   if (args.params.contains("max_reflections"))
     s.reflection_limit = args.params.at("max_reflections").get<int>();
-  const std::string space = string_param(args, "direction_space", "uv");
-  s.space = space == "object" ? DirectionSpace::kObject
-                              : (space == "world" ? DirectionSpace::kWorld : DirectionSpace::kUV);
   return s;
 }
 
@@ -99,13 +94,13 @@ std::vector<ParamDef> groove_common_params() {
   return {optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
                                 "built-in optical constants of the facets (mirror: reflectance 1, no "
                                 "retardance); when given, eta and k are ignored"),
-          choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
+          choice_param("model", "rigorous", choice_names(kChainModels),
                        "polarization treatment: rigorous Mueller chain; unpolarized (product of "
                        "unpolarized reflectances); sp (s and p reflected separately, averaged); "
                        "paper_literal (the printed Eq 33, for comparison only)"),
           integer_param("max_reflections", 0, 0, 100000,
                         "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit"),
-          choice_param("direction_space", "uv", {"uv", "object", "world"},
+          choice_param("direction_space", "uv", choice_names(kDirectionSpaces),
                        "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
                        "or world space")};
 }
