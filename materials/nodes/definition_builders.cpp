@@ -122,4 +122,15 @@ ParamDef required_string_param(const char* name, const char* doc) {
   return p;
 }
 
+ParamDef research_param(ParamDef p) {
+  p.research = true;
+  p.doc = "research: " + p.doc;
+  return p;
+}
+
+std::vector<ParamDef> research_params(std::vector<ParamDef> params) {
+  for (ParamDef& p : params) p = research_param(std::move(p));
+  return params;
+}
+
 }  // namespace ochre

@@ -61,5 +61,9 @@ ParamDef optional_choice_param(const char* name, std::vector<std::string> choice
 ParamDef string_param(const char* name, const char* doc);
 // A free string parameter that every node of the type must be given (a texture's file).
 ParamDef required_string_param(const char* name, const char* doc);
+// `p` marked as a research variant (ParamDef::research), its doc prefixed with "research: ".
+ParamDef research_param(ParamDef p);
+// Each of `params` marked so.
+std::vector<ParamDef> research_params(std::vector<ParamDef> params);
 
 }  // namespace ochre

@@ -65,6 +65,10 @@ struct ParamDef {
   std::vector<std::string> choices;  // allowed strings (kString), empty = any
   std::optional<double> min, max;    // kInt / kFloat range
   std::string doc;
+  // A research variant, not a setting of the product: kept to compare with a paper as printed (or with the
+  // literature it cites) and to measure the product's choices; its default is the product's. Its doc starts
+  // with "research:", and docs/nodes.md lists it in the node's "Research parameters" table.
+  bool research = false;
 };
 
 // A fault a node hook reports; the compiler adds file, material and node names.

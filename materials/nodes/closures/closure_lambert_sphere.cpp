@@ -86,9 +86,10 @@ NodeDefinition lambert_sphere_node() {
   d.params = {choice_param("variant", "full", choice_names(kSphereVariants),
                            "full: exact single + corrected fitted multiple scattering; fast: Eq 48 (not "
                            "energy conserving); exact: tabulated converged half-space solution"),
-              choice_param("mapping", "exact", choice_names(kKdMappings),
-                           "kd -> c: exact inverts the model's own bond albedo (< 0.5 % error); eq46 is the "
-                           "paper's fit (renders up to 3.8 % too bright)")};
+              research_param(choice_param(
+                  "mapping", "exact", choice_names(kKdMappings),
+                  "kd -> c: exact inverts the model's own bond albedo (< 0.5 % error); eq46 is the "
+                  "paper's fit (renders up to 3.8 % too bright)"))};
   d.outputs = {{"closure", SocketType::kClosure, false, "the Lambert-sphere lobe"}};
   d.prepare = prepare_lambert_sphere;
   d.eval = emit_lambert_sphere;

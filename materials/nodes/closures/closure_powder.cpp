@@ -138,23 +138,28 @@ NodeDefinition powder_node() {
                    "(2 o + e) / 3), or one of its rays"),
       string_param("pigment_file",
                    "a CSV of the grains' optical constants with columns n and k (index n + i k); replaces "
-                   "`pigment`"),
-      choice_param("ladder", "symmetric", choice_names(kPowderLadders),
-                   "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
-                   "or as printed (for comparison)"),
-      choice_param("ladder_decay", "c0", choice_names(kLadderDecays),
-                   "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
-      choice_param("normalisation", "brdf", choice_names(kPowderNormalisations),
-                   "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
-      choice_param("surface", "harvey_shack", choice_names(kPowderSurfaces),
-                   "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
-      number_param("surface_sigma", 5.7, 0.01, 90.0, "Gaussian surface term only: its width in degrees"),
-      choice_param("tau", "paper", choice_names(kPowderTaus),
-                   "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
-                   "1991), or 2/3"),
-      choice_param("sampling", "mixture", choice_names(kPowderSamplings),
-                   "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
-                   "comparison)")};
+                   "`pigment`")};
+  // The paper as printed, the literature's alternatives and the sampler's baseline, beside the corrected
+  // model as their defaults (docs/materials/powder.md, 'Product and research settings').
+  for (ParamDef& p : research_params(
+           {choice_param("ladder", "symmetric", choice_names(kPowderLadders),
+                         "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
+                         "or as printed (for comparison)"),
+            choice_param("ladder_decay", "c0", choice_names(kLadderDecays),
+                         "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
+            choice_param("normalisation", "brdf", choice_names(kPowderNormalisations),
+                         "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
+            choice_param("surface", "harvey_shack", choice_names(kPowderSurfaces),
+                         "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
+            number_param("surface_sigma", 5.7, 0.01, 90.0,
+                         "Gaussian surface term only: its width in degrees"),
+            choice_param("tau", "paper", choice_names(kPowderTaus),
+                         "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
+                         "1991), or 2/3"),
+            choice_param("sampling", "mixture", choice_names(kPowderSamplings),
+                         "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
+                         "comparison)")}))
+    d.params.push_back(std::move(p));
   d.outputs = {{"closure", SocketType::kClosure, false, "the powder lobe"}};
   d.prepare = prepare_powder;
   d.eval = emit_powder;

@@ -91,18 +91,20 @@ std::vector<SocketDef> groove_facet_and_direction_inputs() {
 }
 
 std::vector<ParamDef> groove_common_params() {
-  return {optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
-                                "built-in optical constants of the facets (mirror: reflectance 1, no "
-                                "retardance); when given, eta and k are ignored"),
-          choice_param("model", "rigorous", choice_names(kChainModels),
-                       "polarization treatment: rigorous Mueller chain; unpolarized (product of "
-                       "unpolarized reflectances); sp (s and p reflected separately, averaged); "
-                       "paper_literal (the printed Eq 33, for comparison only)"),
+  return {
+      optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
+                            "built-in optical constants of the facets (mirror: reflectance 1, no "
+                            "retardance); when given, eta and k are ignored"),
+      research_param(choice_param("model", "rigorous", choice_names(kChainModels),
+                                  "polarization treatment: rigorous Mueller chain; unpolarized (product of "
+                                  "unpolarized reflectances); sp (s and p reflected separately, averaged); "
+                                  "paper_literal (the printed Eq 33, for comparison only)")),
+      research_param(
           integer_param("max_reflections", 0, 0, 100000,
-                        "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit"),
-          choice_param("direction_space", "uv", choice_names(kDirectionSpaces),
-                       "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
-                       "or world space")};
+                        "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit")),
+      choice_param("direction_space", "uv", choice_names(kDirectionSpaces),
+                   "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
+                   "or world space")};
 }
 
 }  // namespace ochre
