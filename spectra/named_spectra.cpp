@@ -66,7 +66,8 @@ constexpr NamedSpectrum kRegistry[] = {
     {"pigment-hematite_o-k", [] { return embedded("ior_Fe2O3_5nm.csv", "k_o"); }},
     {"pigment-hematite_e-n", [] { return embedded("ior_Fe2O3_5nm.csv", "n_e"); }},
     {"pigment-hematite_e-k", [] { return embedded("ior_Fe2O3_5nm.csv", "k_e"); }},
-    // A model of a phosphor-converted white LED at 4103 K (tools/make_led_spectrum.py), not a measurement.
+    // A model of a phosphor-converted white LED at 4103 K (tools/data/make_led_spectrum.py), not a
+    // measurement.
     {"LED-4100K-model",
      [] { return normalized_to_unit_luminance(embedded("led_white_4100k_model_5nm.csv", "S")); }},
 };

@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 # openimageio-tools because Debian's OpenImageIO CMake config refuses to load without its executables
 # (iinfo, oiiotool, ...). Tests: libgtest-dev (Debian's GTest config needs no gmock). Plots of ochre-brdf /
 # ochre-converge / ochre-fit
-# (tools/plot_*.py): python3 with numpy and matplotlib.
+# (tools/scripts/plot_*.py): python3 with numpy and matplotlib.
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libopenimageio-dev openimageio-tools libopencolorio-dev libembree-dev libopenexr-dev
@@ -23,9 +23,9 @@ PACKAGES=(
   # Browser tests of ochre-regress's HTML report (tests/browser): headless Chromium, its WebDriver, and
   # Selenium for /usr/bin/python3 (the test is skipped without them).
   chromium chromium-driver python3-selenium
-  # Fuzzing (tests/fuzz, tools/fuzz.sh): clang with libFuzzer and the sanitizer runtimes.
+  # Fuzzing (tests/fuzz, tools/dev/fuzz.sh): clang with libFuzzer and the sanitizer runtimes.
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
-  # The Slurm tests (tests/slurm: a one-node cluster on 127.0.0.1, tools/slurm/one_node_cluster.sh): the
+  # The Slurm tests (tests/slurm: a one-node cluster on 127.0.0.1, tools/scripts/one_node_cluster.sh): the
   # daemons, the client commands and munge; nothing is started at installation on a machine without systemd,
   # and on one with systemd only munge.service (slurmd and slurmctld need /etc/slurm/slurm.conf).
   slurmctld slurmd slurm-client munge

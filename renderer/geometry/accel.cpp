@@ -7,6 +7,7 @@
 #include <x86intrin.h>
 #endif
 
+#include <array>
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -57,9 +58,150 @@ bool count_memory(void* user, ssize_t bytes, bool /*post*/) {
   return true;
 }
 
+// The intersection context of a spawned ray: Embree hands it back to the filter (it starts with the
+// RTCIntersectContext), with the triangle the ray leaves and the meshes to read corners from.
+struct SpawnContext {
+  RTCIntersectContext embree;
+  const std::vector<Mesh>* meshes;
+  const float* longest_edge;  // per mesh: the longest triangle edge (largest component)
+  uint32_t from_mesh, from_triangle;
+};
+
+float max_component_magnitude(float x, float y, float z) {
+  return std::max(std::fabs(x), std::max(std::fabs(y), std::fabs(z)));
+}
+
+// The largest coordinate difference between two corners of one triangle of the mesh.
+float longest_edge(const Mesh& mesh) {
+  float longest = 0.0f;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const Vec3 &a = mesh.positions[mesh.indices[t]], &b = mesh.positions[mesh.indices[t + 1]],
+               &c = mesh.positions[mesh.indices[t + 2]];
+    for (const Vec3 e : {b - a, c - a, c - b})
+      longest = std::max(longest, max_component_magnitude(e.x, e.y, e.z));
+  }
+  return longest;
+}
+
+// Embree computes a triangle's corners relative to the ray origin in single precision, so where the ray
+// crosses the triangle's plane is off by up to a few epsilons times the distance from the origin to the far
+// corner (measured: 3.6 eps per unit), and near the plane the side can be wrong: a ray leaving a long, thin
+// triangle finds it again, or a neighbour, at t ~ 1e-9, and a ray leaving at a grazing angle finds the
+// neighbour's plane farther on. Hits whose origin lies within 128 eps per unit of that distance of the
+// triangle's plane are checked exactly.
+constexpr float kCheckEpsilon = 64.0f * 0x1p-24f;
+
+// Where the plane of the triangle v0 v1 v2 lies from o, in double precision: the corners, origin and
+// direction are floats, so the differences and products are exact or within 1e-16 relative, far below the
+// single-precision offsets a spawned origin has.
+struct ExactPlane {
+  double distance;  // from o to the plane, perpendicular (NaN for a degenerate triangle)
+  double t;         // along d, in units of |d| (NaN or infinite for a ray parallel to the plane)
+};
+ExactPlane exact_plane(const Vec3& o, const Vec3& d, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
+  const double e1[3] = {double(v1.x) - v0.x, double(v1.y) - v0.y, double(v1.z) - v0.z};
+  const double e2[3] = {double(v2.x) - v0.x, double(v2.y) - v0.y, double(v2.z) - v0.z};
+  const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+  const double to_corner[3] = {double(v0.x) - o.x, double(v0.y) - o.y, double(v0.z) - o.z};
+  const double numerator = n[0] * to_corner[0] + n[1] * to_corner[1] + n[2] * to_corner[2];
+  const double denominator = n[0] * d.x + n[1] * d.y + n[2] * d.z;
+  return {numerator / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), numerator / denominator};
+}
+
+// A triangle nearly in the plane of the one a spawned ray leaves, and within a few units in the last place of
+// its corners' coordinates of the ray's origin, is the same surface: the corners of one flat polygon,
+// rounded to single precision (a quad turned by a transform, a scan's facets), do not lie in one plane, and
+// the two triangles of a quad 800 long and 0.7 wide meet at a fold of 7e-5 radians that would catch rays
+// leaving the polygon near its diagonal. Triangles at a real angle (a groove's other facet) are judged by
+// the exact test alone, so no band along a concave edge loses its hits.
+constexpr double kSameSurfaceUlps = 8.0 * 0x1p-24;
+constexpr double kSameSurfaceSine = 1e-3;  // planes closer than this angle (radians) are one surface
+
+// The unit normal of a triangle in double precision (zero for a degenerate one).
+std::array<double, 3> exact_unit_normal(const Vec3& v0, const Vec3& v1, const Vec3& v2) {
+  const double e1[3] = {double(v1.x) - v0.x, double(v1.y) - v0.y, double(v1.z) - v0.z};
+  const double e2[3] = {double(v2.x) - v0.x, double(v2.y) - v0.y, double(v2.z) - v0.z};
+  std::array<double, 3> n = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                             e1[0] * e2[1] - e1[1] * e2[0]};
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (length > 0.0)
+    for (double& c : n) c /= length;
+  return n;
+}
+
+// Whether the triangles of unit normals a and b lie in nearly the same plane (either orientation).
+bool nearly_parallel(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  return c[0] * c[0] + c[1] * c[1] + c[2] * c[2] < kSameSurfaceSine * kSameSurfaceSine;
+}
+
+// The context filter of spawned rays (Accel::intersect, Accel::occluded): rejects the triangle the ray
+// leaves (a flat triangle cannot be hit again by a ray leaving it) and every hit near the origin that the
+// exact test puts behind it or within the rounding of the corners from it (kSameSurfaceUlps).
+void verify_spawned_hit(const RTCFilterFunctionNArguments* args) {
+  const auto* spawn = reinterpret_cast<const SpawnContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const unsigned mesh_id = RTCHitN_geomID(args->hit, args->N, i);
+    const unsigned triangle = RTCHitN_primID(args->hit, args->N, i);
+    if (mesh_id == spawn->from_mesh && triangle == spawn->from_triangle) {
+      args->valid[i] = 0;
+      continue;
+    }
+    const Vec3 d{RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                 RTCRayN_dir_z(args->ray, args->N, i)};
+    const Vec3 ng{RTCHitN_Ng_x(args->hit, args->N, i), RTCHitN_Ng_y(args->hit, args->N, i),
+                  RTCHitN_Ng_z(args->hit, args->N, i)};
+    const float t = RTCRayN_tfar(args->ray, args->N, i);  // the candidate hit's distance
+    // How far the origin is from the candidate's plane (estimated in single precision), against Embree's
+    // error there, which grows with the distance from the origin to the triangle's corners: no farther than
+    // the hit plus the mesh's longest edge. Clear of it, the hit stands (most hits: no corners read).
+    // height = t |ng . d| / |ng| against the bound, squared: no root or division on this path.
+    const float bound =
+        2.0f * kCheckEpsilon * (t * max_component_magnitude(d.x, d.y, d.z) + spawn->longest_edge[mesh_id]);
+    const float along_normal = t * dot(ng, d);
+    if (along_normal * along_normal > bound * bound * dot(ng, ng)) continue;
+    const Vec3 o{RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+                 RTCRayN_org_z(args->ray, args->N, i)};
+    const Mesh& mesh = (*spawn->meshes)[mesh_id];
+    const uint32_t* corner = &mesh.indices[3 * size_t(triangle)];
+    const Vec3 &v0 = mesh.positions[corner[0]], &v1 = mesh.positions[corner[1]],
+               &v2 = mesh.positions[corner[2]];
+    const ExactPlane plane = exact_plane(o, d, v0, v1, v2);
+    if (!(plane.t > 0.0)) {
+      args->valid[i] = 0;
+      continue;
+    }
+    float magnitude = 0.0f;
+    for (const Vec3* v : {&v0, &v1, &v2})
+      magnitude = std::max(magnitude, max_component_magnitude(v->x, v->y, v->z));
+    if (std::fabs(plane.distance) > kSameSurfaceUlps * magnitude) continue;
+    const Mesh& from = (*spawn->meshes)[spawn->from_mesh];
+    const uint32_t* from_corner = &from.indices[3 * size_t(spawn->from_triangle)];
+    if (nearly_parallel(exact_unit_normal(v0, v1, v2),
+                        exact_unit_normal(from.positions[from_corner[0]], from.positions[from_corner[1]],
+                                          from.positions[from_corner[2]])))
+      args->valid[i] = 0;
+  }
+}
+
+// The context of a query: a spawned ray gets the filter, a camera ray Embree's default context.
+SpawnContext query_context(const Ray& ray, const std::vector<Mesh>* meshes, const float* longest_edge) {
+  SpawnContext context{};
+  rtcInitIntersectContext(&context.embree);
+  context.meshes = meshes;
+  context.longest_edge = longest_edge;
+  context.from_mesh = ray.from_mesh;
+  context.from_triangle = ray.from_triangle;
+  if (ray.from_mesh != Ray::kNoTriangle) context.embree.filter = &verify_spawned_hit;
+  return context;
+}
 }  // namespace
 
 struct Accel::Impl {
+  const std::vector<Mesh>* meshes = nullptr;  // the vertices the exact checks of spawned rays read
+  std::vector<float> longest_edge;            // per mesh, for the checks (verify_spawned_hit)
   EmbreeErrors errors;
   std::atomic<int64_t> embree_bytes{0};
   size_t shared_bytes = 0;
@@ -128,9 +270,13 @@ Accel::Accel(const std::vector<Mesh>& meshes) : impl_(std::make_unique<Impl>()) 
   rtcSetDeviceErrorFunction(impl_->device, &EmbreeErrors::record, &impl_->errors);
   rtcSetDeviceMemoryMonitorFunction(impl_->device, &count_memory, &impl_->embree_bytes);
 
+  impl_->meshes = &meshes;
+  impl_->longest_edge.reserve(meshes.size());
+  for (const Mesh& mesh : meshes) impl_->longest_edge.push_back(longest_edge(mesh));
   impl_->scene = rtcNewScene(impl_->device);
-  // Robust mode keeps the watertight triangle test exact at shared edges (no rays slip through).
-  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+  // Robust mode keeps the watertight triangle test exact at shared edges (no rays slip through). The context
+  // filter checks the hits of spawned rays (verify_spawned_hit); camera rays carry no filter.
+  rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
   for (size_t i = 0; i < meshes.size(); ++i) {
     // Empty meshes get no geometry; the IDs of the others still equal their mesh index.
@@ -166,8 +312,7 @@ double Accel::traversal_seconds() const {
 
 std::optional<Hit> Accel::intersect(const Ray& ray) const {
   if (!(ray.tmax > ray.tmin)) return std::nullopt;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  SpawnContext context = query_context(ray, impl_->meshes, impl_->longest_edge.data());
   RTCRayHit query{};
   query.ray.org_x = ray.origin.x;
   query.ray.org_y = ray.origin.y;
@@ -180,7 +325,7 @@ std::optional<Hit> Accel::intersect(const Ray& ray) const {
   query.ray.mask = ~0u;
   query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  impl_->traced([&] { rtcIntersect1(impl_->scene, &context, &query); });
+  impl_->traced([&] { rtcIntersect1(impl_->scene, &context.embree, &query); });
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   // Embree's Ng for triangles is cross(v1 - v0, v2 - v0) (checked by the Accel tests).
   return Hit{query.ray.tfar, query.hit.geomID, query.hit.primID,
@@ -189,8 +334,7 @@ std::optional<Hit> Accel::intersect(const Ray& ray) const {
 
 bool Accel::occluded(const Ray& ray) const {
   if (!(ray.tmax > ray.tmin)) return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  SpawnContext context = query_context(ray, impl_->meshes, impl_->longest_edge.data());
   RTCRay query{};
   query.org_x = ray.origin.x;
   query.org_y = ray.origin.y;
@@ -201,7 +345,7 @@ bool Accel::occluded(const Ray& ray) const {
   query.tnear = ray.tmin;
   query.tfar = ray.tmax;
   query.mask = ~0u;
-  impl_->traced([&] { rtcOccluded1(impl_->scene, &context, &query); });
+  impl_->traced([&] { rtcOccluded1(impl_->scene, &context.embree, &query); });
   return query.tfar == -INFINITY;  // Embree marks an occluded ray with tfar = -inf
 }
 
@@ -252,18 +396,15 @@ bool uv_derivatives(const Vec3 p[3], const Vec2 uv[3], float world_double_area, 
 
 namespace {
 
-// The error of a point interpolated in float arithmetic from barycentrics (pbrt-v4 Eq 6.28: gamma(7) times
-// the sum of |b_i p_i|), which also covers the rounding of b0 = 1 - b1 - b2.
+// The error bound of a point from barycentric_point: the rounding of the double sum to single precision
+// (half a unit in the last place, at most 2^-24 |p|) and the double arithmetic itself (a few 2^-53 times the
+// sum of |b_i p_i|, bounded generously by 2^-44). Embree's own error near a spawned ray's origin is handled
+// by the exact checks of verify_spawned_hit, not by a larger offset.
+constexpr float kRoundingToFloat = 0x1p-24f;
+constexpr float kDoubleSum = 0x1p-44f;
+// The bound of a point computed in single precision as origin + t dir (degenerate triangles): pbrt-v4's
+// gamma(7) (Eq 6.28).
 constexpr float kGamma7 = 7.0f * 0x1p-24f / (1.0f - 7.0f * 0x1p-24f);
-// Unlike pbrt's intersection test, Embree's has no conservative t bound: it computes the corners relative
-// to the ray origin, so a ray leaving a long, thin triangle can find it again at t ~ 1e-9 behind an
-// origin offset by the interpolation bound alone (measured: 3.6 eps per unit of distance to the far
-// corner). The spawn bound adds 16 eps times that distance.
-constexpr float kSpawnEpsilon = 16.0f * 0x1p-24f;
-
-float max_abs_component(const Vec3& v) {
-  return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z)));
-}
 
 // Position, error bound, unit geometric normal (0 for a degenerate triangle) and doubled area at barycentrics
 // (b1, b2) of a triangle.
@@ -281,11 +422,7 @@ TrianglePoint point_on(const Vec3 p[3], float b1, float b2) {
   const float b0 = 1.0f - b1 - b2;
   t.p = barycentric_point(p[0], p[1], p[2], b1, b2);
   const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-  // A point of the triangle is no farther from a corner than the longest edge.
-  const float reach =
-      std::max(max_abs_component(e1), std::max(max_abs_component(e2), max_abs_component(e2 - e1)));
-  t.p_error =
-      (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kGamma7 + Vec3(1, 1, 1) * (kSpawnEpsilon * reach);
+  t.p_error = abs(t.p) * kRoundingToFloat + (abs(p[0] * b0) + abs(p[1] * b1) + abs(p[2] * b2)) * kDoubleSum;
   const Vec3 n = cross(e1, e2);
   t.double_area = length(n);
   t.ng = t.double_area > 0.0f && std::isfinite(t.double_area) ? n / t.double_area : Vec3(0, 0, 0);
@@ -307,6 +444,7 @@ SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float 
 
   SurfacePoint sp;
   const TrianglePoint t = point_on(p, b1, b2);
+  sp.triangle = triangle;
   sp.p = t.p;
   sp.p_error = t.p_error;
   sp.ng = t.ng;
@@ -336,6 +474,7 @@ SurfacePoint surface_point(const Mesh& mesh, uint32_t triangle, float b1, float 
 
 SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, const Ray& ray) {
   SurfacePoint sp = surface_point(meshes[hit.mesh], hit.triangle, hit.b1, hit.b2);
+  sp.mesh = hit.mesh;
   if (!usable_unit(sp.ng)) {  // degenerate triangle: face the ray
     sp.ng = usable_unit(hit.ng) ? normalize(hit.ng) : normalize(-ray.dir);
     sp.ns = sp.ng;
@@ -344,6 +483,15 @@ SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, cons
     sp.dpdu = Frame::from_normal(sp.ng).s;
   }
   return sp;
+}
+
+Ray spawn_ray(const SurfacePoint& sp, const Vec3& ng, const Vec3& dir, float tmax) {
+  Ray ray{offset_ray_origin(sp.p, sp.p_error, ng, dir), dir, 0.0f, tmax};
+  if (sp.mesh != Ray::kNoTriangle) {
+    ray.from_mesh = sp.mesh;
+    ray.from_triangle = sp.triangle;
+  }
+  return ray;
 }
 
 Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& ng, const Vec3& dir) {

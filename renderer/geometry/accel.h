@@ -1,7 +1,7 @@
 #pragma once
 // Accel: the Embree 3 acceleration structure over the scene's triangle meshes, plus the
 // helpers that turn a hit into a shading point and spawn secondary rays without
-// self-intersection. Embree stays private to accel.cpp.
+// self-intersection (docs/architecture.md, "Spawning rays"). Embree stays private to accel.cpp.
 
 #include <cmath>
 #include <cstddef>
@@ -41,8 +41,11 @@ class Accel {
   Accel& operator=(const Accel&) = delete;
 
   // Closest hit in (tmin, tmax), or nothing. Incoherent single-ray query (rtcIntersect1).
+  // A ray spawned from a triangle (Ray::from_mesh, spawn_ray) never reports that triangle, and every hit
+  // near its origin, where Embree's single-precision test can get the sign of t wrong, is checked against
+  // the exact (double-precision) plane of the triangle hit.
   std::optional<Hit> intersect(const Ray& ray) const;
-  // True when anything lies in (tmin, tmax) (rtcOccluded1, any-hit).
+  // True when anything lies in (tmin, tmax) (rtcOccluded1, any-hit); spawned rays as for intersect.
   bool occluded(const Ray& ray) const;
 
   // Bytes allocated by Embree (BVH, copied vertex buffers; counted by the device memory
@@ -67,9 +70,9 @@ class Accel {
 
 // Everything the integrator needs about a hit point.
 struct SurfacePoint {
-  Vec3 p;                // position from the barycentrics (more precise than origin + t * dir)
-  Vec3 p_error;          // conservative bound of |p - the exact point on the triangle| per component, widened
-                         // to cover the next ray's intersection arithmetic (offset_ray_origin)
+  Vec3 p;        // position from the barycentrics (more precise than origin + t * dir)
+  Vec3 p_error;  // conservative bound of |p - the exact point on the triangle| per component
+  uint32_t mesh = Ray::kNoTriangle, triangle = Ray::kNoTriangle;  // the triangle p lies on
   Vec3 ng;               // unit geometric normal, cross(p1 - p0, p2 - p0) normalized (from the winding)
   Vec3 ns;               // unit shading normal: interpolated vertex normals, or ng for flat meshes
   Vec2 uv;               // interpolated texture coordinates, (0, 0) without UVs
@@ -81,10 +84,15 @@ struct SurfacePoint {
 };
 
 // The point at barycentrics (b1, b2) of the triangle p0 p1 p2: SurfacePoint::p's arithmetic, shared with
-// light sampling so that both give the same bits.
+// light sampling so that both give the same bits. The sum is taken in double precision and rounded once, so
+// the point is within half a unit in the last place of its coordinates of the triangle's plane, however far
+// the corners are: in single precision a point in the middle of a triangle 800 long is only as precise as
+// its corners' coordinates (the products cancel), and the spawned ray's offset would grow with them.
 inline Vec3 barycentric_point(const Vec3& p0, const Vec3& p1, const Vec3& p2, float b1, float b2) {
-  const float b0 = 1.0f - b1 - b2;
-  return p0 * b0 + p1 * b1 + p2 * b2;
+  const double w1 = b1, w2 = b2, w0 = 1.0 - w1 - w2;
+  return {static_cast<float>(w0 * p0.x + w1 * p1.x + w2 * p2.x),
+          static_cast<float>(w0 * p0.y + w1 * p1.y + w2 * p2.y),
+          static_cast<float>(w0 * p0.z + w1 * p1.z + w2 * p2.z)};
 }
 // Light sampling needs only a point's position and the triangle's unit geometric normal (0 for a degenerate
 // triangle): exactly the p and ng of surface_point(), without its error bound, normal and tangent work. The
@@ -107,8 +115,13 @@ SurfacePoint surface_point(const std::vector<Mesh>& meshes, const Hit& hit, cons
 // to, by the projection of the error bound on the normal, then rounded away from p (pbrt-v4,
 // OffsetRayOrigin; Pharr, Jakob and Humphreys, "Physically Based Rendering", 4th ed., sec. 6.8.6). The
 // bound grows with the triangle's corners, not with |p|: a point near the origin of a huge tilted
-// triangle is as uncertain as its corners, and so is the next ray's intersection test (Embree
-// computes it from the corners relative to the origin). Use tmin = 0 with the returned origin.
+// triangle is as uncertain as its corners. Use tmin = 0 with the returned origin.
 Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& ng, const Vec3& dir);
+
+// The ray leaving the surface point `sp` in direction `dir` (ng: the geometric normal, any orientation):
+// from offset_ray_origin, naming the triangle it leaves so that Accel never reports that triangle and
+// checks hits near the origin exactly. The offset is the interpolation error bound alone, however long
+// and thin the triangle: an image does not depend on how a surface is cut into triangles.
+Ray spawn_ray(const SurfacePoint& sp, const Vec3& ng, const Vec3& dir, float tmax = INFINITY);
 
 }  // namespace ochre

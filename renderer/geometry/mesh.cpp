@@ -55,9 +55,10 @@ void Mesh::transform(const Transform& to_world) {
     // The inverse transpose, computed once for all normals (throws before any change when singular).
     const Transform inverse = to_world.inverse();
     for (Vec3& n : normals) {
-      n = normalize(Vec3{inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
-                         inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
-                         inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z});
+      const Vec3d m{inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
+                    inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
+                    inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
+      n = normalize(m).to_float();
     }
   }
   for (Vec3& p : positions) p = to_world.point(p);

@@ -13,10 +13,12 @@ inline NonFiniteTally& thread_non_finite_tally() {
   return tally;
 }
 
-inline ShadingContext shading_context(const SurfacePoint& sp, const SampledWavelengths& lambda,
-                                      const TextureProvider* textures, const Mesh* mesh = nullptr) {
+// `origin`: the rendering origin (renderer/scene/scene.h); the material sees the world position origin + p.
+inline ShadingContext shading_context(const SurfacePoint& sp, const Vec3& origin,
+                                      const SampledWavelengths& lambda, const TextureProvider* textures,
+                                      const Mesh* mesh = nullptr) {
   ShadingContext ctx;
-  ctx.p = sp.p;
+  ctx.p = sp.p + origin;
   ctx.n = sp.ns;
   ctx.uv = sp.uv;
   ctx.dpdu = sp.dpdu;

@@ -16,7 +16,7 @@ namespace {
 
 // The 3x3 cofactor matrix of the linear part: cof = det * inverse-transpose (row-major, 9 entries).
 std::array<double, 9> cofactors3(const Transform& t) {
-  auto a = [&](int r, int c) { return static_cast<double>(t(r, c)); };
+  auto a = [&](int r, int c) { return t(r, c); };
   return {a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1), a(1, 2) * a(2, 0) - a(1, 0) * a(2, 2),
           a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0), a(0, 2) * a(2, 1) - a(0, 1) * a(2, 2),
           a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0), a(0, 1) * a(2, 0) - a(0, 0) * a(2, 1),
@@ -46,7 +46,7 @@ void cos_sin_degrees(double degrees, double& c, double& s) {
 
 }  // namespace
 
-Transform Transform::translate(Vec3 offset) {
+Transform Transform::translate(Vec3d offset) {
   Transform t;
   t(0, 3) = offset.x;
   t(1, 3) = offset.y;
@@ -54,7 +54,7 @@ Transform Transform::translate(Vec3 offset) {
   return t;
 }
 
-Transform Transform::scale(Vec3 factors) {
+Transform Transform::scale(Vec3d factors) {
   Transform t;
   t(0, 0) = factors.x;
   t(1, 1) = factors.y;
@@ -63,7 +63,7 @@ Transform Transform::scale(Vec3 factors) {
 }
 
 // Rodrigues' rotation formula: R = cos I + sin [k]x + (1 - cos) k k^T.
-Transform Transform::rotate(float degrees, Vec3 axis) {
+Transform Transform::rotate(double degrees, Vec3 axis) {
   const double len = std::sqrt(double(axis.x) * axis.x + double(axis.y) * axis.y + double(axis.z) * axis.z);
   if (!(len > 0.0) || !std::isfinite(len))
     throw std::invalid_argument("Transform::rotate: zero or non-finite axis");
@@ -74,25 +74,25 @@ Transform Transform::rotate(float degrees, Vec3 axis) {
   Transform t;
   for (int r = 0; r < 3; ++r)
     for (int col = 0; col < 3; ++col)
-      t(r, col) =
-          static_cast<float>((r == col ? c : 0.0) + s * cross_matrix[r][col] + (1 - c) * k[r] * k[col]);
+      t(r, col) = (r == col ? c : 0.0) + s * cross_matrix[r][col] + (1 - c) * k[r] * k[col];
   return t;
 }
 
-Transform Transform::look_at(Vec3 eye, Vec3 target, Vec3 up) {
-  const Vec3 view = target - eye;
-  if (!(length(view) > 0.0f)) throw std::invalid_argument("Transform::look_at: eye and target coincide");
-  const Vec3 forward = normalize(view);
-  const Vec3 side = cross(forward, up);
-  if (!(length(side) > 1e-6f * length(up))) {
+Transform Transform::look_at(Vec3d eye, Vec3d target, Vec3d up) {
+  const Vec3d view = target - eye;
+  if (!(length(view) > 0.0)) throw std::invalid_argument("Transform::look_at: eye and target coincide");
+  const Vec3d forward = view * (1.0 / length(view));
+  const Vec3d side = cross(forward, up);
+  if (!(length(side) > 1e-6 * length(up))) {
     throw std::invalid_argument("Transform::look_at: up is zero or parallel to the view direction");
   }
-  const Vec3 right = normalize(side);
-  const Vec3 true_up = cross(right, forward);
+  const Vec3d right = side * (1.0 / length(side));
+  const Vec3d true_up = cross(right, forward);
   Transform t;
-  const Vec3 columns[4] = {right, true_up, forward, eye};
+  const Vec3d columns[4] = {right, true_up, forward, eye};
   for (int col = 0; col < 4; ++col)
-    for (int r = 0; r < 3; ++r) t(r, col) = columns[col][r];
+    for (int r = 0; r < 3; ++r)
+      t(r, col) = r == 0 ? columns[col].x : r == 1 ? columns[col].y : columns[col].z;
   return t;
 }
 
@@ -101,8 +101,8 @@ Transform Transform::operator*(const Transform& o) const {
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) {
       double sum = 0;
-      for (int k = 0; k < 4; ++k) sum += double((*this)(r, k)) * o(k, c);
-      out(r, c) = static_cast<float>(sum);
+      for (int k = 0; k < 4; ++k) sum += (*this)(r, k) * o(k, c);
+      out(r, c) = sum;
     }
   return out;
 }
@@ -119,22 +119,28 @@ Transform Transform::inverse() const {
   for (int r = 0; r < 3; ++r) {
     double translation = 0;
     for (int c = 0; c < 3; ++c) {
-      out(r, c) = static_cast<float>(inv[r][c]);
+      out(r, c) = inv[r][c];
       translation -= inv[r][c] * (*this)(c, 3);
     }
-    out(r, 3) = static_cast<float>(translation);
+    out(r, 3) = translation;
   }
   return out;
 }
 
-Vec3 Transform::point(Vec3 p) const {
+Vec3d Transform::point_double(const Vec3d& p) const {
   return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
           m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
 }
 
+Vec3 Transform::point(Vec3 p) const {
+  return point_double(Vec3d(p)).to_float();
+}
+
 Vec3 Transform::vector(Vec3 v) const {
-  return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[4] * v.x + m[5] * v.y + m[6] * v.z,
-          m[8] * v.x + m[9] * v.y + m[10] * v.z};
+  const double x = v.x, y = v.y, z = v.z;
+  return Vec3d{m[0] * x + m[1] * y + m[2] * z, m[4] * x + m[5] * y + m[6] * z,
+               m[8] * x + m[9] * y + m[10] * z}
+      .to_float();
 }
 
 // The cofactor matrix is det * L^-T; its sign is corrected by sign(det), its scale by normalize.
@@ -160,8 +166,8 @@ namespace {
   throw InputError(fmt::format("{}: {}, got {}", where, what, json_excerpt(value)));
 }
 
-float parse_finite(const nlohmann::json& value, const std::string& where) {
-  return static_cast<float>(json_number(value, where));
+double parse_finite(const nlohmann::json& value, const std::string& where) {
+  return json_number(value, where);
 }
 
 Transform parse_matrix(const nlohmann::json& value, const std::string& where) {
@@ -202,9 +208,9 @@ Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
     if (key != "eye" && key != "target" && key != "up")
       fail_with_value(where, fmt::format("unknown key \"{}\"", key), value);
   }
-  const Vec3 eye = json_vec3(member(value, "eye", where), where + ".eye");
-  const Vec3 target = json_vec3(member(value, "target", where), where + ".target");
-  const Vec3 up = json_vec3(member(value, "up", where), where + ".up");
+  const Vec3d eye = json_vec3d(member(value, "eye", where), where + ".eye");
+  const Vec3d target = json_vec3d(member(value, "target", where), where + ".target");
+  const Vec3d up = json_vec3d(member(value, "up", where), where + ".up");
   try {
     return Transform::look_at(eye, target, up);
   } catch (const std::invalid_argument& e) {
@@ -213,8 +219,8 @@ Transform parse_look_at(const nlohmann::json& value, const std::string& where) {
 }
 
 Transform parse_scale(const nlohmann::json& value, const std::string& where) {
-  const Vec3 factors =
-      value.is_number() ? Vec3(1, 1, 1) * parse_finite(value, where) : json_vec3(value, where);
+  const double s = value.is_number() ? parse_finite(value, where) : 0.0;
+  const Vec3d factors = value.is_number() ? Vec3d(s, s, s) : json_vec3d(value, where);
   if (factors.x == 0 || factors.y == 0 || factors.z == 0)
     fail_with_value(where, "scale factors must not be zero", value);
   return Transform::scale(factors);
@@ -228,7 +234,7 @@ Transform parse_operation(const nlohmann::json& op, const std::string& where) {
   const std::string key = op.begin().key();
   const nlohmann::json& value = op.begin().value();
   const std::string at = where + "." + key;
-  if (key == "translate") return Transform::translate(json_vec3(value, at));
+  if (key == "translate") return Transform::translate(json_vec3d(value, at));
   if (key == "scale") return parse_scale(value, at);
   if (key == "rotate") return parse_rotate(value, at);
   if (key == "matrix") return parse_matrix(value, at);

@@ -109,12 +109,28 @@ Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
   return len > 1e-6f ? x / len : Frame::from_normal(dir).s;
 }
 
+// Light arriving along a path: `receive` adds it to the Stokes vector it is given. Without groups, straight
+// into L (the bits of a render without groups); with them, into a fresh vector added to L and, its S0, to
+// the light's group.
+template <class Receive>
+void deliver(const LightSink& sink, int group, const Receive& receive) {
+  if (!sink.groups) {
+    receive(sink.L);
+    return;
+  }
+  SensorStokes c{};
+  receive(c);
+  for (size_t i = 0; i < c.size(); ++i) sink.L[i] += c[i];
+  if (group >= 0) sink.groups[group] += c[0] * sink.group_weight;
+}
+
 }  // namespace
 
 template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                                  const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
+                                  const Scene::LightPmfs* pmfs, PathStats& stats,
+                                  const LightSink& sink) const {
   // A single light is picked whatever the number: its dimension is not drawn.
   size_t index = 0;
   if (pmfs || scene_.light_selection.size() > 1) {
@@ -135,10 +151,8 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   const IncomingLight incoming = filtered_emission(light.polarizer_axis, -ls->wi, ls->radiance);
   if (incoming.radiance.is_black()) return;
 
-  Ray shadow;
-  shadow.origin = offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, ls->wi);
-  shadow.dir = ls->wi;
-  shadow.tmax = std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f);
+  const Ray shadow =
+      spawn_ray(v.sp, v.ng, ls->wi, std::isinf(ls->distance) ? INFINITY : ls->distance * (1.0f - 1e-4f));
   ++stats.shadow_rays;
   if (scene_.accel->occluded(shadow)) return;
 
@@ -146,13 +160,15 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   const float mis = ls->delta || ls->only_by_light_sampling
                         ? 1.0f
                         : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
-  throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
+  deliver(sink, group_of(static_cast<int>(index)), [&](SensorStokes& L) {
+    throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
+  });
 }
 
 template <class Sampler, class T>
 void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                                    LobeArena& arena, PathStats& stats, SensorStokes& L) const {
+                                    LobeArena& arena, PathStats& stats, const LightSink& sink) const {
   const MirrorLights::Choice choice =
       scene_.mirror_lights.sample(sampler.get_1d(SampleDims::bounce(depth, SampleDims::kMirrorLightChoice)));
   if (!(choice.pmf > 0.0f)) return;
@@ -179,7 +195,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (incoming.radiance.is_black()) return;
 
   // The first surface toward the image must be the mirror itself, and the light visible from there.
-  const Ray to_mirror{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  const Ray to_mirror = spawn_ray(v.sp, v.ng, wi);
   ++stats.rays;
   const auto hit = scene_.accel->intersect(to_mirror);
   if (!hit || static_cast<int>(hit->mesh) != mirror.mesh) return;
@@ -187,15 +203,13 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   m.sp = surface_point(scene_.meshes, *hit, to_mirror);
   const Vec3 wo_m = -wi;
   m.ng = dot(m.sp.ng, wo_m) >= 0.0f ? m.sp.ng : -m.sp.ng;
-  Ray shadow;
-  shadow.origin = offset_ray_origin(m.sp.p, m.sp.p_error, m.ng, ls->wi);
-  shadow.dir = ls->wi;
-  shadow.tmax = length(y - m.sp.p) * (1.0f - 1e-4f);
+  const Ray shadow = spawn_ray(m.sp, m.ng, ls->wi, length(y - m.sp.p) * (1.0f - 1e-4f));
   ++stats.shadow_rays;
   if (scene_.accel->occluded(shadow)) return;  // before the mirror's material: occluded samples skip it
 
   const Mesh& mesh = scene_.meshes[hit->mesh];
-  const ShadingContext ctx = shading_context(m.sp, lambda, scene_.textures.get(), &mesh);
+  const ShadingContext ctx =
+      shading_context(m.sp, scene_.origin.to_float(), lambda, scene_.textures.get(), &mesh);
   scene_.materials[mesh.material]->evaluate(ctx, arena, m.closure);  // after v's lobes: v stays valid
   m.frame = shading_frame(m.sp, m.ng, wo_m, false, m.closure);
   m.wo_local = m.frame.to_local(wo_m);
@@ -210,7 +224,9 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (at_x.m) storage->m = storage->m * k;
   T through_mirror = throughput;
   through_mirror.scatter(at_x, at_x.f * k);
-  through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+  deliver(sink, group_of(static_cast<int>(choice.light)), [&](SensorStokes& L) {
+    through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+  });
 }
 
 float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf,
@@ -226,6 +242,8 @@ float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3
 template <class T>
 struct PathState {
   SensorStokes L{};
+  SampledSpectrum* groups = nullptr;  // light groups (LightSink)
+  float group_weight = 1.0f;
   T beta;
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
@@ -245,7 +263,6 @@ template <class Sampler, class T>
 bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, const RayCone& cone,
                             const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
                             size_t arena_floor, bool own_lobes, PathStats& stats, FirstHit* first_hit) const {
-  const RenderSettings& settings = scene_.settings;
   const auto light_pmf = [&](int light) {
     return local_lights_ ? s.light_pmfs[light] : scene_.light_pmf(light);
   };
@@ -260,7 +277,10 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
                                             : scene_.environment->radiance(s.ray.dir, lambda, &env_pdf);
       const float w =
           s.specular ? 1.0f : power_heuristic(s.prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
-      s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, s.L);
+      deliver(LightSink{s.L, s.groups, s.group_weight}, group_of(scene_.environment_light),
+              [&](SensorStokes& L) {
+                s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, L);
+              });
     }
     return false;
   }
@@ -271,7 +291,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   const Mesh& mesh = scene_.meshes[hit->mesh];
   arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
   s.path_length += hit->t * length(s.ray.dir);
-  ShadingContext ctx = shading_context(v.sp, lambda, scene_.textures.get(), &mesh);
+  ShadingContext ctx = shading_context(v.sp, scene_.origin.to_float(), lambda, scene_.textures.get(), &mesh);
   // The camera's cone carried along the path (pbrt-v4 approximates later hits the same way); in uv
   // units through the triangle's world-per-uv scale.
   ctx.footprint = cone.width_at(s.path_length);
@@ -292,9 +312,11 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
       w = mirrored_emission_weight(s.chain_mirror, light, s.chain_origin, s.chain_pdf, v.sp.p, v.sp.ng);
     }
     const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
-    s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, s.L);
+    deliver(LightSink{s.L, s.groups, s.group_weight}, group_of(light), [&](SensorStokes& L) {
+      s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, L);
+    });
   }
-  if (depth >= static_cast<uint32_t>(settings.max_depth) || !v.closure.has_lobes()) return false;
+  if (depth >= max_depth_ || !v.closure.has_lobes()) return false;
 
   const bool refracts = v.closure.has_transmission();
   v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
@@ -304,9 +326,10 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
 
   if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
     if (local_lights_) scene_.light_pmfs(v.sp.p, s.light_pmfs);
-    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, s.L);
-    if (!scene_.mirror_lights.empty() && depth + 2 <= static_cast<uint32_t>(settings.max_depth))
-      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, s.L);
+    const LightSink sink{s.L, s.groups, s.group_weight};
+    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, sink);
+    if (!scene_.mirror_lights.empty() && depth + 2 <= max_depth_)
+      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, sink);
   }
   return true;
 }
@@ -334,22 +357,23 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
   // renders stay deterministic. From rr_depth (default 5, as Mitsuba) on: terminating earlier costs
   // more variance than it saves time, most of all on caustic paths (docs/performance.md, "Time to
   // error against Cycles").
-  if (depth + 1 >= static_cast<uint32_t>(scene_.settings.rr_depth)) {
+  if (depth + 1 >= rr_depth_) {
     const float survival = std::sqrt(s.beta.m00().max_value());
     if (survival < 1.0f) {
       if (sampler.get_1d(SampleDims::bounce(depth, SampleDims::kRoulette)) >= survival) return false;
       s.beta.scale(1.0f / survival);
     }
   }
-  s.ray = Ray{offset_ray_origin(v.sp.p, v.sp.p_error, v.ng, wi), wi};
+  s.ray = spawn_ray(v.sp, v.ng, wi);
   return true;
 }
 
 template <class Sampler, class T>
 SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
                                    const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
-                                   PathStats& stats, FirstHit* first_hit) const {
-  PathState<T> s{.beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+                                   PathStats& stats, FirstHit* first_hit, SampledSpectrum* groups) const {
+  PathState<T> s{.groups = groups,
+                 .beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
                            T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
                  .ray = camera_ray};
   PathVertex v;
@@ -377,6 +401,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     const Sampler numbers = sampler.branch(j, branches_);
     PathState<T> c = s;
     c.L = SensorStokes{};
+    c.group_weight = 1.0f / static_cast<float>(branches_);
     for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
       if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
@@ -389,22 +414,24 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
 template <class Sampler>
 SensorStokes PathIntegrator::radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                                       const Sampler& sampler, LobeArena& arena, PathStats& stats,
-                                      FirstHit* first_hit) const {
+                                      FirstHit* first_hit, SampledSpectrum* groups) const {
   switch (mode_) {
     case PolarizationMode::kOff:
-      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit,
+                                                   groups);
     case PolarizationMode::kIntensity:
-      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
     case PolarizationMode::kStokes:
-      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
   }
   return {};
 }
 
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                               const IndependentSampler&, LobeArena&, PathStats&,
-                                               FirstHit*) const;
+                                               const IndependentSampler&, LobeArena&, PathStats&, FirstHit*,
+                                               SampledSpectrum*) const;
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*) const;
+                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*,
+                                               SampledSpectrum*) const;
 
 }  // namespace ochre

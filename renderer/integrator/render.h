@@ -9,6 +9,7 @@
 #include "renderer/film/film.h"
 #include "renderer/film/render_split.h"
 #include "renderer/scene/polarization_mode.h"
+#include "renderer/scene/render_settings.h"
 #include "renderer/scene/scene.h"
 
 namespace ochre {
@@ -19,6 +20,7 @@ struct RenderStats {
   uint64_t rays = 0;              // intersect queries
   uint64_t shadow_rays = 0;       // occlusion queries
   uint64_t discarded = 0;         // NaN / Inf samples, counted as zero
+  uint64_t clamped = 0;           // samples beyond the film's range, clamped to it (kMaxSampleMagnitude)
   uint64_t nonfinite_values = 0;  // NaN / Inf values of material programs, made finite (non_finite_tally.h)
   int threads = 0;
   bool cancelled = false;  // stopped by the cancel flag: the film is incomplete
@@ -31,20 +33,21 @@ struct RenderStats {
 // Called with the number of pixel-samples finished since the last call (thread-safe use).
 using ProgressCallback = std::function<void(uint64_t)>;
 
-// The polarization mode a render of `scene` uses (settings, scene facts, requested outputs).
-PolarizationChoice polarization_for(const Scene& scene);
+// The polarization mode a render of `scene` uses (the job's setting, the scene's facts, a Stokes output).
+PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job);
 
 // Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film`. When `cancel`
 // becomes true (set from any thread, e.g. on Ctrl-C in Python), every tile stops before its next pixel and
 // render() returns with stats.cancelled: the film is then incomplete and must not be used.
-RenderStats render(const Scene& scene, Film& film, const ProgressCallback& progress = {},
-                   const std::atomic<bool>* cancel = nullptr);
+RenderStats render(const Scene& scene, const RenderJob& job, Film& film,
+                   const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
 
 // Renders samples `samples` of the pixels `rect` of the image into `film`, which is rect.width() x
 // rect.height() (film pixel (0, 0) is image pixel (rect.x0, rect.y0)). Random numbers depend on the image
 // pixel and the sample index only, so any split into rectangles and sample ranges, merged
 // (Film::merge), gives the bits of one render.
-RenderStats render_range(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
-                         const ProgressCallback& progress = {}, const std::atomic<bool>* cancel = nullptr);
+RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, const PixelRect& rect,
+                         SampleRange samples, const ProgressCallback& progress = {},
+                         const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace ochre

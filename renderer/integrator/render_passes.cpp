@@ -21,8 +21,9 @@ uint32_t samples_in(double seconds, double seconds_per_sample) {
 
 }  // namespace
 
-PassResult render_in_passes(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
-                            const PassSchedule& schedule, const ProgressCallback& progress,
+PassResult render_in_passes(const Scene& scene, const RenderJob& job, Film& film, const PixelRect& rect,
+                            SampleRange samples, const PassSchedule& schedule,
+                            const ProgressCallback& progress,
                             const std::function<void(uint32_t next, const RenderStats& so_far)>& checkpoint,
                             const std::function<bool()>& stop_requested) {
   PassResult result;
@@ -54,7 +55,7 @@ PassResult render_in_passes(const Scene& scene, Film& film, const PixelRect& rec
       n = std::min(n, fit);
     }
     n = std::min(n, samples.end - result.next);
-    const RenderStats pass = render_range(scene, film, rect, {result.next, result.next + n}, progress);
+    const RenderStats pass = render_range(scene, job, film, rect, {result.next, result.next + n}, progress);
     result.stats.add(pass);
     result.next += n;
     seconds_per_sample = std::max(pass.seconds / n, 1e-9);

@@ -33,8 +33,9 @@ struct PassResult {
 // Renders samples `samples` of the pixels `rect` into `film` in passes. `checkpoint(next, stats)` is called
 // at a pass boundary whenever checkpoint_interval has passed since the start or the last checkpoint
 // (not after the last pass); `stop_requested()` is asked before each pass.
-PassResult render_in_passes(const Scene& scene, Film& film, const PixelRect& rect, SampleRange samples,
-                            const PassSchedule& schedule, const ProgressCallback& progress,
+PassResult render_in_passes(const Scene& scene, const RenderJob& job, Film& film, const PixelRect& rect,
+                            SampleRange samples, const PassSchedule& schedule,
+                            const ProgressCallback& progress,
                             const std::function<void(uint32_t next, const RenderStats& so_far)>& checkpoint,
                             const std::function<bool()>& stop_requested);
 

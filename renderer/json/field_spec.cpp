@@ -186,6 +186,11 @@ Vec3 DeclaredFields::vec3(const char* key) const {
   return s.required ? fields_.required_vec3(key) : fields_.vec3(key, s.fallback_vec3);
 }
 
+Vec3d DeclaredFields::point(const char* key) const {
+  const FieldSpec& s = spec(key, FieldKind::kVec3);
+  return s.required ? fields_.required_vec3d(key) : fields_.vec3d(key, Vec3d(s.fallback_vec3));
+}
+
 std::pair<double, double> DeclaredFields::number_pair(const char* key) const {
   const FieldSpec& s = spec(key, FieldKind::kNumberPair);
   if (!fields_.has(key)) return s.fallback_pair;

@@ -85,6 +85,8 @@ class DeclaredFields {
   std::string string(const char* key) const;  // kString: "" when absent and optional
   std::string choice(const char* key) const;
   Vec3 vec3(const char* key) const;
+  // A kVec3 field that is a position: the numbers in double precision.
+  Vec3d point(const char* key) const;
   std::pair<double, double> number_pair(const char* key) const;
 
  private:

@@ -85,11 +85,15 @@ const nlohmann::json& json_array(const nlohmann::json& v, const std::string& whe
   return v;
 }
 
-Vec3 json_vec3(const nlohmann::json& v, const std::string& where) {
+Vec3d json_vec3d(const nlohmann::json& v, const std::string& where) {
   json_array(v, where, 3, "an array of 3 numbers [x, y, z]");
-  Vec3 r;
-  for (int i = 0; i < 3; ++i) r[i] = static_cast<float>(json_number(v[i], fmt::format("{}[{}]", where, i)));
-  return r;
+  double r[3];
+  for (int i = 0; i < 3; ++i) r[i] = json_number(v[i], fmt::format("{}[{}]", where, i));
+  return {r[0], r[1], r[2]};
+}
+
+Vec3 json_vec3(const nlohmann::json& v, const std::string& where) {
+  return json_vec3d(v, where).to_float();
 }
 
 JsonFields::JsonFields(const nlohmann::json& object, std::string where)
@@ -158,6 +162,14 @@ Vec3 JsonFields::required_vec3(const char* key) const {
 
 Vec3 JsonFields::vec3(const char* key, const Vec3& fallback) const {
   return has(key) ? required_vec3(key) : fallback;
+}
+
+Vec3d JsonFields::required_vec3d(const char* key) const {
+  return json_vec3d(require(key), child(key));
+}
+
+Vec3d JsonFields::vec3d(const char* key, const Vec3d& fallback) const {
+  return has(key) ? required_vec3d(key) : fallback;
 }
 
 }  // namespace ochre

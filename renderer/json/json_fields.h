@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "materials/core/vec3.h"
+#include "materials/core/vec3d.h"
 #include "spectra/input_error.h"
 
 namespace ochre {
@@ -47,6 +48,9 @@ class JsonFields {
   std::string required_string(const char* key) const;
   Vec3 vec3(const char* key, const Vec3& fallback) const;
   Vec3 required_vec3(const char* key) const;
+  // Positions: the same checks, the numbers kept in double precision (renderer/scene/scene.h, origin).
+  Vec3d vec3d(const char* key, const Vec3d& fallback) const;
+  Vec3d required_vec3d(const char* key) const;
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
 
@@ -81,7 +85,8 @@ std::string json_string(const nlohmann::json& value, const std::string& where);
 // An array of exactly `size` elements ("expected [width, height]" is `shape`).
 const nlohmann::json& json_array(const nlohmann::json& value, const std::string& where, size_t size,
                                  const char* shape);
-// An array of 3 numbers.
+// An array of 3 numbers, in single precision or (positions) double.
 Vec3 json_vec3(const nlohmann::json& value, const std::string& where);
+Vec3d json_vec3d(const nlohmann::json& value, const std::string& where);
 
 }  // namespace ochre

@@ -29,8 +29,13 @@ float luminance_estimate(const std::function<SampledSpectrum(const SampledWavele
 
 }  // namespace
 
-AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures)
-    : mesh_(mesh), material_(material), textures_(textures), memo_key_(new_wavelength_memo_key()) {
+AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures,
+                     const Vec3& origin)
+    : mesh_(mesh),
+      material_(material),
+      textures_(textures),
+      origin_(origin),
+      memo_key_(new_wavelength_memo_key()) {
   std::vector<double> areas(mesh.triangle_count());
   for (size_t i = 0; i < areas.size(); ++i) areas[i] = mesh.triangle_area(i);
   triangles_ = Distribution1D(areas);
@@ -76,7 +81,7 @@ SampledSpectrum AreaLight::evaluate_emission(const SurfacePoint& sp, const Sampl
   thread_local LobeArena arena;  // the default size holds kMaxLobes of the largest lobe
   arena.reset();
   Closure closure;
-  material_.evaluate(shading_context(sp, lambda, textures_), arena, closure);
+  material_.evaluate(shading_context(sp, origin_, lambda, textures_), arena, closure);
   return closure.emission();
 }
 

@@ -17,7 +17,9 @@ namespace ochre {
 
 class AreaLight final : public Light {
  public:
-  AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures);
+  // `origin`: the rendering origin, for textured emission that reads world positions.
+  AreaLight(const Mesh& mesh, const CompiledMaterial& material, const TextureProvider* textures,
+            const Vec3& origin = {0, 0, 0});
   std::optional<LightSample> sample(const Vec3& ref, const Vec2& u,
                                     const SampledWavelengths& lambda) const override;
   float power() const override { return power_; }
@@ -35,6 +37,7 @@ class AreaLight final : public Light {
   const Mesh& mesh_;
   const CompiledMaterial& material_;
   const TextureProvider* textures_;
+  Vec3 origin_;
   uint64_t memo_key_;  // of the per-thread memo of a uniform emission (spectra/wavelength_memo.h)
   SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;

@@ -69,7 +69,7 @@ BuiltLight build_flame(const LightContext& ctx) {
   const JsonFields& f = ctx.fields.fields();
   const FlamePreset& preset = flame_preset(f);
   FlameLight flame;
-  flame.position = f.required_vec3("position");
+  flame.position = (f.required_vec3d("position") - ctx.origin).to_float();
   const auto radius = static_cast<float>(f.number("radius", preset.radius_m, 0.0, 1e30, true));
   // A blackbody below 500 K emits almost nothing visible (and below ~200 K nothing in single precision).
   flame.cct_k = static_cast<float>(f.number("cct", preset.cct_k, 500.0, 1e5));

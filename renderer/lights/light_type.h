@@ -24,14 +24,20 @@ struct LightContext {
   const std::filesystem::path&
       dir;               // the folder of the file that holds the light: its paths are relative to it
   const Camera& camera;  // lights placed relative to the camera (camera_flash)
-  float scene_radius;    // lights at infinity estimate their power over the scene's bounding sphere
+  // The rendering origin in the scene's coordinates (renderer/scene/scene.h): a light at position p (read
+  // in double precision) is placed at p - origin.
+  const Vec3d& origin;
+  float scene_radius;  // lights at infinity estimate their power over the scene's bounding sphere
+
+  // The field `key` as a position in the coordinates the scene renders in.
+  Vec3 position(const char* key) const { return (fields.point(key) - origin).to_float(); }
 };
 
 struct BuiltLight {
   std::unique_ptr<Light> light;
   std::optional<FlameLight> flame;  // a flame flickers in frame sequences; its light is `light`
-  // The field a message names when the light's power overflows single precision; empty: no check (the
-  // environment's power is bounded by its map).
+  // The field a message names when the light's power overflows single precision (a radiance of 3e38 would
+  // turn every sample it reaches into infinity); empty: no check.
   std::string power_field;
 };
 
@@ -45,7 +51,7 @@ struct LightType {
   // Reads `f` (a "lights" entry of this type) through the declarations, refusing unknown keys, and builds
   // the light. `dir`, `camera` and `scene_radius` as in LightContext.
   BuiltLight load(const JsonFields& f, const std::filesystem::path& dir, const Camera& camera,
-                  float scene_radius) const;
+                  const Vec3d& origin, float scene_radius) const;
 };
 
 // "polarizer": {"axis": [x, y, z]} in front of a light or an emissive shape: the world transmission axis
@@ -53,6 +59,10 @@ struct LightType {
 std::optional<Vec3> parse_light_polarizer(const JsonFields& f);
 // The declaration of that field.
 FieldSpec polarizer_field();
+// "group" of a light, "light_group" of an emissive shape: its declaration, and the name (InputError naming
+// the field unless it is 1 to 64 letters, digits, '_' or '-', and not the reserved "other"; "" when absent).
+FieldSpec light_group_field(const char* name);
+std::string parse_light_group(const JsonFields& f, const char* key);
 
 class LightRegistry : public TypeRegistry<LightType> {
  public:

@@ -47,7 +47,7 @@ BuiltLight build_point(const LightContext& ctx) {
   const DeclaredFields& f = ctx.fields;
   const JsonFields& j = f.fields();
   auto light = std::make_unique<PointLight>(
-      f.vec3("position"),
+      ctx.position("position"),
       parse_spectrum(j.require("intensity"), SpectrumRole::Illuminant, j.child("intensity"), ctx.dir));
   light->polarizer_axis = parse_light_polarizer(j);
   return {std::move(light), std::nullopt, "intensity"};

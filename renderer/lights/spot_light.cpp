@@ -67,11 +67,12 @@ namespace {
 BuiltLight build_spot(const LightContext& ctx) {
   const DeclaredFields& f = ctx.fields;
   const JsonFields& j = f.fields();
-  const Vec3 position = f.vec3("position");
+  const Vec3 position = ctx.position("position");
   if (f.has("direction") == f.has("target")) f.fail("", "give exactly one of \"direction\" or \"target\"");
   const char* aim = f.has("direction") ? "direction" : "target";
-  const Vec3 direction =
-      f.has("direction") ? j.required_vec3("direction") : j.required_vec3("target") - position;
+  // The aim at a target: from the two positions in double precision.
+  const Vec3 direction = f.has("direction") ? j.required_vec3("direction")
+                                            : (j.required_vec3d("target") - f.point("position")).to_float();
   if (!(length(direction) > 0.0f) || !std::isfinite(length(direction)))
     f.fail(aim, "gives no direction (zero, or a length that over- or underflows single precision)");
   const SpotLight::Falloff shape =

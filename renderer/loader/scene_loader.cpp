@@ -90,8 +90,22 @@ std::array<double, 3> parse_white_balance(const JsonFields& f, const std::filesy
   return {double(xyz.x) / xyz.y, 1.0, double(xyz.z) / xyz.y};
 }
 
-void load_settings(const JsonFields& top, Scene& scene) {
-  RenderSettings& s = scene.settings;
+// A choice field of the scene (film.colorspace, integrator.sampler, ...): its enum value, or an error
+// naming the field and the known values.
+template <class Enum, size_t N>
+Enum parse_choice(const JsonFields& f, const char* key, const NamedChoices<Enum, N>& choices, Enum fallback,
+                  const char* what) {
+  if (!f.has(key)) return fallback;
+  const std::string text = f.required_string(key);
+  const std::optional<Enum> value = choices.parse(text);
+  if (!value) f.fail(key, fmt::format("unknown {} '{}' (known: {})", what, text, choices.list()));
+  return *value;
+}
+
+void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir, RenderJob& job,
+                   PixelFilter& pixel_filter) {
+  RenderSettings& s = job.settings;
+  OutputSettings& outputs = job.outputs;
   if (top.has("film")) {
     const JsonFields f(top.require("film"), top.child("film"));
     f.check_known({"resolution", "colorspace", "filter"});
@@ -101,58 +115,56 @@ void load_settings(const JsonFields& top, Scene& scene) {
       s.width = static_cast<int>(json_integer(r[0], where + "[0]", 1, kMaxResolution));
       s.height = static_cast<int>(json_integer(r[1], where + "[1]", 1, kMaxResolution));
     }
-    scene.outputs.colorspace = f.string("colorspace", scene.outputs.colorspace);
+    outputs.colorspace = parse_choice(f, "colorspace", kWorkingSpaces, outputs.colorspace, "colorspace");
     if (f.has("filter"))
-      scene.pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
+      pixel_filter = parse_pixel_filter(JsonFields(f.require("filter"), f.child("filter")));
   }
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "branches", "seed", "threads", "polarization",
-                   "sampler", "mirror_lights", "light_selection"});
+                   "sampler", "mirror_lights", "light_selection", "noise_threshold"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    s.noise_threshold = f.number("noise_threshold", s.noise_threshold, 0.0, 1.0);
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
-    s.light_selection = f.string("light_selection", s.light_selection);
-    if (s.light_selection != "local" && s.light_selection != "power")
-      f.fail("light_selection",
-             fmt::format("unknown light selection '{}' (known: local, power)", s.light_selection));
+    s.light_selection =
+        parse_choice(f, "light_selection", kLightSelections, s.light_selection, "light selection");
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
-    s.polarization = f.string("polarization", s.polarization);
-    s.sampler = f.string("sampler", s.sampler);
+    s.polarization = parse_choice(f, "polarization", kPolarizationSettings, s.polarization, "mode");
+    s.sampler = parse_choice(f, "sampler", kSamplerKinds, s.sampler, "sampler");
   }
   if (top.has("output")) {
     const JsonFields f(top.require("output"), top.child("output"));
     f.check_known({"exr", "png", "ocio_config", "display", "view", "exposure", "white_balance", "aovs",
                    "spectral_bins", "spectral_range", "stokes", "polarization_png"});
-    const std::filesystem::path dir = scene.file.parent_path();
-    if (f.has("exr")) scene.outputs.exr = (dir / f.required_string("exr")).string();
-    if (f.has("png")) scene.outputs.png = (dir / f.required_string("png")).string();
-    scene.outputs.ocio_config = f.string("ocio_config", "");
-    scene.outputs.display = f.string("display", "");
-    scene.outputs.view = f.string("view", "");
-    scene.outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
-    if (f.has("white_balance")) scene.outputs.white_balance_xyz = parse_white_balance(f, dir);
-    scene.outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
+    const std::filesystem::path& dir = scene_dir;
+    if (f.has("exr")) outputs.exr = (dir / f.required_string("exr")).string();
+    if (f.has("png")) outputs.png = (dir / f.required_string("png")).string();
+    outputs.ocio_config = f.string("ocio_config", "");
+    outputs.display = f.string("display", "");
+    outputs.view = f.string("view", "");
+    outputs.exposure = static_cast<float>(f.number("exposure", 0.0, -64.0, 64.0));
+    if (f.has("white_balance")) outputs.white_balance_xyz = parse_white_balance(f, dir);
+    outputs.spectral_bins = static_cast<int>(f.integer("spectral_bins", 0, 0, 471));
     if (f.has("spectral_range")) {
       // Up to 1200 nm: a camera sensor may see beyond the visible (docs/cameras.md).
       const auto [lo, hi] = number_pair(f, "spectral_range", "[min, max] in nm", 300.0, 1200.0, false);
       if (!(lo < hi)) f.fail("spectral_range", fmt::format("min must be < max (got [{}, {}])", lo, hi));
-      scene.outputs.spectral_min = static_cast<float>(lo);
-      scene.outputs.spectral_max = static_cast<float>(hi);
+      outputs.spectral_min = static_cast<float>(lo);
+      outputs.spectral_max = static_cast<float>(hi);
     }
-    scene.outputs.stokes = f.boolean("stokes", scene.outputs.stokes);
+    outputs.stokes = f.boolean("stokes", outputs.stokes);
     if (f.has("polarization_png"))
-      scene.outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
-    scene.outputs.aovs = f.boolean("aovs", scene.outputs.aovs);
+      outputs.polarization_png = (dir / f.required_string("polarization_png")).string();
+    outputs.aovs = f.boolean("aovs", outputs.aovs);
   }
 }
 
-void check_settings(const Scene& scene, const std::string& file) {
-  const RenderSettings& s = scene.settings;
+void check_settings(const RenderSettings& s, const std::string& file) {
   if (s.width < 1 || s.height < 1 || s.width > kMaxResolution || s.height > kMaxResolution)
     throw InputError(fmt::format("{}: film.resolution: must be between 1x1 and {}x{} (got {}x{})", file,
                                  kMaxResolution, kMaxResolution, s.width, s.height));
@@ -160,16 +172,6 @@ void check_settings(const Scene& scene, const std::string& file) {
   if (s.threads < 0 || s.threads > kMaxThreads)  // an override (the scene's own value is checked on reading)
     throw InputError(
         fmt::format("{}: integrator.threads: must be in [0, {}] (got {})", file, kMaxThreads, s.threads));
-  const std::string& p = s.polarization;
-  if (p != "auto" && p != "off" && p != "intensity" && p != "stokes")
-    throw InputError(fmt::format(
-        "{}: integrator.polarization: unknown mode '{}' (known: auto, off, intensity, stokes)", file, p));
-  if (s.sampler != "independent" && s.sampler != "sobol")
-    throw InputError(fmt::format("{}: integrator.sampler: unknown sampler '{}' (known: independent, sobol)",
-                                 file, s.sampler));
-  const std::string& cs = scene.outputs.colorspace;
-  if (cs != "rec709" && cs != "acescg")
-    throw InputError(fmt::format("{}: film.colorspace: unknown '{}' (known: rec709, acescg)", file, cs));
 }
 
 // "polarizer": {"angle": degrees} on the camera: a linear analyzer whose transmission axis is turned by
@@ -192,7 +194,9 @@ FovAxis parse_fov_axis(const JsonFields& f) {
   f.fail("fov_axis", fmt::format("unknown axis '{}' (known: smaller, larger, x, y, diagonal)", axis));
 }
 
-Camera load_camera(const JsonFields& top, const RenderSettings& s) {
+// The camera, placed at the rendering origin (Scene::origin, set here to the camera's position in the
+// scene's coordinates): what the camera sees is rendered in coordinates relative to it.
+Camera load_camera(const JsonFields& top, const RenderSettings& s, Vec3d& origin) {
   const nlohmann::json camera = top.has("camera") ? top.require("camera") : nlohmann::json::object();
   const JsonFields f(camera, top.child("camera"));
   f.check_known(
@@ -208,22 +212,28 @@ Camera load_camera(const JsonFields& top, const RenderSettings& s) {
   if (f.has("transform")) {
     // Camera-to-world; the camera looks along -z with +y up (glTF / OpenGL convention).
     const Transform t = parse_transform(f.require("transform"), f.child("transform"));
-    basis.eye = t.point({0, 0, 0});
-    if (!within_scene_limit(basis.eye)) f.fail("transform", "places the camera " + beyond_scene_limit());
+    origin = t.point_double(Vec3d{0, 0, 0});
+    if (!within_scene_limit(origin.to_float()))
+      f.fail("transform", "places the camera " + beyond_scene_limit());
+    basis.eye = {0, 0, 0};
     basis.forward = normalize(t.vector({0, 0, -1}));
     basis.up = normalize(t.vector({0, 1, 0}));
     basis.right = normalize(cross(basis.forward, basis.up));
     basis.up = cross(basis.right, basis.forward);
   } else {
-    const Vec3 eye = f.vec3("eye", {0, 0, 5}), target = f.vec3("target", {0, 0, 0}),
-               up = f.vec3("up", {0, 1, 0});
-    if (!within_scene_limit(eye)) f.fail("eye", "lies " + beyond_scene_limit());
-    if (!(length(target - eye) > 0.0f)) f.fail("target", "must differ from eye");
-    if (!std::isfinite(length(target - eye)))
+    const Vec3d eye = f.vec3d("eye", {0, 0, 5}), target = f.vec3d("target", {0, 0, 0});
+    const Vec3 up = f.vec3("up", {0, 1, 0});
+    if (!within_scene_limit(eye.to_float())) f.fail("eye", "lies " + beyond_scene_limit());
+    // The view direction from the two positions in double precision: a target 1 m from an eye at 5e6 keeps
+    // its direction.
+    const Vec3 view = (target - eye).to_float();
+    if (!(length(view) > 0.0f)) f.fail("target", "must differ from eye");
+    if (!std::isfinite(length(view)))
       f.fail("target", "is too far from eye (the distance overflows single precision)");
-    if (length(cross(normalize(target - eye), up)) < 1e-6f)
+    if (length(cross(normalize(view), up)) < 1e-6f)
       f.fail("up", "must not be parallel to the view direction");
-    basis = camera_basis_look_at(eye, target, up);
+    origin = eye;
+    basis = camera_basis_look_at({0, 0, 0}, view, up);
   }
   if (type == "perspective") return Camera::perspective(basis, fov, s.width, s.height);
   if (type == "orthographic") return Camera::orthographic(basis, size, s.width, s.height);
@@ -281,9 +291,13 @@ int part_material(Scene& scene, MaterialTemplates& templates, const JsonFields& 
   return index;
 }
 
-Transform shape_transform(const JsonFields& f) {
-  return f.has("transform") ? parse_transform(f.require("transform"), f.child("transform"))
-                            : Transform::identity();
+// The shape's "transform" followed by the shift to the rendering origin (Scene::origin), composed in double
+// precision: the vertices are rounded to single precision once, relative to the camera.
+Transform shape_transform(const JsonFields& f, const Vec3d& origin) {
+  const Transform to_world = f.has("transform")
+                                 ? parse_transform(f.require("transform"), f.child("transform"))
+                                 : Transform::identity();
+  return Transform::translate(-origin) * to_world;
 }
 
 // A mesh file with several materials (photogrammetry with several texture atlases): one scene mesh per
@@ -294,10 +308,10 @@ std::vector<Mesh> load_material_parts(const DeclaredFields& f, const std::filesy
     if (f.has(key)) f.fail(key, "is not supported with \"materials\" (one mesh per file material)");
   const JsonFields map(f.fields().require("materials"), f.fields().child("materials"));
   const std::filesystem::path path = mesh_file(f, dir);
-  const Transform to_world = shape_transform(f.fields());
+  const Transform to_world = shape_transform(f.fields(), scene.origin);
   const MeshImportOptions options = mesh_import_options(f);
-  std::vector<MeshMaterialPart> parts =
-      f.fields().in_context("file", [&] { return import_mesh_by_material(path, to_world, options); });
+  std::vector<MeshMaterialPart> parts = f.fields().in_context(
+      "file", [&] { return import_mesh_by_material(path, to_world, options, &scene.warnings); });
   std::string file_materials;
   for (const MeshMaterialPart& part : parts)
     file_materials += (file_materials.empty() ? "'" : ", '") + part.material + "'";
@@ -328,8 +342,8 @@ std::vector<Mesh> load_material_parts(const DeclaredFields& f, const std::filesy
 // `dir`: the folder of the file that holds the shape (its paths are relative to it).
 Mesh load_shape(const DeclaredFields& f, const ShapeType& type, Scene& scene,
                 const MaterialTemplates& templates, const std::filesystem::path& dir) {
-  const Transform to_world = shape_transform(f.fields());
-  Mesh mesh = type.build(ShapeContext{f, to_world, dir, *scene.textures});
+  const Transform to_world = shape_transform(f.fields(), scene.origin);
+  Mesh mesh = type.build(ShapeContext{f, to_world, dir, *scene.textures, scene.origin, scene.warnings});
   // Every shape may face the other way; procedural ones may flip their uvs (meshes do it on import).
   if (f.boolean("flip_normals")) flip_normals(mesh);
   if (type.loader_flips_uv && f.boolean("flip_uv_v")) flip_uv_v(mesh);
@@ -359,11 +373,15 @@ void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scen
       meshes.push_back(load_shape(fields, type, scene, templates, shape.file.parent_path()));
     }
     const std::optional<Vec3> polarizer = parse_light_polarizer(f);
+    const std::string group = parse_light_group(f, "light_group");
     for (Mesh& mesh : meshes) {
       if (polarizer && !scene.materials[mesh.material]->facts().is_emissive)
         f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+      if (!group.empty() && !scene.materials[mesh.material]->facts().is_emissive)
+        f.fail("light_group", "a light group holds lights: this shape's material does not emit");
       scene.meshes.push_back(std::move(mesh));
       scene.mesh_polarizers.push_back(polarizer);
+      scene.mesh_light_groups.push_back(group);
     }
   }
 }
@@ -382,7 +400,7 @@ void load_lights(const SceneSources& sources, Scene& scene, float scene_radius) 
     const LightType& type = LightRegistry::builtin().type_of(f);
     if (type.one_per_scene && scene.environment)
       f.fail("type", fmt::format("only one {} light is allowed", type.name));
-    BuiltLight built = type.load(f, dir, scene.camera, scene_radius);
+    BuiltLight built = type.load(f, dir, scene.camera, scene.origin, scene_radius);
     if (!built.power_field.empty()) check_power(*built.light, f, built.power_field.c_str());
     if (type.one_per_scene) scene.environment = static_cast<const EnvironmentLight*>(built.light.get());
     if (built.flame) {
@@ -408,6 +426,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.polarization) s.polarization = *o.polarization;
   if (o.sampler) s.sampler = *o.sampler;
   if (o.branches) s.branches = *o.branches;
+  if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 
 // An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power
@@ -422,33 +441,47 @@ void check_area_light_power(const Scene& scene, const JsonFields& top) {
   }
 }
 
-std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string& file,
-                                   const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+void check_no_parameters(const SceneOverrides& overrides, const std::string& file) {
   if (!overrides.parameters.empty())
     throw InputError(fmt::format("{}: scene parameters ({}=...) apply to Mitsuba XML scenes only", file,
                                  overrides.parameters.front().first));
-  auto scene = std::make_unique<Scene>();
+}
+
+// What every load starts with: the scene's top-level keys checked, its film, integrator and output settings
+// read and the overrides applied (build_scene goes on with the rest; job_of_json stops here).
+void load_job_settings(const JsonFields& top, const std::filesystem::path& scene_dir,
+                       const SceneOverrides& overrides, const std::string& file, RenderJob& job,
+                       PixelFilter& pixel_filter) {
+  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
+                   "description", "include", "presets"});
+  (void)top.string("description", "");  // its type, checked here as when the whole scene loads
+  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
+    top.fail("ochre", "expected a version string or number");
+  load_settings(top, scene_dir, job, pixel_filter);
+  apply_overrides(overrides, job.settings);
+  check_settings(job.settings, file);
+}
+
+LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
+                        const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  check_no_parameters(overrides, file);
+  LoadedScene loaded{std::make_unique<Scene>(), RenderJob{}};
+  Scene* scene = loaded.scene.get();
+  RenderJob& job = loaded.job;
   scene->file = std::filesystem::absolute(scene_path);
   const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
   const JsonFields top(sources.root, file + ":");
-  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
-                   "description", "include", "presets"});
+  load_job_settings(top, scene->file.parent_path(), overrides, file, job, scene->pixel_filter);
   scene->description = top.string("description", "");
-  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
-    top.fail("ochre", "expected a version string or number");
-
-  load_settings(top, *scene);
-  apply_overrides(overrides, scene->settings);
-  check_settings(*scene, file);
-  scene->camera = load_camera(top, scene->settings);
+  scene->camera = load_camera(top, job.settings, scene->origin);
   if (top.has("camera")) {
     const JsonFields camera(top.require("camera"), top.child("camera"));
     scene->camera_analyzer = parse_camera_polarizer(camera);
     const CameraSensor sensor = parse_camera_sensor(camera, scene->file.parent_path());
     scene->sensor = sensor.response;
-    scene->outputs.sensor = sensor.name;
-    scene->outputs.camera_rgb = sensor.camera_rgb;
-    scene->outputs.sensor_to_xyz = sensor.sensor_to_xyz;
+    job.outputs.sensor = sensor.name;
+    job.outputs.camera_rgb = sensor.camera_rgb;
+    job.outputs.sensor_to_xyz = sensor.sensor_to_xyz;
   }
 
   scene->textures = std::make_unique<OiioTextureProvider>();
@@ -466,48 +499,43 @@ std::unique_ptr<Scene> build_scene(const nlohmann::json& root, const std::string
     scene->needs_uv = scene->needs_uv || m->facts().needs_uv;
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
-  scene->build_lights();
+  scene->build_lights(job.settings.mirror_lights);
+  job.outputs.light_groups = scene->light_groups;
   check_area_light_power(*scene, top);
-  return scene;
+  if (scene->light_groups.size() > Scene::kMaxLightGroups)
+    top.fail("lights",
+             fmt::format("{} light groups (with \"other\", the emitters that name none); at most {}",
+                         scene->light_groups.size(), Scene::kMaxLightGroups));
+  return loaded;
 }
 
-std::unique_ptr<Scene> load_scene_checked(const nlohmann::json& root, const std::string& name,
-                                          const std::filesystem::path& scene_path,
-                                          const SceneOverrides& overrides) {
-  try {
-    return build_scene(root, name, scene_path, overrides);
-  } catch (const GraphError& e) {
-    throw InputError(e.what());
-  } catch (const nlohmann::json::exception& e) {
-    // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
-    throw InputError(fmt::format("{}: {}", name, e.what()));
-  }
+RenderJob job_of_json(const nlohmann::json& root, const std::string& file,
+                      const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  check_no_parameters(overrides, file);
+  const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
+  RenderJob job;
+  PixelFilter pixel_filter;
+  load_job_settings(JsonFields(sources.root, file + ":"), std::filesystem::absolute(scene_path).parent_path(),
+                    overrides, file, job, pixel_filter);
+  return job;
 }
 
-// translate_mitsuba_scene, then load_scene_json with `overrides` (overrides.parameters are the $name
-// parameters); the loader's messages are told at the XML element the failing part came from.
-std::unique_ptr<Scene> load_mitsuba_scene(const std::filesystem::path& file,
-                                          const SceneOverrides& overrides) {
-  const MitsubaTranslation translation = translate_mitsuba_scene(file, overrides.parameters);
-  SceneOverrides json_overrides = overrides;
-  json_overrides.parameters.clear();
+// `load()` (build_scene or job_of_json for the scene `name`), its errors as InputError naming the file; a
+// value a preset wrote is reported where it landed, with the preset that put it there.
+template <class Load>
+auto with_scene_messages(const std::string& name, const SceneOverrides& overrides, const Load& load)
+    -> decltype(load()) {
   try {
-    return load_scene_json(translation.scene, file.string(), file, json_overrides);
+    try {
+      return load();
+    } catch (const GraphError& e) {
+      throw InputError(e.what());
+    } catch (const nlohmann::json::exception& e) {
+      // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
+      throw InputError(fmt::format("{}: {}", name, e.what()));
+    }
   } catch (const InputError& e) {
-    throw InputError(translation.at_origin(e.what(), file.string()));
-  }
-}
-
-}  // namespace
-
-std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::string& name,
-                                       const std::filesystem::path& scene_path,
-                                       const SceneOverrides& overrides) {
-  if (!overrides.preset) return load_scene_checked(root, name, scene_path, overrides);
-  try {
-    return load_scene_checked(root, name, scene_path, overrides);
-  } catch (const InputError& e) {
-    // A value the preset wrote is reported where it landed: say which preset put it there.
+    if (!overrides.preset) throw;
     const std::string message = e.what();
     if (message.find("presets") != std::string::npos) throw;
     throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
@@ -515,9 +543,45 @@ std::unique_ptr<Scene> load_scene_json(const nlohmann::json& root, const std::st
   }
 }
 
-std::unique_ptr<Scene> load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
-  if (is_mitsuba_scene_file(path)) return load_mitsuba_scene(path, overrides);
+// translate_mitsuba_scene, then `load(json, overrides)` with the overrides of the JSON scene
+// (overrides.parameters are the $name parameters); the loader's messages are told at the XML element the
+// failing part came from.
+template <class Load>
+auto load_mitsuba(const std::filesystem::path& file, const SceneOverrides& overrides, const Load& load)
+    -> decltype(load(nlohmann::json(), overrides)) {
+  const MitsubaTranslation translation = translate_mitsuba_scene(file, overrides.parameters);
+  SceneOverrides json_overrides = overrides;
+  json_overrides.parameters.clear();
+  try {
+    return load(translation.scene, json_overrides);
+  } catch (const InputError& e) {
+    throw InputError(translation.at_origin(e.what(), file.string()));
+  }
+}
+
+}  // namespace
+
+LoadedScene load_scene_json(const nlohmann::json& root, const std::string& name,
+                            const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  return with_scene_messages(name, overrides, [&] { return build_scene(root, name, scene_path, overrides); });
+}
+
+LoadedScene load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  if (is_mitsuba_scene_file(path))
+    return load_mitsuba(path, overrides,
+                        [&](const nlohmann::json& root, const SceneOverrides& json_overrides) {
+                          return load_scene_json(root, path.string(), path, json_overrides);
+                        });
   return load_scene_json(read_json_file(path, "scene file"), path.string(), path, overrides);
+}
+
+RenderJob load_render_job(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  const auto load_json = [&](const nlohmann::json& root, const SceneOverrides& json_overrides) {
+    return with_scene_messages(path.string(), json_overrides,
+                               [&] { return job_of_json(root, path.string(), path, json_overrides); });
+  };
+  if (is_mitsuba_scene_file(path)) return load_mitsuba(path, overrides, load_json);
+  return load_json(read_json_file(path, "scene file"), overrides);
 }
 
 }  // namespace ochre

@@ -1,6 +1,7 @@
 #include "renderer/output/render_identity.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -57,31 +58,40 @@ std::string scene_content_hash(const std::vector<InputFileRecord>& scene_inputs)
 
 const std::vector<std::string>& identity_field_names() {
   static const std::vector<std::string> names = {
-      "ochre.version", "ochre.sceneHash",    "ochre.resolution",    "ochre.spp",        "ochre.seed",
-      "ochre.sampler", "ochre.polarization", "ochre.maxDepth",      "ochre.rrDepth",    "ochre.aovs",
-      "ochre.stokes",  "ochre.spectralBins", "ochre.spectralRange", "ochre.colorspace", "ochre.sensor"};
+      "ochre.version",       "ochre.sceneHash",      "ochre.resolution",     "ochre.spp",
+      "ochre.seed",          "ochre.sampler",        "ochre.polarization",   "ochre.maxDepth",
+      "ochre.rrDepth",       "ochre.aovs",           "ochre.stokes",         "ochre.spectralBins",
+      "ochre.spectralRange", "ochre.colorspace",     "ochre.sensor",         "ochre.branches",
+      "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame",
+      "ochre.lightGroups"};
   return names;
 }
 
-RenderIdentity render_identity(const Scene& scene, const std::string& content_hash) {
-  const RenderSettings& s = scene.settings;
-  const FilmLayers layers = film_layers(scene.outputs);
+RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const std::string& content_hash) {
+  const RenderSettings& s = job.settings;
+  const FilmLayers layers = film_layers(job.outputs);
   const std::map<std::string, std::string> values = {
       {"ochre.version", OCHRE_VERSION},
       {"ochre.sceneHash", content_hash},
       {"ochre.resolution", fmt::format("{}x{}", s.width, s.height)},
       {"ochre.spp", std::to_string(s.spp)},
       {"ochre.seed", std::to_string(s.seed)},
-      {"ochre.sampler", s.sampler},
-      {"ochre.polarization", polarization_mode_name(polarization_for(scene).mode)},
+      {"ochre.sampler", kSamplerKinds.name(s.sampler)},
+      {"ochre.polarization", polarization_mode_name(polarization_for(scene, job).mode)},
       {"ochre.maxDepth", std::to_string(s.max_depth)},
       {"ochre.rrDepth", std::to_string(s.rr_depth)},
       {"ochre.aovs", layers.aovs ? "1" : "0"},
       {"ochre.stokes", layers.stokes ? "1" : "0"},
       {"ochre.spectralBins", std::to_string(layers.spectral_bins)},
       {"ochre.spectralRange", fmt::format("{}-{}", layers.spectral_min, layers.spectral_max)},
-      {"ochre.colorspace", scene.outputs.colorspace},
-      {"ochre.sensor", sensor_identity(scene.outputs)},
+      {"ochre.colorspace", kWorkingSpaces.name(job.outputs.colorspace)},
+      {"ochre.sensor", sensor_identity(job.outputs)},
+      {"ochre.branches", std::to_string(s.branches)},
+      {"ochre.mirrorLights", s.mirror_lights ? "1" : "0"},
+      {"ochre.lightSelection", kLightSelections.name(s.light_selection)},
+      {"ochre.noiseThreshold", fmt::format("{}", s.noise_threshold)},
+      {"ochre.frame", s.frame ? fmt::format("{} at {} fps", *s.frame, s.fps) : std::string()},
+      {"ochre.lightGroups", fmt::format("{}", fmt::join(layers.light_groups, ","))},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/scene/render_settings.h"
 #include "spectra/input_file.h"
 
 namespace ochre {
@@ -25,7 +26,7 @@ std::string scene_content_hash(const std::vector<InputFileRecord>& scene_inputs)
 // The identity of a render of `scene` (its settings and outputs already final) with that content hash.
 // The film's layers follow from the fields "ochre.aovs", "ochre.stokes", "ochre.spectralBins" and
 // "ochre.spectralRange".
-RenderIdentity render_identity(const Scene& scene, const std::string& content_hash);
+RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const std::string& content_hash);
 
 // The names of the identity fields, in order.
 const std::vector<std::string>& identity_field_names();

@@ -23,7 +23,7 @@ DisplayOptions display_options(const OutputSettings& o) {
   d.ocio_config = o.ocio_config;
   d.display = o.display;
   d.view = o.view;
-  d.working_space = o.colorspace;
+  d.working_space = kWorkingSpaces.name(o.colorspace);
   d.exposure_stops = o.exposure;
   d.white_balance_xyz = o.white_balance_xyz;
   return d;
@@ -32,8 +32,7 @@ DisplayOptions display_options(const OutputSettings& o) {
 namespace {
 // Layers "albedo.R/G/B" (working space), "normal.X/Y/Z" (world), "depth.Z" (distance along the camera
 // ray, 0 where nothing was hit) and "samples.Y" (samples per pixel).
-void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage& image) {
-  const ColorSpace space = parse_color_space(colorspace);
+void add_aov_channels(const Film& film, ColorSpace space, ExrImage& image) {
   const size_t n = static_cast<size_t>(film.width()) * film.height();
   std::vector<std::vector<float>> c(8, std::vector<float>(n));
   for (int y = 0; y < film.height(); ++y)
@@ -54,6 +53,15 @@ void add_aov_channels(const Film& film, const std::string& colorspace, ExrImage&
   const char* names[8] = {"albedo.R", "albedo.G", "albedo.B", "normal.X",
                           "normal.Y", "normal.Z", "depth.Z",  "samples.Y"};
   for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
+}
+
+// "samples.Y" alone: where a noise-threshold render put its samples (with AOVs it is one of them).
+void add_sample_count_channel(const Film& film, ExrImage& image) {
+  std::vector<float> count(static_cast<size_t>(film.width()) * film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      count[static_cast<size_t>(y) * film.width() + x] = static_cast<float>(film.sample_count(x, y));
+  image.channels.emplace_back("samples.Y", std::move(count));
 }
 
 }  // namespace
@@ -92,19 +100,55 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
   return nm;
 }
 
+namespace {
+
+// The working-space RGB of one film value (XYZ, or a camera sensor's R, G, B), as the image's R, G, B.
+RGB output_rgb(const XYZ& m, const OutputSettings& outputs) {
+  if (outputs.camera_rgb) return {m.x, m.y, m.z};
+  if (!outputs.sensor_to_xyz) return xyz_to_rgb(m, outputs.colorspace);
+  const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+  return xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                    outputs.colorspace);
+}
+
+void add_light_group_channels(const Film& film, const OutputSettings& outputs, ExrImage& image) {
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::string names;
+  for (size_t g = 0; g < film.light_groups().size(); ++g) {
+    std::array<std::vector<float>, 3> c{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        const RGB rgb = output_rgb(film.mean_group(x, y, g), outputs);
+        const size_t i = static_cast<size_t>(y) * film.width() + x;
+        c[0][i] = rgb.r;
+        c[1][i] = rgb.g;
+        c[2][i] = rgb.b;
+      }
+    const std::string& group = film.light_groups()[g];
+    for (int k = 0; k < 3; ++k)
+      image.channels.emplace_back(fmt::format("group.{}.{}", group, "RGB"[k]), std::move(c[k]));
+    names += (names.empty() ? "" : ",") + group;
+  }
+  image.string_attributes["ochre.lightGroups"] = names;
+  // The display transform, for `ochre relight` to make the display image as the render did.
+  image.string_attributes["ochre.display.ocioConfig"] = outputs.ocio_config;
+  image.string_attributes["ochre.display.display"] = outputs.display;
+  image.string_attributes["ochre.display.view"] = outputs.view;
+  image.string_attributes["ochre.display.exposure"] = fmt::format("{}", outputs.exposure);
+  if (outputs.white_balance_xyz)
+    image.string_attributes["ochre.display.whiteBalance"] =
+        fmt::format("{} {} {}", (*outputs.white_balance_xyz)[0], (*outputs.white_balance_xyz)[1],
+                    (*outputs.white_balance_xyz)[2]);
+}
+
+}  // namespace
+
 std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
   if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
-  const ColorSpace space = parse_color_space(outputs.colorspace);
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
-      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
-      RGB c{m.x, m.y, m.z};
-      if (!outputs.camera_rgb) {
-        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
-        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
-                       space);
-      }
+      const RGB c = output_rgb(film.mean(x, y), outputs);  // the sensor's R, G, B, or XYZ from them
       const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
       rgb[i] = c.r;
       rgb[i + 1] = c.g;
@@ -113,8 +157,7 @@ std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) 
   return rgb;
 }
 
-std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) {
-  const ColorSpace space = parse_color_space(colorspace);
+std::vector<float> film_to_rgb(const Film& film, ColorSpace space) {
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
@@ -130,7 +173,7 @@ std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace) 
 ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
                           const RenderSettings& settings, const RenderStats& stats,
                           const std::string& scene_file) {
-  const std::string& colorspace = outputs.colorspace;
+  const ColorSpace colorspace = outputs.colorspace;
   ExrImage image;
   image.width = film.width();
   image.height = film.height();
@@ -142,25 +185,44 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
     image.channels.emplace_back(names[c], std::move(channel));
   }
   if (film.has_aovs()) add_aov_channels(film, colorspace, image);
+  if (!film.has_aovs() && settings.noise_threshold > 0.0) add_sample_count_channel(film, image);
   if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   if (film.has_stokes()) add_stokes_channels(film, image);
+  if (!film.light_groups().empty()) add_light_group_channels(film, outputs, image);
   // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
   if (!outputs.camera_rgb)
-    image.chromaticities = colorspace == "acescg" ? acescg_chromaticities() : rec709_chromaticities();
+    image.chromaticities =
+        colorspace == ColorSpace::ACEScg ? acescg_chromaticities() : rec709_chromaticities();
   if (outputs.sensor != "cie1931") {
     image.string_attributes["ochre.sensor"] = outputs.sensor;
     image.string_attributes["ochre.sensorOutput"] = outputs.camera_rgb ? "camera_rgb" : "white_balanced";
   }
   image.string_attributes["software"] = "ochre " OCHRE_VERSION;
   image.string_attributes["ochre.scene"] = scene_file;
-  image.string_attributes["ochre.colorspace"] = colorspace;
+  image.string_attributes["ochre.colorspace"] = kWorkingSpaces.name(colorspace);
   image.string_attributes["ochre.spp"] = std::to_string(settings.spp);
   image.string_attributes["ochre.sampleRange"] =
       fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
   image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+  if (settings.noise_threshold > 0.0) {
+    image.string_attributes["ochre.noiseThreshold"] = fmt::format("{}", settings.noise_threshold);
+    image.string_attributes["ochre.samples"] = std::to_string(stats.samples);
+  }
   image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+  // Written only when samples were clamped, so that every other image keeps its header.
+  if (stats.clamped > 0) image.string_attributes["ochre.clampedSamples"] = std::to_string(stats.clamped);
   image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
   return image;
+}
+
+void check_stokes_mode(const RenderJob& job, const std::string& scene_name) {
+  const PolarizationSetting mode = job.settings.polarization;
+  if (!job.outputs.stokes || mode == PolarizationSetting::kAuto || mode == PolarizationSetting::kStokes)
+    return;
+  throw InputError(fmt::format(
+      "{}: integrator.polarization: Stokes output (--stokes, output.stokes or a polarization PNG) "
+      "needs polarization mode stokes or auto, not '{}'",
+      scene_name, kPolarizationSettings.name(mode)));
 }
 
 void check_outputs(const OutputSettings& outputs) {
@@ -188,6 +250,7 @@ FilmLayers film_layers(const OutputSettings& outputs) {
   layers.spectral_min = outputs.spectral_min;
   layers.spectral_max = outputs.spectral_max;
   layers.stokes = outputs.stokes || !outputs.polarization_png.empty();
+  if (exr) layers.light_groups = outputs.light_groups;
   return layers;
 }
 
@@ -233,10 +296,11 @@ std::vector<std::string> add_outputs(OutputTransaction& transaction, const Film&
   if (!outputs.exr.empty()) {
     const ExrImage image = render_exr_image(film, rgb, outputs, settings, stats, scene_file);
     write_exr(transaction.add(outputs.exr), image);
-    written.push_back(
-        fmt::format("wrote {} ({}, {}x{})", outputs.exr,
-                    outputs.camera_rgb ? "camera RGB of " + outputs.sensor : "linear " + outputs.colorspace,
-                    image.width, image.height));
+    written.push_back(fmt::format("wrote {} ({}, {}x{})", outputs.exr,
+                                  outputs.camera_rgb
+                                      ? "camera RGB of " + outputs.sensor
+                                      : std::string("linear ") + kWorkingSpaces.name(outputs.colorspace),
+                                  image.width, image.height));
   }
   if (!outputs.polarization_png.empty() && film.has_stokes()) {
     write_polarization_png(transaction.add(outputs.polarization_png), film);

@@ -19,7 +19,7 @@ namespace ochre {
 class OutputTransaction;
 
 // Linear working-space RGB of the film (3 floats per pixel, row 0 at the top), of a film of XYZ.
-std::vector<float> film_to_rgb(const Film& film, const std::string& colorspace);
+std::vector<float> film_to_rgb(const Film& film, ColorSpace colorspace);
 // The same for the film of a render with these outputs: a camera sensor's film (docs/cameras.md) is
 // white-balanced to XYZ first (outputs.sensor_to_xyz), or written as camera RGB (outputs.camera_rgb).
 std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs);
@@ -41,6 +41,10 @@ void add_spectral_channels(const Film& film, ExrImage& image);
 ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const OutputSettings& outputs,
                           const RenderSettings& settings, const RenderStats& stats,
                           const std::string& scene_file);
+
+// Stokes layers (and the polarization PNG that needs them) come from the full Mueller product: they need
+// polarization mode stokes or auto. InputError naming the scene and integrator.polarization otherwise.
+void check_stokes_mode(const RenderJob& job, const std::string& scene_name);
 
 // Throws InputError when an output directory is missing or not writable, or the display
 // transform cannot be built (unknown config, display or view).

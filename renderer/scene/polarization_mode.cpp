@@ -14,11 +14,18 @@ const char* polarization_mode_name(PolarizationMode mode) {
   return "off";
 }
 
-PolarizationChoice choose_polarization_mode(const std::string& requested, bool scene_polarizes,
+PolarizationChoice choose_polarization_mode(PolarizationSetting requested, bool scene_polarizes,
                                             bool stokes_output_requested) {
-  if (requested == "off") return {PolarizationMode::kOff, "requested"};
-  if (requested == "intensity") return {PolarizationMode::kIntensity, "requested"};
-  if (requested == "stokes") return {PolarizationMode::kStokes, "requested"};
+  switch (requested) {
+    case PolarizationSetting::kOff:
+      return {PolarizationMode::kOff, "requested"};
+    case PolarizationSetting::kIntensity:
+      return {PolarizationMode::kIntensity, "requested"};
+    case PolarizationSetting::kStokes:
+      return {PolarizationMode::kStokes, "requested"};
+    case PolarizationSetting::kAuto:
+      break;
+  }
   if (stokes_output_requested) return {PolarizationMode::kStokes, "auto: a Stokes output is requested"};
   if (scene_polarizes) return {PolarizationMode::kIntensity, "auto: a material or a filter polarizes"};
   return {PolarizationMode::kOff, "auto: no material or filter polarizes"};

@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include "renderer/scene/render_settings.h"
+
 namespace ochre {
 
 enum class PolarizationMode { kOff, kIntensity, kStokes };
@@ -20,8 +22,7 @@ struct PolarizationChoice {
   std::string reason;  // e.g. "auto: no material or filter polarizes"
 };
 
-// requested: "auto" | "off" | "intensity" | "stokes" (validated by the scene loader).
-PolarizationChoice choose_polarization_mode(const std::string& requested, bool scene_polarizes,
+PolarizationChoice choose_polarization_mode(PolarizationSetting requested, bool scene_polarizes,
                                             bool stokes_output_requested);
 
 }  // namespace ochre

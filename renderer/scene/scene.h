@@ -1,10 +1,15 @@
 #pragma once
-// Scene: everything a render needs, built by load_scene() (scene_loader.h) from a JSON file.
+// Scene: what is rendered, built by load_scene() (renderer/loader/scene_loader.h) from a scene file: camera,
+// materials, meshes, the BVH, textures and lights, and the facts the integrator models from. How it is
+// rendered (samples, sampler, outputs) is the render job beside it (renderer/scene/render_settings.h).
+// After loading only the frame state changes: the flames' state at a frame of a sequence (set_frame) and the
+// light selection that follows their powers.
 
 #include <array>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "materials/core/mueller.h"
@@ -27,8 +32,15 @@ namespace ochre {
 struct Scene {
   std::filesystem::path file;
   std::string description;  // the scene file's "description", shown by reports
-  RenderSettings settings;
-  OutputSettings outputs;
+  // The rendering origin: the camera's position in the scene's coordinates (in double precision). Every
+  // position the scene holds (vertices, lights, the camera at 0) is relative to it, rounded to single
+  // precision once, so that an image does not depend on where the scene sits (georeferenced scans 5e6 units
+  // from the origin render as at the origin; docs/scene-format.md, "Coordinate range"). Materials see world
+  // positions (origin + p).
+  Vec3d origin;
+  // What the scene loads but a user should know, one message each (a mesh file whose coordinates are too
+  // large for its detail in single precision, renderer/shapes/float_detail.h); the tools print them.
+  std::vector<std::string> warnings;
   Camera camera;
   PixelFilter pixel_filter;  // film.filter: where in (and around) its pixel a camera sample lands
   SensorPtr sensor;          // a camera sensor's response (docs/cameras.md); nullptr: the CIE 1931 observer
@@ -53,17 +65,31 @@ struct Scene {
   // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
   std::optional<Mueller> camera_analyzer;
   std::vector<std::optional<Vec3>> mesh_polarizers;
+  std::vector<std::string> mesh_light_groups;  // per mesh: the light group of an emissive shape ("": none)
+
+  // Light groups (docs/lights.md, "Light groups"): empty when no light names one. Otherwise the groups'
+  // names, in the order they first appear, then "other" when some emitter has no group; light_group_of[i]
+  // is light i's group and other_light_group the group of emission without a group (-1: none).
+  std::vector<std::string> light_groups;
+  std::vector<int> light_group_of;
+  int other_light_group = -1;
+  static constexpr size_t kMaxLightGroups = 16;
+  // Fills light_groups, light_group_of and other_light_group from the lights' groups.
+  void build_light_groups();
 
   // Facts the integrator uses to model only what the scene needs.
   bool polarizing_materials = false;
   bool polarizing_filters = false;
   bool needs_uv = false;
 
-  // Builds the light list and selection distribution (after meshes and materials exist).
-  void build_lights();
-  // Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per second
-  // (renderer/lights/flame_light.h) and updates the light selection to the new powers.
-  void set_frame(uint64_t frame, double fps);
+  // Builds the light list and selection distribution (after meshes and materials exist); with
+  // `mirror_lights`, the lights' images in planar mirrors too; then the light groups.
+  void build_lights(bool mirror_lights);
+
+  // Frame state. Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per
+  // second for the render seed `seed` (renderer/lights/flame_light.h) and updates the light selection to the
+  // new powers.
+  void set_frame(uint64_t frame, double fps, uint64_t seed);
   // The light selection distribution, proportional to the lights' powers.
   void update_light_selection();
   float light_pmf(int light) const { return light_selection.pmf(static_cast<size_t>(light)); }
@@ -73,8 +99,8 @@ struct Scene {
   // power, integrated over the whole scene, dwarfs it. More lights: by power alone (light_selection).
   static constexpr size_t kMaxLocalLights = 8;
   using LightPmfs = std::array<float, kMaxLocalLights>;
-  bool local_light_selection() const {
-    return settings.light_selection == "local" && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
+  bool local_light_selection(LightSelection selection) const {
+    return selection == LightSelection::kLocal && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
   }
   // The probability of choosing each light at p: a quarter in proportion to the importance, three quarters by
   // power (a defensive mix: the estimates ignore occlusion and the receiver's orientation).

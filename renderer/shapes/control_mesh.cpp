@@ -16,6 +16,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "renderer/shapes/float_detail.h"
 #include "renderer/shapes/mesh_file_reader.h"
 #include "renderer/shapes/mesh_import.h"
 #include "renderer/util/ascii_case.h"
@@ -25,6 +26,22 @@
 namespace ochre {
 
 namespace {
+
+// The faces as triangle fans (corner 0 with each later pair): enough for the edge lengths of
+// float_detail_warning.
+std::vector<uint32_t> fan_triangles(const std::vector<int>& face_sizes,
+                                    const std::vector<int>& face_vertices) {
+  std::vector<uint32_t> indices;
+  size_t at = 0;
+  for (const int size : face_sizes) {
+    for (int k = 1; k + 1 < size; ++k)
+      indices.insert(indices.end(),
+                     {static_cast<uint32_t>(face_vertices[at]), static_cast<uint32_t>(face_vertices[at + k]),
+                      static_cast<uint32_t>(face_vertices[at + k + 1])});
+    at += static_cast<size_t>(size);
+  }
+  return indices;
+}
 
 // Exact bit pattern of a position: welding must only join vertices the file meant to be one.
 struct PositionKey {
@@ -350,7 +367,8 @@ void ControlMesh::validate(const std::string& where) const {
   }
 }
 
-ControlMesh import_control_mesh(const std::filesystem::path& file, const Transform& to_world) {
+ControlMesh import_control_mesh(const std::filesystem::path& file, const Transform& to_world,
+                                std::vector<std::string>* warnings) {
   const std::string where = file.string();
   Assimp::Importer importer;
   const aiScene* scene = read_mesh_file(importer, file, aiProcess_JoinIdenticalVertices);
@@ -363,9 +381,17 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
     throw InputError(
         fmt::format("{}: the file contains no polygons (faces of at least 3 distinct vertices)", where));
   if (lower_extension(file) == ".obj") apply_obj_tags(mesh, read_obj_extras(file), where);
-  for (Vec3& p : mesh.positions) p = to_world.point(p);
+  mesh.validate(where);  // before the transform: messages give the file's own coordinates
+  if (warnings)
+    if (const auto warning =
+            float_detail_warning(where, mesh.positions, fan_triangles(mesh.face_sizes, mesh.face_vertices)))
+      warnings->push_back(*warning);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    mesh.positions[i] = to_world.point(mesh.positions[i]);
+    if (!is_finite(mesh.positions[i]))
+      throw InputError(fmt::format("{}: the transform takes vertex {} beyond single precision", where, i));
+  }
   if (to_world.flips_handedness()) reverse_winding(mesh);
-  mesh.validate(where);
   return mesh;
 }
 

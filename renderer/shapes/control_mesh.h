@@ -49,6 +49,8 @@ struct ControlMesh {
 //   "t corner 1/1/0 v s". The slash counts may omit the trailing "/0".
 // - `to_world` is applied to the positions; a mirroring transform reverses the face winding.
 // Errors (missing file, parse failure, no polygons, bad tags) throw InputError naming the file.
-ControlMesh import_control_mesh(const std::filesystem::path& file, const Transform& to_world);
+// `warnings`, when given, receives float_detail_warning's warning (renderer/shapes/float_detail.h).
+ControlMesh import_control_mesh(const std::filesystem::path& file, const Transform& to_world,
+                                std::vector<std::string>* warnings = nullptr);
 
 }  // namespace ochre

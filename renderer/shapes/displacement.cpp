@@ -73,21 +73,23 @@ std::vector<float> texture_heights(const Mesh& mesh, const DisplacementOptions& 
 
 // Heights of the procedural rock at each vertex's position (a pure function: evaluated in parallel,
 // the same result for any thread count).
-std::vector<float> noise_heights(const Mesh& mesh, const RockNoise& noise) {
+std::vector<float> noise_heights(const Mesh& mesh, const RockNoise& noise, const Vec3d& origin) {
   std::vector<float> heights(mesh.positions.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, heights.size(), 4096), [&](const auto& range) {
-    for (size_t i = range.begin(); i < range.end(); ++i) heights[i] = rock_height(mesh.positions[i], noise);
+    for (size_t i = range.begin(); i < range.end(); ++i)
+      heights[i] = rock_height((Vec3d(mesh.positions[i]) + origin).to_float(), noise);
   });
   return heights;
 }
 
 }  // namespace
 
-void displace(Mesh& mesh, const DisplacementOptions& options, OiioTextureProvider& textures) {
+void displace(Mesh& mesh, const DisplacementOptions& options, OiioTextureProvider& textures,
+              const Vec3d& origin) {
   if (mesh.normals.size() != mesh.positions.size())
     throw InputError(fmt::format("{}: displacement needs vertex normals", mesh.name));
   const std::vector<float> heights =
-      options.noise ? noise_heights(mesh, *options.noise) : texture_heights(mesh, options, textures);
+      options.noise ? noise_heights(mesh, *options.noise, origin) : texture_heights(mesh, options, textures);
   const std::vector<uint32_t> group = coincident_groups(mesh.positions);
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     // A procedural height is the same for every copy of a vertex: moving the copies along one normal

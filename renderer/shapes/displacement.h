@@ -29,7 +29,10 @@ struct DisplacementOptions {
 // with their own uv, so a texture that does not match across a seam opens a crack there.
 // Throws InputError starting with mesh.name when the mesh has no uvs or no normals, or naming the
 // file when the texture cannot be read.
-void displace(Mesh& mesh, const DisplacementOptions& options, OiioTextureProvider& textures);
+// `origin`: where the mesh's coordinates start in the scene (the rendering origin, renderer/scene/scene.h):
+// procedural rock is a function of the world position origin + p.
+void displace(Mesh& mesh, const DisplacementOptions& options, OiioTextureProvider& textures,
+              const Vec3d& origin = {});
 
 // {"file": path (relative to scene_dir), "colorspace": "linear" | "srgb" | "auto", "scale": s,
 //  "offset": o} or {"noise": {...}, "scale": s, "offset": o} (docs/scene-format.md); exactly one of

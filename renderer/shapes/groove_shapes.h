@@ -22,8 +22,8 @@ struct GroovePlate {
   int count = 40;            // grooves
   float length = 40;         // along the grooves
   // Facets are cut along the grooves into tiles at most this many pitches long (0: one strip as long as
-  // the plate). A spawned ray's offset grows with its triangle's size (renderer/geometry/accel.cpp), and near
-  // a groove's valley it shifts paths by that much: long strips bias R (docs/materials/vgroove.md).
+  // the plate). The image does not depend on it (docs/architecture.md, "Spawning rays"); short pieces give
+  // the BVH compact boxes.
   float tile_pitches = 8;
 };
 // Tiles along the grooves of each facet.

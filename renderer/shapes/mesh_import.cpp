@@ -9,9 +9,11 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/shapes/float_detail.h"
 #include "renderer/shapes/mesh_file_reader.h"
 #include "renderer/util/ascii_case.h"
 #include "spectra/input_error.h"
@@ -106,7 +108,8 @@ struct ImportContext {
   const aiScene& scene;
   const Transform& to_world;
   VertexColourEncoding encoding;
-  const std::string& where;  // the file, for error messages
+  const std::string& where;                       // the file, for error messages
+  std::optional<std::string>& precision_warning;  // the first part whose file coordinates lose detail
 };
 
 // Collects every (mesh, node-to-world) instance of the node hierarchy, in world space, and the index of
@@ -120,6 +123,8 @@ void collect_parts(const ImportContext& context, const aiNode& node, const Trans
     if (part.indices.empty()) continue;
     part.validate(
         fmt::format("{}: mesh '{}' of node '{}'", context.where, source.mName.C_Str(), node.mName.C_Str()));
+    if (!context.precision_warning)
+      context.precision_warning = float_detail_warning(context.where, part.positions, part.indices);
     try {
       part.transform(context.to_world * global);
     } catch (const std::invalid_argument& e) {
@@ -206,6 +211,7 @@ struct ImportedParts {
   const aiScene* scene = nullptr;
   std::vector<Mesh> parts;
   std::vector<unsigned> materials;
+  std::optional<std::string> precision_warning;  // float_detail_warning of the file's coordinates
 };
 
 void import_parts(ImportedParts& out, const std::filesystem::path& file, const Transform& to_world,
@@ -219,7 +225,8 @@ void import_parts(ImportedParts& out, const std::filesystem::path& file, const T
   out.scene = read_mesh_file(out.importer, file, flags);
   if (out.scene->mRootNode != nullptr) {
     const std::string where = file.string();
-    const ImportContext context{*out.scene, to_world, vertex_colour_encoding(file), where};
+    const ImportContext context{*out.scene, to_world, vertex_colour_encoding(file), where,
+                                out.precision_warning};
     collect_parts(context, *out.scene->mRootNode, Transform::identity(), out.parts, out.materials);
   }
   if (out.parts.empty()) throw InputError(fmt::format("{}: the file contains no triangles", file.string()));
@@ -228,9 +235,10 @@ void import_parts(ImportedParts& out, const std::filesystem::path& file, const T
 }  // namespace
 
 Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
-                 const MeshImportOptions& options) {
+                 const MeshImportOptions& options, std::vector<std::string>* warnings) {
   ImportedParts imported;
   import_parts(imported, file, to_world, options);
+  if (warnings && imported.precision_warning) warnings->push_back(*imported.precision_warning);
   Mesh mesh = merge_parts(imported.parts);
   mesh.name = file.stem().string();
   mesh.validate(file.string());
@@ -239,9 +247,11 @@ Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
 
 std::vector<MeshMaterialPart> import_mesh_by_material(const std::filesystem::path& file,
                                                       const Transform& to_world,
-                                                      const MeshImportOptions& options) {
+                                                      const MeshImportOptions& options,
+                                                      std::vector<std::string>* warnings) {
   ImportedParts imported;
   import_parts(imported, file, to_world, options);
+  if (warnings && imported.precision_warning) warnings->push_back(*imported.precision_warning);
   std::vector<MeshMaterialPart> result;
   for (unsigned m = 0; m < imported.scene->mNumMaterials; ++m) {
     std::vector<Mesh> group;

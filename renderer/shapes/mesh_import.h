@@ -42,8 +42,10 @@ struct MeshImportOptions {
   bool face_normals = false;    // drop the file's normals: flat shading (Mitsuba's face_normals)
 };
 
+// `warnings`, when given, receives the warning of float_detail_warning (renderer/shapes/float_detail.h) when
+// the file's coordinates are too large for its detail in single precision.
 Mesh import_mesh(const std::filesystem::path& file, const Transform& to_world,
-                 const MeshImportOptions& options = {});
+                 const MeshImportOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
 // The triangles of one material of a file (an OBJ's MTL material, a glTF material) and the texture files
 // that material names, by MTL keyword (map_Kd, map_Ks, map_Ka, map_Ns, map_d, map_bump, norm; a glTF base
@@ -58,7 +60,8 @@ struct MeshMaterialPart {
 // triangles are left out) instead of one merged mesh: photogrammetry exports with several texture atlases.
 std::vector<MeshMaterialPart> import_mesh_by_material(const std::filesystem::path& file,
                                                       const Transform& to_world,
-                                                      const MeshImportOptions& options = {});
+                                                      const MeshImportOptions& options = {},
+                                                      std::vector<std::string>* warnings = nullptr);
 
 // How vertex colours of a file are encoded (exposed for tests and documentation tools).
 enum class VertexColourEncoding { Linear, Srgb };

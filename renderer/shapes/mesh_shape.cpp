@@ -15,7 +15,8 @@ Mesh load_triangles(const ShapeContext& ctx, const std::filesystem::path& path,
                     const MeshImportOptions& options) {
   if (ctx.fields.has("displacement"))
     ctx.fields.fail("displacement", "needs \"subdivision\" (displacement moves the refined vertices)");
-  return ctx.fields.fields().in_context("file", [&] { return import_mesh(path, ctx.to_world, options); });
+  return ctx.fields.fields().in_context(
+      "file", [&] { return import_mesh(path, ctx.to_world, options, &ctx.warnings); });
 }
 
 // Polygonal control mesh -> OpenSubdiv uniform refinement -> optional displacement along the smooth normal
@@ -24,12 +25,13 @@ Mesh load_subdivided(const ShapeContext& ctx, const std::filesystem::path& path)
   const JsonFields& f = ctx.fields.fields();
   const SubdivisionOptions options =
       parse_subdivision(JsonFields(f.require("subdivision"), f.child("subdivision")));
-  const ControlMesh control = f.in_context("file", [&] { return import_control_mesh(path, ctx.to_world); });
+  const ControlMesh control =
+      f.in_context("file", [&] { return import_control_mesh(path, ctx.to_world, &ctx.warnings); });
   Mesh mesh = f.in_context("subdivision", [&] { return subdivide(control, options); });
   if (f.has("displacement")) {
     const DisplacementOptions d =
         parse_displacement(JsonFields(f.require("displacement"), f.child("displacement")), ctx.dir);
-    f.in_context("displacement", [&] { displace(mesh, d, ctx.textures); });
+    f.in_context("displacement", [&] { displace(mesh, d, ctx.textures, ctx.origin); });
   }
   return mesh;
 }

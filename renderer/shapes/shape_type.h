@@ -20,10 +20,14 @@ class OiioTextureProvider;
 // What a shape type's build function gets: its fields, read through the type's declarations.
 struct ShapeContext {
   const DeclaredFields& fields;
-  const Transform& to_world;  // the shape's "transform" (identity when absent)
+  // The shape's "transform" (identity when absent), then the shift to the rendering origin: what a type
+  // builds in object space lands in the coordinates the scene renders in (renderer/scene/scene.h).
+  const Transform& to_world;
   const std::filesystem::path&
       dir;                        // the folder of the file that holds the shape: its paths are relative to it
   OiioTextureProvider& textures;  // the scene's textures (displacement maps)
+  const Vec3d& origin;  // the rendering origin in the scene's coordinates (procedural displacement's world)
+  std::vector<std::string>& warnings;  // what the scene loads but a user should know (Scene::warnings)
 };
 
 struct ShapeType {

@@ -16,7 +16,7 @@ Mesh build_sphere(const ShapeContext& ctx) {
   check_memory_estimate(sphere_memory_bytes(subdivisions),
                         fmt::format("{}: a sphere of {:.0f} triangles", f.fields().child("subdivisions"),
                                     sphere_triangle_count(subdivisions)));
-  const Vec3 center = f.vec3("center");
+  const Vec3d center = f.point("center");
   Mesh mesh = f.fields().in_context("", [&] { return make_sphere(radius, subdivisions); });
   f.fields().in_context("", [&] { mesh.transform(ctx.to_world * Transform::translate(center)); });
   return mesh;

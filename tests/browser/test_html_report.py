@@ -70,7 +70,7 @@ def write_report(work):
     REPORT = os.path.join(work, "report")
     result = subprocess.run([ARGS.regress, suite, "--html", REPORT, "--history", os.path.join(work, "earlier.xml"),
                              "--output-dir", os.path.join(work, "out")], capture_output=True, text=True)
-    if result.returncode != 1:
+    if result.returncode != 4:  # a scene failed (docs/cli.md, "Exit codes")
         raise RuntimeError(f"ochre-regress exited {result.returncode}:\n{result.stdout}{result.stderr}")
     m = re.search(r"worst p = (\S+) at x=(\d+) y=(\d+) \(z = (-?[\d.]+)\)", result.stderr)
     WORST = (int(m.group(2)), int(m.group(3)), float(m.group(4)), float(m.group(1)))

@@ -1,6 +1,9 @@
 #include "cli/exr_bits.h"
 
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
 
 #include "renderer/image/exr_reader.h"
 
@@ -34,6 +37,39 @@ bool same_rgb_values(const ExrImage& a, const ExrImage& b) {
     if (!x || !y || *x != *y) return false;
   }
   return true;
+}
+
+::testing::AssertionResult copy_with_string_attribute(const std::filesystem::path& from,
+                                                      const std::filesystem::path& to,
+                                                      const std::string& name, const std::string& value) {
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  // name, NUL, the type "string", NUL, the value's size (4 bytes, little-endian), the value.
+  const std::string key = name + std::string(1, '\0') + "string" + std::string(1, '\0');
+  const size_t at = bytes.find(key);
+  if (at == std::string::npos)
+    return ::testing::AssertionFailure() << from << " has no string attribute " << name;
+  const size_t size_at = at + key.size();
+  uint32_t size = 0;
+  for (int i = 3; i >= 0; --i) size = size << 8 | static_cast<uint8_t>(bytes[size_at + i]);
+  if (size != value.size())
+    return ::testing::AssertionFailure()
+           << name << ": the old value has " << size << " bytes, the new " << value.size();
+  bytes.replace(size_at + 4, size, value);
+  std::ofstream(to, std::ios::binary) << bytes;
+  return ::testing::AssertionSuccess();
+}
+
+const std::vector<float>& exr_channel(const ExrImage& image, const std::string& name) {
+  const std::vector<float>* c = image.find_channel(name);
+  if (!c) throw std::runtime_error("the image has no channel " + name);
+  return *c;
+}
+
+double mean_of(const std::vector<float>& values) {
+  double sum = 0.0;
+  for (float v : values) sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
 }
 
 }  // namespace ochre::test

@@ -1,7 +1,7 @@
 // The colour-checker validation (docs/cameras.md, "Colour checker"): the 24 ColorChecker patches rendered as
 // flat Lambertian patches under a uniform D65 sky and under the torch preset's 1700 K blackbody, through the
 // CIE 1931 observer and through each measured camera (white-balanced to D65 by ochre's fit), against an
-// independent numpy computation of the same integrals (tools/colorchecker_reference.py, whose output is
+// independent numpy computation of the same integrals (tools/data/colorchecker_reference.py, whose output is
 // tests/data/colorchecker_reference.csv). Goal: Delta E00 < 0.5 for every patch.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -143,14 +143,14 @@ TEST(ColorChecker, RenderedPatchesMatchTheIndependentIntegrals) {
   }
 }
 
-// The shipped reference is what tools/colorchecker_reference.py computes from spectra/data (when the
+// The shipped reference is what tools/data/colorchecker_reference.py computes from spectra/data (when the
 // system Python has numpy).
 TEST(ColorChecker, ReferenceIsUpToDate) {
   if (std::system("/usr/bin/python3 -c 'import numpy' > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "no /usr/bin/python3 with numpy";
   const auto dir = scratch_dir();
   const std::string command =
-      fmt::format("cd '{}' && /usr/bin/python3 tools/colorchecker_reference.py spectra/data '{}'",
+      fmt::format("cd '{}' && /usr/bin/python3 tools/data/colorchecker_reference.py spectra/data '{}'",
                   source_dir().string(), (dir / "reference.csv").string());
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   const auto fresh = read_reference(dir / "reference.csv");

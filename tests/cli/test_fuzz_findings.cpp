@@ -241,5 +241,17 @@ TEST(FuzzFindings, CoordinatesBeyondTheTracedRangeAreRejected) {
   EXPECT_EQ(at_limit.result.exit_code, 0) << at_limit.result.output;
 }
 
+// A 50 MB name in a scene was echoed whole in the error (the audit's "expansion and echo" class): every
+// program prints at most about 4 kB of a message, its beginning, its end and the count left out.
+TEST(FuzzFindings, AHugeValueIsNotEchoedWhole) {
+  const std::string huge(50'000'000, 'q');
+  const Rejection r = render_scene(R"({"film": {"resolution": [4, 4]}, "integrator": {"spp": 1},
+    "materials": {"m": {"type": ")" +
+                                   huge + R"("}},
+    "shapes": [{"type": "sphere", "radius": 1, "material": "m"}]})");
+  expect_rejected(r, {"scene.json", "characters left out"});
+  EXPECT_LT(r.result.output.size(), 10'000u);
+}
+
 }  // namespace
 }  // namespace ochre::test::test_fuzz_findings

@@ -20,6 +20,7 @@
 #include "renderer/image/exr_reader.h"
 #include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
+#include "support/text_files.h"
 
 namespace ochre::test::test_nonfinite_values {
 namespace {
@@ -222,6 +223,18 @@ TEST(NonFiniteValues, PlyWithNonFiniteVertexColoursIsRejected) {
   }
 }
 
+// A normal whose length overflows single precision (3e38, 3e38, 0) is still a direction: the mesh loads
+// and renders (it used to be normalised in single precision into zero and refused as "zero").
+TEST(NonFiniteValues, PlyWithHugeNormals) {
+  const auto dir = scene_dir();
+  write_text(dir / "scan.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+             "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
+             "property list uchar int vertex_indices\nend_header\n"
+             "0 0 0 3e38 3e38 0\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n");
+  render_finite(dir, mesh_scene(R"("out": {"type": "lambert", "color": 0.5})"));
+}
+
 TEST(NonFiniteValues, PlyWithHugeVertexColours) {
   const auto dir = scene_dir();
   write_ply(dir / "scan.ply", kUsualUvs, {{{3e38f, 1.0f, 0.0f}, {3e38f, 3e38f, 3e38f}, {0.5f, 0.5f, 0.5f}}});
@@ -270,6 +283,47 @@ TEST(NonFiniteValues, DisplacementByNonFiniteTexelsIsRejected) {
           R"(", "material": "m", "subdivision": {"level": 1},
                   "displacement": {"file": "bad.exr", "colorspace": "linear", "scale": 0.1}}]})",
       {"scene.json", "shapes[0].displacement", "cube_quads", "position of vertex 0 is not finite"});
+}
+
+// Values that saturate are refused or reported, never silently: a sky whose power overflows single
+// precision (each sample would be infinite) is refused naming the field; samples beyond the film's range
+// (radiance 1e30) are clamped and the render says so, in a warning and in the EXR's header.
+TEST(NonFiniteValues, SaturatingValuesAreRefusedOrReported) {
+  const auto sky = [](const std::string& radiance) {
+    return fmt::format(
+        R"({{"camera": {{"type": "orthographic", "size": 2, "eye": [0, 0, 5], "target": [0, 0, 0]}},
+      "film": {{"resolution": [8, 8]}}, "integrator": {{"spp": 4}},
+      "materials": {{"m": {{"type": "lambert", "color": 0.5}}}},
+      "lights": [{{"type": "environment", "radiance": {}}}],
+      "shapes": [{{"type": "plane", "size": [1, 1], "material": "m"}}]}})",
+        radiance);
+  };
+  const auto dir = scratch_dir();
+  write_text(dir / "overflow.json", sky("3e38"));
+  const CommandResult overflow = run_ochre("render overflow.json -o overflow.exr -q", dir);
+  EXPECT_EQ(overflow.exit_code, 2) << overflow.output;
+  EXPECT_NE(
+      overflow.output.find("overflow.json: lights[0].radiance: the light's power overflows single precision"),
+      std::string::npos)
+      << overflow.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "overflow.exr"));
+
+  write_text(dir / "bright.json", sky("1e30"));
+  const CommandResult bright = run_ochre("render bright.json -o bright.exr -q", dir);
+  ASSERT_EQ(bright.exit_code, 0) << bright.output;
+  EXPECT_NE(bright.output.find(
+                "ochre: warning: 256 of 256 samples exceeded the film's range and were clamped to 1e+15"),
+            std::string::npos)
+      << bright.output;
+  const ExrImage image = read_exr(dir / "bright.exr");
+  ASSERT_TRUE(image.string_attributes.count("ochre.clampedSamples"));
+  EXPECT_EQ(image.string_attributes.at("ochre.clampedSamples"), "256");
+
+  write_text(dir / "plain.json", sky("1"));
+  const CommandResult plain = run_ochre("render plain.json -o plain.exr -q", dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+  EXPECT_FALSE(read_exr(dir / "plain.exr").string_attributes.count("ochre.clampedSamples"));
 }
 
 }  // namespace

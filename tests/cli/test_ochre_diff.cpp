@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
@@ -87,7 +88,7 @@ TEST(OchreDiff, OnePixelChangedIsFoundAndShownRed) {
   rgb[changed + 1] = 0.95f;
   write_rgb_exr(dir / "test.exr", rgb);
 
-  const auto j = diff_json("test.exr ref.exr --max-error 0.1 --heatmap heat.png", dir, 1);
+  const auto j = diff_json("test.exr ref.exr --max-error 0.1 --heatmap heat.png", dir, 4);
   EXPECT_NEAR(j["max_error"].get<double>(), 0.95 - old_green, 1e-6);
   EXPECT_EQ(j["max_error_at"]["x"], 5);
   EXPECT_EQ(j["max_error_at"]["y"], 7);
@@ -98,7 +99,7 @@ TEST(OchreDiff, OnePixelChangedIsFoundAndShownRed) {
   ASSERT_EQ(j["exceeded"].size(), 1u);
 
   const DiffResult r = run_diff("test.exr ref.exr --max-error 0.1 --max-rmse 1", dir);
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 4);  // a threshold exceeded (docs/cli.md, "Exit codes")
   EXPECT_NE(r.output.find("threshold exceeded: max-error"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("exceeded: rmse"), std::string::npos) << r.output;
 
@@ -132,7 +133,7 @@ TEST(OchreDiff, FivePercentExposureChangeIsDetected) {
   write_rgb_exr(dir / "ref.exr", reference);
   write_rgb_exr(dir / "bright.exr", brighter);
 
-  const auto j = diff_json("bright.exr ref.exr --max-relmse 1e-4 --max-de 0.5", dir, 1);
+  const auto j = diff_json("bright.exr ref.exr --max-relmse 1e-4 --max-de 0.5", dir, 4);
   EXPECT_NEAR(j["relmse"].get<double>(), relmse, 1e-9);
   EXPECT_GT(j["mean_de00"].get<double>(), 0.5);  // +5 % is visible: about 1-2 dE00 on mid tones
   EXPECT_LT(j["mean_de00"].get<double>(), 5.0);
@@ -154,6 +155,19 @@ TEST(OchreDiff, BadInputExitsTwoNamingTheProblem) {
   EXPECT_EQ(size.exit_code, 2);
   EXPECT_NE(size.output.find("size mismatch: a.exr is 16x12, small.exr is 4x4"), std::string::npos)
       << size.output;
+
+  // A NaN in the reference would make every metric NaN: refused, naming the pixel. (In the test image it
+  // is a finding: the metrics are NaN and fail any threshold.)
+  std::vector<float> broken = gradient();
+  broken[3 * 17 + 1] = std::numeric_limits<float>::quiet_NaN();
+  write_rgb_exr(dir / "nan.exr", broken);
+  const DiffResult nan_reference = run_diff("a.exr nan.exr", dir);
+  EXPECT_EQ(nan_reference.exit_code, 2) << nan_reference.output;
+  EXPECT_NE(nan_reference.output.find("nan.exr: pixel (1, 1) channel G is nan: a reference must be finite"),
+            std::string::npos)
+      << nan_reference.output;
+  const DiffResult nan_test = run_diff("nan.exr a.exr --max-rmse 1", dir);
+  EXPECT_EQ(nan_test.exit_code, 4) << nan_test.output;
 
   EXPECT_EQ(run_diff("a.exr", dir).exit_code, 2);  // usage
   const DiffResult help = run_diff("--help", dir);

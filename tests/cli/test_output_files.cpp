@@ -244,7 +244,7 @@ TEST(OutputFiles, OutputsOfOchreVGroove) {
 }
 
 // A copy of ochre-vgroove in an installed tree whose plot script fails (the tools look in
-// share/ochre/scripts first, tools/tool_files.h): the plot fails after the other outputs were written.
+// share/ochre/scripts first, tools/cli/tool_files.h): the plot fails after the other outputs were written.
 fs::path vgroove_with_failing_plot(const fs::path& root) {
   fs::create_directories(root / "bin");
   fs::copy_file(bin_dir() / "ochre-vgroove", root / "bin" / "ochre-vgroove");
@@ -283,6 +283,71 @@ TEST(OutputFiles, OchreVGrooveWritesItsOutputsAllOrNothing) {
   EXPECT_TRUE(snapshot(dir / "c.png") == counts);
   EXPECT_TRUE(temporaries_in(dir).empty()) << "no temporary and no panel directory is left";
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 4) << "m, c, p.csv, tree";
+}
+
+// An output path given as an empty string is refused by every program, never read as "not given" (which
+// would write a default output over a file there).
+TEST(OutputFiles, EmptyOutputPathsAreRefused) {
+  const SceneDir s;
+  write_old_file(s.dir / "default.exr", "previous");
+  for (const std::string& args : {std::string("-o ''"), std::string("-o out.exr --png ''"),
+                                  std::string("-o out.exr --polarization-png ''"),
+                                  std::string("-o out.exr --checkpoint '' --time-limit 1m")})
+    s.expect_refused(args, "expected a path, got an empty string");
+  const CommandResult merge = run_tool("ochre", "merge a.exr -o ''", s.dir, false, kTimeout);
+  EXPECT_EQ(merge.exit_code, 2) << merge.output;
+  EXPECT_TRUE(contains(merge.output, "expected a path, got an empty string")) << merge.output;
+  const CommandResult regress = run_tool("ochre-regress", ". --html ''", s.dir, false, kTimeout);
+  EXPECT_EQ(regress.exit_code, 2) << regress.output;
+  EXPECT_TRUE(contains(regress.output, "expected a path, got an empty string")) << regress.output;
+  const CommandResult diff = run_tool("ochre-diff", "a.exr b.exr --heatmap ''", s.dir, false, kTimeout);
+  EXPECT_EQ(diff.exit_code, 2) << diff.output;
+  EXPECT_TRUE(contains(diff.output, "expected a path, got an empty string")) << diff.output;
+}
+
+// An output on the command line decides where every output goes: the scene's own output paths (here
+// "output": {"exr": "scene_out.exr", "png": "scene_out.png"}) apply only when none is given.
+TEST(OutputFiles, ACommandLineOutputReplacesTheScenesOutputs) {
+  const fs::path dir = scratch_dir();
+  write_old_file(dir / "scene.json",
+                 minimal_scene("", "", "", R"("output": {"exr": "scene_out.exr", "png": "scene_out.png"})"));
+  fs::create_directory(dir / "elsewhere");
+  const CommandResult r =
+      run_tool("ochre", "render scene.json -o elsewhere/out.exr -q", dir, false, kTimeout);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "elsewhere/out.exr"));
+  EXPECT_FALSE(fs::exists(dir / "scene_out.exr"));
+  EXPECT_FALSE(fs::exists(dir / "scene_out.png")) << "the scene's PNG must not be written beside it";
+  EXPECT_FALSE(fs::exists(dir / "elsewhere/out.png"));
+  const CommandResult png = run_tool("ochre", "render scene.json --png only.png -q", dir, false, kTimeout);
+  ASSERT_EQ(png.exit_code, 0) << png.output;
+  EXPECT_TRUE(fs::exists(dir / "only.png"));
+  EXPECT_FALSE(fs::exists(dir / "scene_out.exr"));
+  // No output on the command line: the scene's own.
+  const CommandResult own = run_tool("ochre", "render scene.json -q", dir, false, kTimeout);
+  ASSERT_EQ(own.exit_code, 0) << own.output;
+  EXPECT_TRUE(fs::exists(dir / "scene_out.exr"));
+  EXPECT_TRUE(fs::exists(dir / "scene_out.png"));
+}
+
+// A time limit so short that no sample finishes writes nothing: the existing outputs stay as they were
+// (an image of no samples would be black).
+TEST(OutputFiles, ATimeLimitBeforeAnySampleKeepsTheExistingOutputs) {
+  const SceneDir s;
+  write_old_file(s.dir / "out.exr", "previous exr");
+  write_old_file(s.dir / "out.png", "previous png");
+  const FileSnapshot exr = snapshot(s.dir / "out.exr"), png = snapshot(s.dir / "out.png");
+  const CommandResult r = run_tool("ochre",
+                                   "render scene.json -o out.exr --png out.png --resolution 2000x2000 "
+                                   "--spp 1000 --time-limit 0.001",
+                                   s.dir, false, kTimeout);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(contains(r.output, "time limit reached before any sample finished; nothing written"))
+      << r.output;
+  EXPECT_TRUE(snapshot(s.dir / "out.exr") == exr);
+  EXPECT_TRUE(snapshot(s.dir / "out.png") == png);
+  EXPECT_FALSE(fs::exists(s.dir / "out.checkpoint.exr"));
+  EXPECT_TRUE(temporaries_in(s.dir).empty());
 }
 
 }  // namespace

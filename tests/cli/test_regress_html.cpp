@@ -82,7 +82,7 @@ TEST(OchreRegressHtml, ReportOfAFailingSuite) {
   const auto dir = scratch_dir();
   failing_suite(dir);
   const CommandResult r = run_regress("suite --html report --output-dir out", dir);
-  ASSERT_EQ(r.exit_code, 1) << r.output;
+  ASSERT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("HTML report: report/index.html ("), std::string::npos) << r.output;
   const fs::path report = dir / "report";
   for (const char* file : {"index.html", "report.css", "report.js", "junit.xml", ".ochre-regress-report",
@@ -127,7 +127,7 @@ TEST(OchreRegressHtml, ReportOfAFailingSuite) {
 TEST(OchreRegressHtml, ReportHoldsNoExternalReference) {
   const auto dir = scratch_dir();
   failing_suite(dir);
-  ASSERT_EQ(run_regress("suite --html report", dir).exit_code, 1);
+  ASSERT_EQ(run_regress("suite --html report", dir).exit_code, 4);
   size_t scanned = 0;
   for (const fs::path& file : report_files(dir / "report")) {
     if (!has_extension(file, {".html", ".js", ".css"})) continue;
@@ -146,7 +146,7 @@ TEST(OchreRegressHtml, HistoryFromEarlierReportsAndJUnitFiles) {
              "<testcase name=\"lambert_environment\" time=\"1.5\"/>"
              "<testcase name=\"spot_light\" time=\"0.25\"><failure message=\"&lt;broken&gt;\"/></testcase>"
              "</testsuite></testsuites>\n");
-  ASSERT_EQ(run_regress("suite --html first --history old.xml", dir).exit_code, 1);
+  ASSERT_EQ(run_regress("suite --html first --history old.xml", dir).exit_code, 4);
   const std::string first = read_file_contents(dir / "first" / "index.html");
   EXPECT_NE(first.find("2024-01-02T03:04:05Z: PASS, 1.50 s"), std::string::npos) << first;
   EXPECT_NE(first.find("2024-01-02T03:04:05Z: FAIL, 0.25 s"), std::string::npos) << first;
@@ -154,7 +154,7 @@ TEST(OchreRegressHtml, HistoryFromEarlierReportsAndJUnitFiles) {
   EXPECT_TRUE(fs::exists(dir / "first" / "history-01.xml"));
 
   // A report given as history brings its own history and its run.
-  ASSERT_EQ(run_regress("suite --html second --history first", dir).exit_code, 1);
+  ASSERT_EQ(run_regress("suite --html second --history first", dir).exit_code, 4);
   const std::string second = read_file_contents(dir / "second" / "index.html");
   EXPECT_NE(second.find("2024-01-02T03:04:05Z: FAIL, 0.25 s"), std::string::npos) << second;
   EXPECT_TRUE(fs::exists(dir / "second" / "history-02.xml"));
@@ -163,7 +163,7 @@ TEST(OchreRegressHtml, HistoryFromEarlierReportsAndJUnitFiles) {
             read_file_contents(dir / "first" / "junit.xml"));
   // A scene missing from an earlier run shows as not run.
   write_text(dir / "runs" / "a.xml", "<testsuite><testcase name=\"spot_light\" time=\"0.1\"/></testsuite>");
-  ASSERT_EQ(run_regress("suite --html third --history runs", dir).exit_code, 1);
+  ASSERT_EQ(run_regress("suite --html third --history runs", dir).exit_code, 4);
   EXPECT_NE(read_file_contents(dir / "third" / "index.html").find("run 1: not run"), std::string::npos);
 }
 
@@ -186,7 +186,7 @@ TEST(OchreRegressHtml, ReplacesAnEarlierReportOnlyWhenComplete) {
   fs::remove(dir / "suite" / "mix_add_closures.json");
   write_text(dir / "report" / "stale.txt", "from an earlier report");
   r = run_regress("suite --html report/", dir);
-  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(read_file_contents(dir / "report" / "index.html").find("lambert_environment"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "report" / "stale.txt"));
   EXPECT_TRUE(no_temporaries_beside(dir / "report"));

@@ -7,12 +7,14 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 
 #include "cli/regress_suite.h"
 #include "renderer/compare/regression_compare.h"
 #include "renderer/image/exr_reader.h"
+#include "renderer/image/exr_writer.h"
 #include "support/test_paths.h"
 #include "support/text_files.h"
 
@@ -49,7 +51,7 @@ TEST(OchreRegress, PerturbedAlbedoFailsAndWritesPValueImage) {
   const auto dir = scratch_dir();
   const fs::path suite = perturbed_suite(dir);
   const CommandResult r = run_regress("suite --output-dir out --junit report.xml", dir);
-  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.exit_code, 4) << r.output;  // a scene failed (docs/cli.md, "Exit codes")
   EXPECT_NE(r.output.find("FAIL"), std::string::npos) << r.output;
   const fs::path p_exr = dir / "out" / "lambert_environment.pvalue.exr";
   ASSERT_TRUE(fs::exists(p_exr)) << r.output;
@@ -136,6 +138,46 @@ TEST(OchreRegress, MissingReferenceIsBadInputAndUpdateCreatesIt) {
   EXPECT_EQ(reference.string_attributes.at("ochre:regress_spp"), "64");
   EXPECT_GT(std::stod(reference.string_attributes.at("ochre:render_seconds")), 0.0);
   EXPECT_EQ(run_regress("suite", dir).exit_code, 0);
+}
+
+// A reference that cannot be one (a NaN, infinite or negative variance, a NaN mean, a sample count below 1
+// or not a number) is bad input naming the reference and the pixel or attribute, never a render regression.
+TEST(OchreRegress, ABadReferenceIsBadInputNotARegression) {
+  const auto dir = scratch_dir();
+  fs::create_directories(dir / "suite");
+  fs::copy_file(suite_dir() / "lambert_environment.json", dir / "suite" / "lambert_environment.json");
+  ASSERT_EQ(run_regress("suite --update --reference-spp 16", dir).exit_code, 0);
+  const fs::path file = dir / "suite" / "references" / "lambert_environment.exr";
+  const ExrImage good = read_exr(file);
+  const auto forged = [&](const std::string& channel, float value, const std::string& spp) {
+    ExrImage image = good;
+    for (auto& [name, values] : image.channels)
+      if (name == channel) values[5] = value;
+    image.string_attributes["ochre:regress_spp"] = spp;
+    write_exr(file, image);
+    return run_regress("suite", dir);
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const struct {
+    std::string channel;
+    float value;
+    std::string spp, expected;
+  } cases[] = {
+      {"variance.Y", nan, "16", "pixel (5, 0): variance.Y is nan"},
+      {"variance.Y", -1.0f, "16", "pixel (5, 0): variance.Y is -1"},
+      {"variance.Y", inf, "16", "pixel (5, 0): variance.Y is inf"},
+      {"Y", nan, "16", "pixel (5, 0): Y is nan"},
+      {"Y", 0.5f, "0", "'ochre:regress_spp': expected a sample count of at least 1, got '0'"},
+      {"Y", 0.5f, "nan", "got 'nan'"},
+      {"Y", 0.5f, "2.5", "got '2.5'"},
+      {"Y", 0.5f, "-16", "got '-16'"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r = forged(c.channel, c.value, c.spp);
+    EXPECT_EQ(r.exit_code, 2) << c.expected << "\n" << r.output;
+    EXPECT_NE(r.output.find("lambert_environment.exr"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
+  }
 }
 
 TEST(OchreRegress, BadArguments) {

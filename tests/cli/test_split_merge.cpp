@@ -135,7 +135,7 @@ TEST(SplitMerge, MergedSumsMergeAgainWithFurtherParts) {
   ASSERT_EQ(merge(dir, "s02.exr p3.exr --sums s023.exr").exit_code, 0);
   expect_merge_gives_the_single_render(dir, "s023.exr p1.exr");
   const CommandResult check = merge(dir, "--check s02.exr p3.exr");
-  EXPECT_EQ(check.exit_code, 2);
+  EXPECT_EQ(check.exit_code, 4);  // a check that did not pass (docs/cli.md, "Exit codes")
   EXPECT_TRUE(contains(check.output, "missing: samples 3:6 of every pixel")) << check.output;
 }
 
@@ -182,9 +182,33 @@ class BadParts : public ::testing::Test {
     bytes.replace(at, from.size(), to);
     std::ofstream(dir / name, std::ios::binary) << bytes;
   }
+  // A copy of p1.exr whose string attribute `name` holds `value` (of the old value's length).
+  void edit_attribute(const std::string& copy, const std::string& name, const std::string& value) {
+    ASSERT_TRUE(copy_with_string_attribute(dir / "p1.exr", dir / copy, name, value));
+  }
   fs::path dir = scratch_dir();
   FileSnapshot before;
 };
+
+// The header fields the merge applies are read strictly: a value ochre render would not write is refused,
+// naming the part file and the field (never partly parsed: "3abc" is not 3).
+TEST_F(BadParts, HeaderValuesAreCheckedNotPartlyParsed) {
+  render(dir, kCornell, kSmall + " --part 1/2 --exposure 12.5 -o p1.exr");
+  edit_attribute("exposure.exr", "ochre.display.exposure", "3abc");
+  expect_refused("--partial exposure.exr",
+                 "exposure.exr: ochre.display.exposure: expected a number in [-64, 64], got '3abc'");
+  edit_attribute("huge.exr", "ochre.display.exposure", "1e99");
+  expect_refused("--partial huge.exr",
+                 "huge.exr: ochre.display.exposure: expected a number in [-64, 64], got '1e99'");
+  edit_attribute("sampler.exr", "ochre.sampler", "bogus");
+  expect_refused("--partial sampler.exr",
+                 "sampler.exr: ochre.sampler: unknown value 'bogus' (known: independent, sobol)");
+  edit_attribute("space.exr", "ochre.colorspace", "rec710");
+  expect_refused("--partial space.exr",
+                 "space.exr: ochre.colorspace: unknown value 'rec710' (known: rec709, acescg)");
+  edit_attribute("seed.exr", "ochre.seed", "x");
+  expect_refused("--partial seed.exr", "seed.exr: ochre.seed: expected an integer in [0, 2^64), got 'x'");
+}
 
 TEST_F(BadParts, OverlappingParts) {
   render(dir, kCornell, kSmall + " --sample-range 4:8 -o overlap.exr");

@@ -1,4 +1,4 @@
-"""Tests of the Cycles benchmark harness (tools/cycles, docs/performance.md "Time to error against Cycles").
+"""Tests of the Cycles benchmark harness (tools/dev/cycles, docs/performance.md "Time to error against Cycles").
 
     python3 test_harness.py            the metrics and scene variants on synthetic data (numpy only)
     python3 test_harness.py --blender  one tiny Cycles render of scenes/benchmark/cbox-matched.json
@@ -17,7 +17,7 @@ except ImportError:
     print('numpy missing: skipped')
     sys.exit(SKIP)
 
-spec = importlib.util.spec_from_file_location('run_benchmark', os.path.join(ROOT, 'tools/cycles/run_benchmark.py'))
+spec = importlib.util.spec_from_file_location('run_benchmark', os.path.join(ROOT, 'tools/dev/cycles/run_benchmark.py'))
 rb = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(rb)
 
@@ -122,7 +122,7 @@ class Variants(unittest.TestCase):
             rb.checked_colour_spp(64, [8, 32, 128])
         self.assertIn('--colour-spp 64', str(e.exception.code))
         with tempfile.TemporaryDirectory() as out:  # the whole tool stops before it writes anything
-            r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools/cycles/run_benchmark.py'), '--out',
+            r = subprocess.run([sys.executable, os.path.join(ROOT, 'tools/dev/cycles/run_benchmark.py'), '--out',
                                 os.path.join(out, 'bench'), '--renderers', 'ochre', '--spps', '8,32',
                                 '--colour-spp', '64'], capture_output=True, text=True)
             self.assertNotEqual(r.returncode, 0)

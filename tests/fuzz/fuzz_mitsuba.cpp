@@ -18,9 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     small.height = 4;
     small.spp = 1;
     small.threads = 1;
-    const auto scene = ochre::load_scene(file, small);
-    ochre::Film film(scene->settings.width, scene->settings.height);
-    ochre::render(*scene, film);
+    const ochre::LoadedScene scene = ochre::load_scene(file, small);
+    ochre::Film film(scene.job.settings.width, scene.job.settings.height);
+    ochre::render(*scene.scene, scene.job, film);
   });
   return 0;
 }

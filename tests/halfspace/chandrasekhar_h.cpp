@@ -2,15 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
-#include "tools/halfspace/gauss_legendre.h"
+#include "materials/numerics/gauss_legendre.h"
 
 namespace ochre::halfspace::test {
 
 ChandrasekharH::ChandrasekharH(double c, int nodes) : c_(c) {
-  QuadratureRule rule = gauss_legendre_unit(nodes);
-  x_ = rule.x;
-  w_ = rule.w;
+  GaussLegendreRule rule = gauss_legendre_rule(nodes, 0.0, 1.0);  // on [0, 1]
+  x_ = std::move(rule.nodes);
+  w_ = std::move(rule.weights);
   h_.assign(nodes, 1.0);
   for (int iteration = 0; iteration < 10000; ++iteration) {
     double change = 0.0;

@@ -11,7 +11,7 @@
 
 #include "chandrasekhar_h.h"
 #include "materials/core/pi.h"
-#include "tools/halfspace/gauss_legendre.h"
+#include "materials/numerics/gauss_legendre.h"
 
 namespace ochre::halfspace::test::halfspace_mc_test {
 namespace {
@@ -83,8 +83,8 @@ struct HemisphereQuadrature {
   std::vector<Direction> directions;
   std::vector<double> weights;
   HemisphereQuadrature(int mu_nodes, int phi_nodes) {
-    const QuadratureRule rule = gauss_legendre_unit(mu_nodes);
-    const std::vector<double>&x = rule.x, &w = rule.w;
+    const GaussLegendreRule rule = gauss_legendre_rule(mu_nodes, 0.0, 1.0);
+    const std::vector<double>&x = rule.nodes, &w = rule.weights;
     for (int i = 0; i < mu_nodes; ++i)
       for (int j = 0; j < phi_nodes; ++j) {
         directions.push_back(direction_from_angles(x[i], kPiD * (j + 0.5) / phi_nodes));
@@ -170,11 +170,11 @@ TEST(HalfspaceMc, ChandrasekharHMatchesKnownValues) {
   const ChandrasekharH h(1.0);
   EXPECT_NEAR(h(1.0), 2.9078, 2e-4);
   EXPECT_NEAR(h(0.0), 1.0, 1e-12);
-  const QuadratureRule rule = gauss_legendre_unit(40);
+  const GaussLegendreRule rule = gauss_legendre_rule(40, 0.0, 1.0);
   double moment0 = 0.0, moment1 = 0.0;
-  for (size_t i = 0; i < rule.x.size(); ++i) {
-    moment0 += rule.w[i] * h(rule.x[i]);
-    moment1 += rule.w[i] * rule.x[i] * h(rule.x[i]);
+  for (size_t i = 0; i < rule.nodes.size(); ++i) {
+    moment0 += rule.weights[i] * h(rule.nodes[i]);
+    moment1 += rule.weights[i] * rule.nodes[i] * h(rule.nodes[i]);
   }
   EXPECT_NEAR(moment0, 2.0, 1e-4);
   EXPECT_NEAR(moment1, 2.0 / std::sqrt(3.0), 1e-4);

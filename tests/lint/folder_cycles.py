@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """The include graph of ochre's layers (docs/architecture.md, "Design rules"): no include from a layer into a
 layer above it (spectra <- materials <- renderer <- tools), and no cycle between the sub-folders of one
-layer (materials/lobes may use materials/numerics, never both ways). Prints every violation with the
-includes that make it and exits 1; exits 0 when the graph is clean.
+layer (materials/lobes may use materials/numerics, never both ways). In tools/ every source is in a
+sub-folder (a program's, or the shared library tools/cli: docs/architecture.md, "The tools"), none at the
+top for the sub-folders to share. Prints every violation with the includes that make it and exits 1;
+exits 0 when the graph is clean.
 
 usage: folder_cycles.py SOURCE_DIR [LAYER ...]   (default: every layer)
 """
@@ -12,6 +14,8 @@ import re
 import sys
 
 LAYERS = ["spectra", "materials", "renderer", "tools"]
+# Layers whose sources all sit in sub-folders.
+NO_TOP_LEVEL_SOURCES = {"tools"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 SOURCE_SUFFIXES = (".h", ".hpp", ".cpp", ".cc")
 
@@ -59,6 +63,11 @@ def find_cycles(edges):
 
 def check_layer(root, layer):
     problems = []
+    if layer in NO_TOP_LEVEL_SOURCES:
+        for name in sorted(os.listdir(os.path.join(root, layer))):
+            if name.endswith(SOURCE_SUFFIXES):
+                problems.append(f"{layer}/{name}: a source at the top of {layer}/ (put it in the sub-folder of its "
+                                f"program, or in {layer}/cli when several use it)")
     above = LAYERS[LAYERS.index(layer) + 1:]
     edges = collections.defaultdict(set)
     reasons = collections.defaultdict(list)

@@ -23,10 +23,11 @@ LIBRARY_DIRECTORIES = [
     ("spectra", False, set()),
     ("materials", True, set()),
     ("renderer", False, set()),
-    ("tools/brdf", False, set()),
+    ("tools/ochre", False, set()),
+    ("tools/brdf", False, {"ochre_brdf.cpp", "material_probe.cpp"}),
     ("tools/vgroove", False, {"ochre_vgroove.cpp"}),
     ("tools/fit", False, {"ochre_fit.cpp"}),
-    ("tools/regress", False, set()),
+    ("tools/regress", False, {"ochre_regress.cpp"}),
     ("tools/halfspace", False, {"ochre_halfspace.cpp"}),
     ("tools/python", False, set()),
 ]

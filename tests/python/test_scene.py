@@ -86,7 +86,11 @@ class LoadScene(unittest.TestCase):
             ochre.load_scene(BOX, resolution=(0, 8))
         with self.assertRaises(ochre.InputError) as error:
             ochre.load_scene(BOX, polarization="sideways")
-        self.assertIn("integrator.polarization: unknown mode 'sideways'", str(error.exception))
+        # The argument is named, with the known values.
+        self.assertIn("polarization: unknown 'sideways' (known: auto, off, intensity, stokes)", str(error.exception))
+        with self.assertRaises(ochre.InputError) as error:
+            ochre.load_scene(BOX, sampler="halton")
+        self.assertIn("sampler: unknown 'halton' (known: independent, sobol)", str(error.exception))
         with self.assertRaises(ochre.InputError) as error:
             ochre.load_scene(os.path.join(SOURCE, "no/such/scene.json"))
         self.assertIn("cannot open scene file", str(error.exception))

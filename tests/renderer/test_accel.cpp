@@ -186,12 +186,12 @@ TEST(Accel, SphereMeshIsWatertight) {
   EXPECT_EQ(wrong_side, 0);
 }
 
-// Secondary rays from offset origins never hit the triangle they leave, at any scale.
+// Spawned rays never hit the triangle they leave, at any scale.
 TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
   for (float scale : {1e-3f, 1.0f, 1e3f}) {
     const Vec3 centre = Vec3(0.5f, -3, 7) * scale * 10.0f;
-    std::vector<Mesh> meshes = mesh_list(
-        placed(make_sphere(1, 48), Transform::translate(centre) * Transform::scale({scale, scale, scale})));
+    std::vector<Mesh> meshes = mesh_list(placed(
+        make_sphere(1, 48), Transform::translate(Vec3d(centre)) * Transform::scale({scale, scale, scale})));
     const Accel accel(meshes);
     Random random;
     int self_hits = 0, escaped_inward = 0, blocked_outward = 0;
@@ -204,10 +204,10 @@ TEST(Accel, OffsetOriginsAvoidSelfIntersection) {
       // Outward: a convex polyhedron cannot be hit again.
       Vec3 out = random.direction();
       if (dot(out, sp.ng) < 0) out = -out;
-      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, out), out})) ++blocked_outward;
+      if (accel.occluded(spawn_ray(sp, sp.ng, out))) ++blocked_outward;
       // Inward: must hit another triangle on the far side.
       const Vec3 in = -out;
-      const auto next = accel.intersect({offset_ray_origin(sp.p, sp.p_error, sp.ng, in), in});
+      const auto next = accel.intersect(spawn_ray(sp, sp.ng, in));
       if (!next) {
         ++escaped_inward;
       } else if (next->triangle == hit->triangle) {
@@ -264,14 +264,14 @@ TEST(Accel, OffsetOriginsLeaveAxisAlignedPlanesThroughTheOrigin) {
       ASSERT_TRUE(hit);
       const SurfacePoint sp = surface_point(meshes, *hit, ray);
       const Vec3 mirrored{ray.dir.x, ray.dir.y, -ray.dir.z};
-      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, mirrored), mirrored})) ++self_hits;
+      if (accel.occluded(spawn_ray(sp, sp.ng, mirrored))) ++self_hits;
     }
     EXPECT_EQ(self_hits, 0) << "z " << z;
   }
 }
 
-// A huge tilted mirror: a point near the world origin interpolated from corners 400 units away is as
-// uncertain as the corners; rays reflected there must never hit the plane again, and rays through it must
+// A huge tilted mirror: a point near the world origin interpolated from corners 400 units away; rays
+// reflected there must never hit the plane again (its other triangle included), and rays through it must
 // never hit it twice.
 TEST(Accel, OffsetOriginsOnHugeTiltedTrianglesAvoidSelfIntersection) {
   const Transform tilt =
@@ -298,11 +298,56 @@ TEST(Accel, OffsetOriginsOnHugeTiltedTrianglesAvoidSelfIntersection) {
       const Vec3 n = dot(sp.ng, ray.dir) < 0 ? sp.ng : -sp.ng;
       const Vec3 d = normalize(ray.dir);
       const Vec3 mirrored = d - n * (2 * dot(d, n));
-      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, mirrored), mirrored})) ++self_hits;
-      if (accel.occluded({offset_ray_origin(sp.p, sp.p_error, sp.ng, d), d})) ++self_hits;
+      if (accel.occluded(spawn_ray(sp, sp.ng, mirrored))) ++self_hits;
+      if (accel.occluded(spawn_ray(sp, sp.ng, d))) ++self_hits;
     }
     EXPECT_EQ(self_hits, 0) << "half size " << half;
   }
+}
+
+// Long, thin quads (800 x 0.7, two triangles each, turned by a generic rotation, so that their rounded
+// corners fold each quad by ~7e-5 radians along its diagonal): rays leaving either triangle near the
+// diagonal never hit the other half, and a V of two such quads meeting at 90 degrees still catches the
+// rays that leave one side toward the other a hair's breadth (1e-4) from the valley.
+TEST(Accel, SpawnedRaysOnLongThinQuadsSeeNeitherTheFoldNorThroughTheValley) {
+  const Transform turn = Transform::rotate(37, {1, 2, 3}) * Transform::translate({0.3f, -0.2f, 0.1f});
+  const float half = 400.0f, width = 0.7f;
+  // Side A rises from the valley line (along x) in +y, side B in -y, both at 45 degrees.
+  const float c = width * std::sqrt(0.5f);
+  Mesh v;
+  v.positions = {{-half, 0, 0}, {half, 0, 0}, {half, c, c}, {-half, c, c}, {half, -c, c}, {-half, -c, c}};
+  v.indices = {0, 1, 2, 0, 2, 3, 1, 0, 5, 1, 5, 4};  // A: triangles 0, 1; B: triangles 2, 3
+  v.transform(turn);
+  std::vector<Mesh> meshes{v};
+  const Accel accel(meshes);
+  Random random;
+  int folds = 0, leaks = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // A point on side A near its diagonal (from (-half, 0, 0) to (half, c, c)) or near the valley.
+    const float along = (random.uniform() - 0.5f) * 1.6f * half;
+    const bool near_valley = i % 2 == 1;
+    const float across = near_valley ? 1e-4f : (along / half + 1) * 0.5f + (random.uniform() - 0.5f) * 2e-4f;
+    const Vec3 local{along, across * c, across * c};
+    const Vec3 target = turn.point(local);
+    const Vec3 normal_a = normalize(turn.vector({0, -1, 1}));  // side A faces the valley's inside
+    const Ray camera{target + normal_a * 2.0f + turn.vector({0.1f, 0, 0}),
+                     -normal_a * 2.0f - turn.vector({0.1f, 0, 0})};
+    const auto hit = accel.intersect(camera);
+    if (!hit || hit->triangle > 1) continue;
+    const SurfacePoint sp = surface_point(meshes, *hit, camera);
+    if (near_valley) {
+      // Toward side B, nearly parallel to A: B lies 1e-4 away across the valley, it must be found.
+      const Vec3 toward_b = normalize(turn.vector({0.3f, -1, 0.02f}));
+      const auto next = accel.intersect(spawn_ray(sp, sp.ng, toward_b));
+      if (!next || next->triangle < 2) ++leaks;
+    } else {
+      // Leaving A at a low angle across its diagonal: nothing can be hit.
+      const Vec3 grazing = normalize(turn.vector({0.2f, 1, 1.02f}));
+      if (accel.occluded(spawn_ray(sp, sp.ng, grazing))) ++folds;
+    }
+  }
+  EXPECT_EQ(folds, 0);
+  EXPECT_EQ(leaks, 0);
 }
 
 TEST(Accel, SurfacePointInterpolatesColoursAndNormals) {

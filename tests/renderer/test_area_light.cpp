@@ -22,7 +22,7 @@ SampledSpectrum fresh_emission(const CompiledMaterial& m, const SurfacePoint& sp
                                const SampledWavelengths& l) {
   LobeArena arena;
   Closure closure;
-  m.evaluate(shading_context(sp, l, nullptr), arena, closure);
+  m.evaluate(shading_context(sp, {0, 0, 0}, l, nullptr), arena, closure);
   return closure.emission();
 }
 

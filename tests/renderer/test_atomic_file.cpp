@@ -1,6 +1,7 @@
 // AtomicOutput and check_output_writable: files appear complete or not at all, old files survive
 // failures, bad output paths fail before any work.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -89,6 +90,30 @@ TEST(CheckOutputWritable, AcceptsAWritableDirectoryAndAnExistingFile) {
   EXPECT_NO_THROW(check_output_writable(dir / "new.png"));
   write_text(dir / "old.png", "x");
   EXPECT_NO_THROW(check_output_writable(dir / "old.png"));
+}
+
+// A name the file system cannot hold (with the temporary file's suffix) is refused before any work, not
+// when the output is written at the end.
+TEST(CheckOutputWritable, ANameTooLongForTheFileSystemIsRefusedFirst) {
+  const fs::path dir = test::scratch_dir();
+  const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  ASSERT_GT(name_max, 20);
+  const std::string fits(static_cast<size_t>(name_max) - 30, 'a');
+  EXPECT_NO_THROW(check_output_writable(dir / (fits + ".exr")));
+  AtomicOutput output(dir / (fits + ".exr"));
+  write_text_file(output, "x");
+  EXPECT_NO_THROW(output.commit());
+  const std::string too_long(static_cast<size_t>(name_max) - 4, 'b');
+  try {
+    check_output_writable(dir / (too_long + ".xml"));
+    FAIL() << "should throw";
+  } catch (const ImageError& error) {
+    EXPECT_NE(
+        std::string(error.what())
+            .find(fmt::format("its name is {} bytes long; this file system allows {}", name_max, name_max)),
+        std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(CheckOutputWritable, MissingDirectoryIsNamed) {

@@ -17,20 +17,19 @@ namespace {
 
 constexpr int kSize = 32;
 
-std::unique_ptr<Scene> cornell_box(uint32_t spp, int branches,
-                                   const char* file = "cornell-box/cornell-box.json") {
+LoadedScene cornell_box(uint32_t spp, int branches, const char* file = "cornell-box/cornell-box.json") {
   SceneOverrides o;
   o.width = kSize;
   o.height = kSize;
   o.spp = spp;
-  auto scene = load_scene(test::source_dir() / "scenes" / file, o);
-  scene->settings.branches = branches;
+  LoadedScene scene = load_scene(test::source_dir() / "scenes" / file, o);
+  scene.job.settings.branches = branches;
   return scene;
 }
 
-Film render_film(const Scene& scene) {
-  Film film(scene.settings.width, scene.settings.height);
-  render(scene, film);
+Film render_film(const LoadedScene& scene) {
+  Film film(scene.job.settings.width, scene.job.settings.height);
+  render(*scene.scene, scene.job, film);
   return film;
 }
 
@@ -64,26 +63,26 @@ bool same_pixels(const Film& a, const Film& b) {
 
 TEST(BranchedPaths, DeterministicForAnyThreadCountAndSplitOfTheSampleRange) {
   auto scene = cornell_box(6, 3);
-  scene->settings.threads = 2;
-  const Film whole = render_film(*scene);
-  scene->settings.threads = 1;
-  EXPECT_TRUE(same_pixels(whole, render_film(*scene)));
+  scene.job.settings.threads = 2;
+  const Film whole = render_film(scene);
+  scene.job.settings.threads = 1;
+  EXPECT_TRUE(same_pixels(whole, render_film(scene)));
 
   Film part_a(kSize, kSize), part_b(kSize, kSize);
-  scene->settings.spp = 2;
-  render(*scene, part_a);
-  scene->settings.sample_begin = 2;
-  scene->settings.spp = 4;
-  scene->settings.threads = 2;
-  render(*scene, part_b);
+  scene.job.settings.spp = 2;
+  render(*scene.scene, scene.job, part_a);
+  scene.job.settings.sample_begin = 2;
+  scene.job.settings.spp = 4;
+  scene.job.settings.threads = 2;
+  render(*scene.scene, scene.job, part_b);
   part_b.merge(part_a);
   EXPECT_TRUE(same_pixels(whole, part_b));
 
   // The branches draw numbers of their own: the image is not the unbranched one.
-  scene->settings.sample_begin = 0;
-  scene->settings.spp = 6;
-  scene->settings.branches = 1;
-  EXPECT_FALSE(same_pixels(whole, render_film(*scene)));
+  scene.job.settings.sample_begin = 0;
+  scene.job.settings.spp = 6;
+  scene.job.settings.branches = 1;
+  EXPECT_FALSE(same_pixels(whole, render_film(scene)));
 }
 
 // Same expected image, less error per camera sample: the Cornell box with 4 branches against 1, both against
@@ -91,10 +90,10 @@ TEST(BranchedPaths, DeterministicForAnyThreadCountAndSplitOfTheSampleRange) {
 // indirect light; across the whole 32x32 film the pixels' footprints (edges, the light) add the noise of
 // the shared first vertex.
 TEST(BranchedPaths, SameImageWithLessErrorPerCameraSample) {
-  const Film ref = render_film(*cornell_box(2048, 1));
-  const Film one = render_film(*cornell_box(8, 1));
-  const Film four = render_film(*cornell_box(8, 4));
-  const Film four_long = render_film(*cornell_box(512, 4));
+  const Film ref = render_film(cornell_box(2048, 1));
+  const Film one = render_film(cornell_box(8, 1));
+  const Film four = render_film(cornell_box(8, 4));
+  const Film four_long = render_film(cornell_box(512, 4));
   const double e1 = relmse_y(one, ref, 12, 12, 20, 20), e4 = relmse_y(four, ref, 12, 12, 20, 20);
   std::printf(
       "Cornell box 32x32, relMSE(Y) of the back wall's middle at 8 camera samples: 1 branch %.4g, "
@@ -111,8 +110,8 @@ TEST(BranchedPaths, SameImageWithLessErrorPerCameraSample) {
 // Polarized throughput (intensity mode), a smooth gold mirror and lights sampled through it: the vertex
 // that the branches share keeps its lobes while theirs come and go.
 TEST(BranchedPaths, PolarizedGoldMirrorBoxAgreesWithTheUnbranchedRender) {
-  const Film ref = render_film(*cornell_box(1024, 1, "benchmark/cbox-gold-back.json"));
-  const Film branched = render_film(*cornell_box(256, 4, "benchmark/cbox-gold-back.json"));
+  const Film ref = render_film(cornell_box(1024, 1, "benchmark/cbox-gold-back.json"));
+  const Film branched = render_film(cornell_box(256, 4, "benchmark/cbox-gold-back.json"));
   std::printf("gold-back box 32x32: mean Y %.5f (4 branches, 256 spp) vs %.5f (1 branch, 1024 spp)\n",
               mean_y(branched), mean_y(ref));
   EXPECT_NEAR(mean_y(branched) / mean_y(ref), 1.0, 0.01);
@@ -138,7 +137,7 @@ TEST(BranchedPaths, BranchesLeaveTheFirstNonDeltaVertex) {
   })");
   const auto scene = load_scene_json(scene_json, "mirror.json", test::source_dir() / "mirror.json");
   Film film(8, 8);
-  const RenderStats stats = render(*scene, film);
+  const RenderStats stats = render(*scene.scene, scene.job, film);
   const uint64_t camera_samples = 8 * 8 * 4;
   // Camera ray, mirror bounce, then 3 branches of one ray each (branching at the mirror would trace
   // 1 + 3 x 2 rays).

@@ -60,7 +60,7 @@ std::unique_ptr<EnvironmentLight> make_light(const nlohmann::json& j, const fs::
                                              float radius = 1.0f) {
   const JsonFields f(j, "scene.json: lights[0]");
   const Camera camera = Camera::perspective(camera_basis_look_at({0, 0, 5}, {0, 0, 0}, {0, 1, 0}), 40, 8, 8);
-  BuiltLight built = LightRegistry::builtin().type_of(f).load(f, dir, camera, radius);
+  BuiltLight built = LightRegistry::builtin().type_of(f).load(f, dir, camera, Vec3d{}, radius);
   return std::unique_ptr<EnvironmentLight>(dynamic_cast<EnvironmentLight*>(built.light.release()));
 }
 

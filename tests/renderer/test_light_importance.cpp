@@ -50,7 +50,7 @@ TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
   scene.lights.push_back(std::make_unique<SpotLight>(Vec3(0, 0, 5), Vec3(0, 0, -1), 10.0f, 5.0f,
                                                      constant(1.0f), SpotLight::Falloff::Linear));
   scene.update_light_selection();
-  ASSERT_TRUE(scene.local_light_selection());
+  ASSERT_TRUE(scene.local_light_selection(LightSelection::kLocal));
   // By power: the two point lights 4 pi each, the narrow spot 2 pi (1 - cos) and a bit.
   EXPECT_NEAR(scene.light_pmf(0), scene.light_pmf(1), 1e-7);
   EXPECT_LT(scene.light_pmf(2), 0.02f);
@@ -68,14 +68,12 @@ TEST(LightImportance, PerPointProbabilitiesMixTheEstimatesWithThePower) {
   EXPECT_NEAR(pmf[0] + pmf[1] + pmf[2], 1.0, 1e-6);
 
   // By power only on request, and for one light or more than kMaxLocalLights.
-  scene.settings.light_selection = "power";
-  EXPECT_FALSE(scene.local_light_selection());
-  scene.settings.light_selection = "local";
+  EXPECT_FALSE(scene.local_light_selection(LightSelection::kPower));
   while (scene.lights.size() <= Scene::kMaxLocalLights)
     scene.lights.push_back(std::make_unique<PointLight>(Vec3(0, 0, 1), constant(1.0f)));
-  EXPECT_FALSE(scene.local_light_selection());
+  EXPECT_FALSE(scene.local_light_selection(LightSelection::kLocal));
   scene.lights.resize(1);
-  EXPECT_FALSE(scene.local_light_selection());
+  EXPECT_FALSE(scene.local_light_selection(LightSelection::kLocal));
 }
 
 }  // namespace

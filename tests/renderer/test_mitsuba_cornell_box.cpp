@@ -28,9 +28,9 @@ SceneOverrides small() {
   return o;
 }
 
-LuminanceEstimate render_estimate(const Scene& scene) {
-  Film film(scene.settings.width, scene.settings.height);
-  render(scene, film);
+LuminanceEstimate render_estimate(const LoadedScene& scene) {
+  Film film(scene.job.settings.width, scene.job.settings.height);
+  render(*scene.scene, scene.job, film);
   return luminance_from_film(film);
 }
 
@@ -41,7 +41,7 @@ LuminanceEstimate ochre_box(int max_depth, uint64_t seed) {
   nlohmann::json root = read_json_file(file, "scene file");
   root["integrator"] = {
       {"max_depth", max_depth}, {"rr_depth", 5}, {"sampler", "independent"}, {"seed", seed}};
-  return render_estimate(*load_scene_json(root, file.string(), file, small()));
+  return render_estimate(load_scene_json(root, file.string(), file, small()));
 }
 
 struct Mean {
@@ -80,9 +80,9 @@ TEST(MitsubaCornellBox, SpectralBoxRendersWithinNoiseOfOchresBox) {
   OCHRE_REQUIRE_SHARED();
   const auto xml = test::shared_dir() / "assets/scenes/cornell-box-mitsuba/cbox-spectral.xml";
   const auto scene = load_scene(xml, small());
-  ASSERT_EQ(scene->settings.max_depth, 5);  // Mitsuba's max_depth 6
-  ASSERT_EQ(scene->settings.rr_depth, 5);
-  const LuminanceEstimate mitsuba = render_estimate(*scene);
+  ASSERT_EQ(scene.job.settings.max_depth, 5);  // Mitsuba's max_depth 6
+  ASSERT_EQ(scene.job.settings.rr_depth, 5);
+  const LuminanceEstimate mitsuba = render_estimate(scene);
   const LuminanceEstimate ochre = ochre_box(5, 1);
 
   // 8 regions: |z| < 4 fails a correct import with probability below 1e-3.

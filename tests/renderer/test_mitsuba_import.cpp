@@ -1,6 +1,7 @@
 // Mitsuba 3 XML import (docs/mitsuba-import.md): what each element becomes in ochre's scene JSON, the
 // conventions that must agree with Mitsuba's (path depth, fov axis, uv orientation, environment map
 // orientation), and every kind of refusal naming the file, line and element.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -117,8 +118,8 @@ TEST(MitsubaImport, EveryElementOfTheTestSceneTranslates) {
 
   // The translated scene loads through ochre's JSON loader.
   const auto scene = load_scene(data_dir() / "elements.xml");
-  EXPECT_EQ(scene->meshes.size(), 8u);
-  EXPECT_EQ(scene->lights.size(), 4u);  // the emissive disk is an area light
+  EXPECT_EQ(scene.scene->meshes.size(), 8u);
+  EXPECT_EQ(scene.scene->lights.size(), 4u);  // the emissive disk is an area light
 }
 
 TEST(MitsubaImport, MaxDepthCountsSegmentsIncludingTheCameraRay) {
@@ -171,8 +172,8 @@ double mean_y(const Film& film, int x0, int y0, int x1, int y1) {
 std::unique_ptr<Film> render_xml(const std::string& text, const std::filesystem::path& dir) {
   test::write_text(dir / "scene.xml", text);
   auto scene = load_scene(dir / "scene.xml");
-  auto film = std::make_unique<Film>(scene->settings.width, scene->settings.height);
-  render(*scene, *film);
+  auto film = std::make_unique<Film>(scene.job.settings.width, scene.job.settings.height);
+  render(*scene.scene, scene.job, *film);
   return film;
 }
 
@@ -364,6 +365,38 @@ TEST(MitsubaImport, DeepNestingIsRefusedNotACrash) {
   text += "\n</scene>\n";
   const std::string message = test::input_error_of([&] { translate_mitsuba_scene(write_scene(text)); });
   EXPECT_NE(message.find("nested more than 100 deep"), std::string::npos) << message.substr(0, 300);
+}
+
+// Defaults that expand each other grow exponentially ($e is 64 x 16^4 bytes = 4 MiB here; the audit's
+// 673-byte file reached 53 MB, one level more 2 GB): substitution is bounded per attribute and per document.
+TEST(MitsubaImport, SelfExpandingParametersAreRefused) {
+  std::string defaults = "<default name=\"a\" value=\"" + std::string(64, 'x') + "\"/>\n";
+  for (const char* level : {"b", "c", "d", "e"}) {
+    std::string value;
+    for (int i = 0; i < 16; ++i) value += std::string("$") + char(level[0] - 1);
+    defaults += fmt::format("<default name=\"{}\" value=\"{}\"/>\n", level, value);
+  }
+  const std::string message = test::input_error_of([&] {
+    translate_mitsuba_scene(write_scene(scene_xml(defaults + R"(<bsdf type="diffuse" id="$e"/>)")));
+  });
+  EXPECT_NE(message.find("parameter substitution makes an attribute longer than 1048576 bytes"),
+            std::string::npos)
+      << message.substr(0, 300);
+  EXPECT_LT(message.size(), 2000u);
+}
+
+TEST(MitsubaImport, SubstitutionIsBoundedForTheWholeDocument) {
+  // $d is 256 KiB, under the per-attribute bound; 300 uses of it are 75 MiB, over the 64 MiB in all.
+  std::string text = "<default name=\"a\" value=\"" + std::string(64, 'x') + "\"/>\n";
+  for (const char* level : {"b", "c", "d"}) {
+    std::string value;
+    for (int i = 0; i < 16; ++i) value += std::string("$") + char(level[0] - 1);
+    text += fmt::format("<default name=\"{}\" value=\"{}\"/>\n", level, value);
+  }
+  for (int i = 0; i < 300; ++i) text += fmt::format("<bsdf type=\"diffuse\" id=\"m{}$d\"/>\n", i);
+  const std::string message =
+      test::input_error_of([&] { translate_mitsuba_scene(write_scene(scene_xml(text))); });
+  EXPECT_NE(message.find("longer than 67108864 bytes in all"), std::string::npos) << message.substr(0, 300);
 }
 
 TEST(MitsubaImport, IncludeCyclesAreRefused) {

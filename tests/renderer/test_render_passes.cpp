@@ -8,7 +8,7 @@
 namespace ochre::test_render_passes {
 namespace {
 
-std::unique_ptr<Scene> small_cornell() {
+LoadedScene small_cornell() {
   SceneOverrides o;
   o.width = 20;
   o.height = 12;
@@ -26,18 +26,18 @@ TEST(RenderPasses, AStopRequestEndsAtAPassBoundaryThatResumesBitForBit) {
   const auto scene = small_cornell();
   const PixelRect rect{3, 2, 17, 11};
   Film whole(rect.width(), rect.height()), passes(rect.width(), rect.height());
-  render_range(*scene, whole, rect, {2, 9});
+  render_range(*scene.scene, scene.job, whole, rect, {2, 9});
   int asked = 0;
   PassSchedule one_sample_passes;
   one_sample_passes.pass_seconds = 1e-9;
   const PassResult first = render_in_passes(
-      *scene, passes, rect, {2, 9}, one_sample_passes, {},
+      *scene.scene, scene.job, passes, rect, {2, 9}, one_sample_passes, {},
       [](uint32_t, const RenderStats&) { FAIL() << "no interval"; }, [&] { return ++asked > 2; });
   EXPECT_EQ(first.stop, PassStop::stop_requested);
   EXPECT_EQ(first.next, 4u);  // two passes of one sample
   EXPECT_EQ(passes.sample_count(0, 0), first.next - 2);
-  const PassResult rest =
-      render_in_passes(*scene, passes, rect, {first.next, 9}, {}, {}, {}, [] { return false; });
+  const PassResult rest = render_in_passes(*scene.scene, scene.job, passes, rect, {first.next, 9}, {}, {}, {},
+                                           [] { return false; });
   EXPECT_EQ(rest.stop, PassStop::finished);
   EXPECT_EQ(rest.next, 9u);
   expect_same_film(whole, passes);
@@ -48,8 +48,8 @@ TEST(RenderPasses, APassedDeadlineRendersNothing) {
   Film film(20, 12);
   PassSchedule schedule;
   schedule.deadline = PassSchedule::Clock::now() - std::chrono::seconds(1);
-  const PassResult r =
-      render_in_passes(*scene, film, {0, 0, 20, 12}, {0, 9}, schedule, {}, {}, [] { return false; });
+  const PassResult r = render_in_passes(*scene.scene, scene.job, film, {0, 0, 20, 12}, {0, 9}, schedule, {},
+                                        {}, [] { return false; });
   EXPECT_EQ(r.stop, PassStop::deadline);
   EXPECT_EQ(r.next, 0u);
   EXPECT_EQ(film.sample_count(5, 5), 0u);
@@ -63,7 +63,7 @@ TEST(RenderPasses, CheckpointsComeAtIntervalsAndNeverAfterTheLastPass) {
   schedule.pass_seconds = 1e-9;         // one sample per pass
   std::vector<uint32_t> at;
   const PassResult r = render_in_passes(
-      *scene, film, {0, 0, 20, 12}, {0, 9}, schedule, {},
+      *scene.scene, scene.job, film, {0, 0, 20, 12}, {0, 9}, schedule, {},
       [&](uint32_t next, const RenderStats& so_far) {
         at.push_back(next);
         EXPECT_EQ(so_far.samples, 20u * 12u * next);

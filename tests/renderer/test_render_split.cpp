@@ -15,16 +15,16 @@ TEST(RenderSplit, MergedSampleRangesEqualOneRender) {
   o.spp = 8;
   auto scene = load_scene(test::source_dir() / "scenes/cornell-box/cornell-box.json", o);
   Film whole(24, 24);
-  render(*scene, whole);
+  render(*scene.scene, scene.job, whole);
 
   Film part_a(24, 24), part_b(24, 24);
-  scene->settings.sample_begin = 0;
-  scene->settings.spp = 3;
-  render(*scene, part_a);
-  scene->settings.sample_begin = 3;
-  scene->settings.spp = 5;
-  scene->settings.threads = 1;
-  render(*scene, part_b);
+  scene.job.settings.sample_begin = 0;
+  scene.job.settings.spp = 3;
+  render(*scene.scene, scene.job, part_a);
+  scene.job.settings.sample_begin = 3;
+  scene.job.settings.spp = 5;
+  scene.job.settings.threads = 1;
+  render(*scene.scene, scene.job, part_b);
   part_b.merge(part_a);
 
   for (int y = 0; y < 24; ++y)

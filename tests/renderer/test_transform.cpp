@@ -79,7 +79,7 @@ TEST(Transform, HandednessFlipsWithMirrorsOnly) {
 
 TEST(Transform, LookAtMapsCameraAxes) {
   const Vec3 eye{1, 2, 3}, target{1, 2, -7};
-  const Transform c = Transform::look_at(eye, target, {0, 1, 0});
+  const Transform c = Transform::look_at(Vec3d(eye), Vec3d(target), {0, 1, 0});
   expect_near(c.point({0, 0, 0}), eye);
   expect_near(c.vector({0, 0, 1}), {0, 0, -1});  // looks along camera +z
   expect_near(c.vector({0, 1, 0}), {0, 1, 0});   // +y up

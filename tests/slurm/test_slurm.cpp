@@ -1,7 +1,8 @@
-// ochre-slurm on a real Slurm (label `slurm`): a one-node cluster (tools/slurm/one_node_cluster.sh: munge,
+// ochre-slurm on a real Slurm (label `slurm`): a one-node cluster (tools/scripts/one_node_cluster.sh: munge,
 // slurmctld and slurmd on 127.0.0.1, state in a temporary folder, stopped by PID) renders the Cornell box as
 // a 4-task job array whose merge job writes the image of a single-process render, bit for bit; a cancelled
-// task is reported by the merge and re-submitted alone. Skips with a message when Slurm is not installed
+// task is reported by the merge and re-submitted alone; two frames of a flicker sequence in two parts each,
+// one array, merge to the bits of `ochre render --frames 2`. Skips with a message when Slurm is not installed
 // (tools/setup.sh installs it) or the cluster cannot start here.
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
+#include "slurm/torch_scene.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::test_slurm {
@@ -73,7 +75,7 @@ class Slurm : public ::testing::Test {
     ::unsetenv("SLURM_CONF");
   }
 
-  static std::string cluster_script() { return quoted(source_dir() / "tools/slurm/one_node_cluster.sh"); }
+  static std::string cluster_script() { return quoted(source_dir() / "tools/scripts/one_node_cluster.sh"); }
   std::string cluster(const std::string& command) const {
     return cluster_script() + " -d " + quoted(cluster_dir) + " " + command;
   }
@@ -155,6 +157,44 @@ TEST_F(Slurm, ACancelledTaskIsReportedByTheMergeAndResubmittedAlone) {
   EXPECT_EQ(tasks, again["array"] + "_2\n") << "only the missing part is rendered again";
   EXPECT_EQ(fs::last_write_time(work / "job/parts/part-0.exr"), rendered);
   EXPECT_TRUE(same_exr_pixels(work / "single.exr", work / "job/cornell-box.exr"));
+}
+
+// Frames and parts of frames as one array (task K: frame 1 + K / 2, part K % 2), each frame merged to the
+// bits of the same frame of `ochre render --frames 2`; --status reads the queue (held: every part pending)
+// and the parts; the tasks render on the CPUs Slurm allots (--cpus-per-task).
+TEST_F(Slurm, FramesAndPartsOfFramesAsOneArrayMergeToTheSequence) {
+  write_text(work / "torch.json", kTorchScene);
+  ASSERT_EQ(run_ochre("render torch.json --frames 2 -o seq.exr -q", work).exit_code, 0);
+  auto ids =
+      ochre_slurm(quoted(work / "torch.json") + " --frames 2 --parts 2 --dir frames --png frames/torch.png " +
+                  "--ochre " + quoted(bin_dir() / "ochre") + " -- --hold --cpus-per-task=1");
+  ASSERT_EQ(ids.size(), 3u);
+  const std::string slurm = "cd " + quoted(work) + " && " + quoted(bin_dir() / "ochre-slurm");
+  const CommandResult held = shell(slurm + " --status frames");
+  EXPECT_EQ(held.exit_code, 0) << held.output;
+  EXPECT_NE(held.output.find("parts rendered: 0 of 4 (pending 4)"), std::string::npos) << held.output;
+  EXPECT_NE(
+      held.output.find("jobs: merge " + ids["merge"] + " PENDING, report " + ids["report"] + " PENDING"),
+      std::string::npos)
+      << held.output;
+
+  ASSERT_EQ(shell("scontrol release " + ids["array"] + "," + ids["merge"] + "," + ids["report"]).exit_code,
+            0);
+  const std::string merge_states = wait(ids["merge"]);
+  EXPECT_TRUE(merge_states.find(ids["merge"] + " COMPLETED") != std::string::npos) << merge_states;
+  for (const char* part : {"part-0.0001.exr", "part-1.0001.exr", "part-0.0002.exr", "part-1.0002.exr"})
+    EXPECT_TRUE(fs::exists(work / "frames/parts" / part)) << part;
+  EXPECT_TRUE(same_exr_pixels(work / "seq.0001.exr", work / "frames/torch.0001.exr"));
+  EXPECT_TRUE(same_exr_pixels(work / "seq.0002.exr", work / "frames/torch.0002.exr"));
+  EXPECT_TRUE(fs::exists(work / "frames/torch.0002.png"));
+  const std::string log = read_file_contents(work / fmt::format("frames/logs/render-{}_3.log", ids["array"]));
+  EXPECT_NE(log.find("on 1 threads"), std::string::npos) << log;
+
+  const CommandResult done = shell(slurm + " --status frames");
+  EXPECT_EQ(done.exit_code, 0) << done.output;
+  EXPECT_NE(done.output.find("parts rendered: 4 of 4\n"), std::string::npos) << done.output;
+  EXPECT_NE(done.output.find("frames merged: 2 of 2"), std::string::npos) << done.output;
+  EXPECT_NE(done.output.find("jobs: merge " + ids["merge"] + " COMPLETED"), std::string::npos) << done.output;
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <iostream>
 
 #include "materials/core/pi.h"
+#include "materials/lobes/closure_lobe.h"
+#include "materials/lobes/directional_albedo.h"
 #include "materials/lobes/sampling_check.h"
 #include "renderer/output/output_files.h"
 #include "renderer/util/atomic_file.h"
@@ -14,12 +16,11 @@
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
-#include "tools/brdf/closure_lobe.h"
 #include "tools/brdf/direction_pairs.h"
-#include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
-#include "tools/csv_columns.h"
-#include "tools/python_script.h"
+#include "tools/cli/csv_columns.h"
+#include "tools/cli/program.h"
+#include "tools/cli/python_script.h"
 
 namespace ochre {
 
@@ -139,9 +140,10 @@ int run_plot(const PlotArgs& args) {
   const std::string title = fmt::format("{} ({} nm)", probe.name(), table_number(args.lambda_nm));
   const fs::path script = tool_script("plot_brdf.py");
   if (!run_python(script, {values.temp_path().string(), png.temp_path().string(), title})) {
-    std::cerr << fmt::format("ochre-brdf: error: plot {} not written ({} failed; is matplotlib installed?)\n",
-                             args.output, script.string());
-    return 1;
+    std::cerr << fmt::format(
+        "ochre-brdf: internal error: plot {} not written ({} failed; is matplotlib installed?)\n",
+        args.output, script.string());
+    return kExitInternalError;
   }
   transaction.commit();
   std::cout << "plot: " << args.output << "\n";
@@ -175,7 +177,7 @@ int run_chi2(const Chi2Args& args) {
   }
   write_output(args.output, csv, inputs);
   std::cerr << fmt::format("ochre-brdf chi2: {}: {}\n", probe.name(), all_pass ? "PASS" : "FAIL");
-  return all_pass ? 0 : 1;
+  return all_pass ? kExitDone : kExitCheckFailed;
 }
 
 }  // namespace ochre

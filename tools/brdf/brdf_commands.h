@@ -1,7 +1,8 @@
 #pragma once
-// The subcommands of ochre-brdf, the material explorer (docs/tools.md). Each returns the exit code:
-// 0 = done (chi2: every incidence passed), 1 = chi2 rejected a sampler; bad input throws InputError or
-// GraphError (the caller prints it and exits with 2). Output files are written under a temporary name
+// The subcommands of ochre-brdf, the material explorer (docs/tools.md). Each returns the exit code
+// (docs/cli.md, "Exit codes"; tools/cli/program.h): 0 = done (chi2: every incidence passed), 4 = chi2
+// rejected a sampler, 1 = the plot script failed; bad input throws InputError or GraphError (run_program
+// prints it and exits with 2). Output files are written under a temporary name
 // and renamed when complete, so a failure leaves no partial file; an output that is one of the files
 // read (the material, a texture, the input CSV, ...), a link, a device or a FIFO is refused
 // (renderer/output/output_files.h).

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
+#include "tools/cli/csv_columns.h"
 
 namespace ochre {
 

@@ -14,11 +14,12 @@
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "spectra/sampled_wavelengths.h"
+#include "tools/cli/program.h"
+#include "tools/cli/python_script.h"
 #include "tools/fit/fit_report.h"
 #include "tools/fit/powder_fit.h"
 #include "tools/fit/powder_fit_model.h"
 #include "tools/fit/synthetic_measurements.h"
-#include "tools/python_script.h"
 
 namespace ochre {
 
@@ -95,7 +96,8 @@ bool add_plot(OutputTransaction& files, const PowderFitArgs& args, const std::ve
       fmt::format("{} ({})", fs::path(args.data).filename().string(), pigment.description());
   if (run_python(script, {table.temp_path().string(), png.temp_path().string(), title})) return true;
   std::cerr << fmt::format(
-      "ochre-fit: error: plot {} not written ({} failed; is matplotlib installed?); no output written\n",
+      "ochre-fit: internal error: plot {} not written ({} failed; is matplotlib installed?); no output "
+      "written\n",
       args.plot, script.string());
   return false;
 }
@@ -145,7 +147,7 @@ int run_powder_fit(const PowderFitArgs& args) {
   if (!args.csv.empty())
     write_text_file(files.add(args.csv),
                     fit_table_csv(data, powder_brdf_values(result.values, data, pigment), used));
-  if (!args.plot.empty() && !add_plot(files, args, fitted, result.values, pigment)) return 1;
+  if (!args.plot.empty() && !add_plot(files, args, fitted, result.values, pigment)) return kExitInternalError;
   files.commit();
   for (const std::string& output : {args.material, args.plot, args.csv})
     if (!output.empty()) std::cout << "wrote " << output << "\n";

@@ -1,6 +1,7 @@
 #pragma once
-// The commands of ochre-fit (docs/tools.md). Each returns the exit code: 0 done, 1 the plot script failed
-// (nothing written); bad input throws InputError (the caller prints it and exits with 2).
+// The commands of ochre-fit (docs/tools.md). Each returns the exit code (docs/cli.md, "Exit codes";
+// tools/cli/program.h): 0 done, 1 the plot script failed (nothing written); bad input throws InputError
+// (run_program prints it and exits with 2).
 
 #include <cstdint>
 #include <string>

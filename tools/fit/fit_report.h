@@ -1,6 +1,6 @@
 #pragma once
 // What ochre-fit powder writes (docs/tools.md): the summary it prints, the material JSON, the table of
-// data, fit and residuals, and the incidence-plane values that tools/plot_fit.py draws.
+// data, fit and residuals, and the incidence-plane values that tools/scripts/plot_fit.py draws.
 
 #include <filesystem>
 #include <string>

@@ -7,7 +7,7 @@
 
 #include "spectra/input_error.h"
 #include "spectra/sampled_wavelengths.h"
-#include "tools/csv_columns.h"
+#include "tools/cli/csv_columns.h"
 
 namespace ochre {
 

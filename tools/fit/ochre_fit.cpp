@@ -6,20 +6,21 @@
 //                    [--residuals relative|absolute] [-o MATERIAL.json] [--plot FIT.png] [--csv FIT.csv] [-q]
 //   ochre-fit powder --synthesize OUT.csv [--params NAME=VALUE ...] [--noise 0.01] [--seed 1]
 //                    [--lambda 450,550,650 | --geometry MEASUREMENTS.csv]
-// Exit codes: 0 = done, 1 = the plot script failed (nothing written), 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad input or usage, 1 = the plot script failed
+// (nothing written), or an internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
-#include <exception>
 
 #include "ochre/version.h"
-#include "renderer/util/image_error.h"
 #include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/fit/fit_commands.h"
-#include "tools/unsigned_option.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int fit_command(int argc, char** argv) {
   CLI::App app{"ochre-fit: fit a material model to BRDF measurements and write an ochre material"};
   app.set_version_flag("--version", "ochre-fit " OCHRE_VERSION);
   app.require_subcommand(1);
@@ -29,7 +30,8 @@ int main(int argc, char** argv) {
   CLI::App* powder =
       app.add_subcommand("powder", "The dry-powder BRDF (Gerardin, Martinetto and Holzschuch 2023)");
   CLI::Option* data =
-      powder->add_option("--data", fit.data, "Measurements: CSV theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf");
+      powder->add_option("--data", fit.data, "Measurements: CSV theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf")
+          ->check(ochre::non_empty_path());
   CLI::Option* synthesize = powder->add_option(
       "--synthesize", synth.output, "Write synthetic measurements of known parameters to this CSV");
   data->excludes(synthesize);
@@ -63,9 +65,14 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->needs(data);
   powder->add_option("-o,--output", fit.material, "Write the fitted material (JSON scene with a preview)")
-      ->needs(data);
-  powder->add_option("--plot", fit.plot, "Plot of data and fit in the plane of incidence (PNG)")->needs(data);
-  powder->add_option("--csv", fit.csv, "Data, fit and residual per measurement (CSV)")->needs(data);
+      ->needs(data)
+      ->check(ochre::non_empty_path());
+  powder->add_option("--plot", fit.plot, "Plot of data and fit in the plane of incidence (PNG)")
+      ->needs(data)
+      ->check(ochre::non_empty_path());
+  powder->add_option("--csv", fit.csv, "Data, fit and residual per measurement (CSV)")
+      ->needs(data)
+      ->check(ochre::non_empty_path());
   powder->add_flag("-q,--quiet", fit.quiet, "No progress lines on stderr while fitting")->needs(data);
   powder
       ->add_option("--params", synth.params,
@@ -88,32 +95,23 @@ int main(int argc, char** argv) {
       ->add_option("--geometry", synth.geometry,
                    "Synthesize at the geometries and wavelengths of this measurements CSV")
       ->excludes(lambda)
-      ->needs(synthesize);
+      ->needs(synthesize)
+      ->check(ochre::non_empty_path());
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
+  if (fit.data.empty() == synth.output.empty())
+    throw ochre::InputError("powder: give --data MEASUREMENTS.csv (fit) or --synthesize OUT.csv");
+  if (!synth.output.empty()) {
+    synth.pigment = fit.pigment;
+    return ochre::run_powder_synthesize(synth);
   }
-  if (fit.data.empty() == synth.output.empty()) {
-    fmt::print(stderr, "ochre-fit powder: give --data MEASUREMENTS.csv (fit) or --synthesize OUT.csv\n");
-    return 2;
-  }
-  try {
-    if (!synth.output.empty()) {
-      synth.pigment = fit.pigment;
-      return ochre::run_powder_synthesize(synth);
-    }
-    return ochre::run_powder_fit(fit);
-  } catch (const ochre::InputError& e) {  // names the file and line, or the option, at fault
-    fmt::print(stderr, "ochre-fit: error: {}\n", e.what());
-    return 2;
-  } catch (const ochre::ImageError& e) {  // an output that could not be written (nothing was)
-    fmt::print(stderr, "ochre-fit: error: {}\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "ochre-fit: internal error: {}\n", e.what());
-    return 1;
-  }
+  return ochre::run_powder_fit(fit);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Bad input (InputError: the file and line, or the option, at fault; ImageError: an output that could not
+  // be written, nothing was) exits with 2, anything else with 1 (tools/cli/program.h).
+  return ochre::run_program("ochre-fit", [&] { return fit_command(argc, argv); });
 }

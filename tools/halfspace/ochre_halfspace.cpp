@@ -5,9 +5,12 @@
 // For each c and each mu_i, one batch of random walks scores every (mu_o, phi) of the grid at once.
 // Writes CSV rows c,mu_i,mu_o,phi_deg,f_single,f_single_se,f_multiple,f_multiple_se,f_total,f_total_se
 // after '#' comment lines holding the command that regenerates the file and each batch's albedo.
-// Exit codes: 0 = done, 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad input or usage, 1 = internal error. The
+// simulation (halfspace_mc.h) is standard library only; the command line uses ochre's shared one
+// (tools/cli).
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,12 +21,18 @@
 #include <vector>
 
 #include "ochre/version.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/halfspace/halfspace_mc.h"
 
 namespace {
 
 namespace hs = ochre::halfspace;
 namespace fs = std::filesystem;
+using ochre::InputError;
 
 struct HalfspaceCommand {
   std::vector<double> c{0.3, 0.8, 0.99, 1.0};
@@ -45,13 +54,13 @@ std::string format_number(double x) {
 
 void check_grid(const HalfspaceCommand& cmd) {
   for (double c : cmd.c)
-    if (!(c >= 0.0 && c <= 1.0))
-      throw std::invalid_argument("--c values must be in [0, 1], got " + format_number(c));
+    if (!(c >= 0.0 && c <= 1.0)) throw InputError("--c values must be in [0, 1], got " + format_number(c));
   for (double mu : cmd.mu)
-    if (!(mu > 0.0 && mu <= 1.0))
-      throw std::invalid_argument("--mu values must be in (0, 1], got " + format_number(mu));
-  if (cmd.paths == 0) throw std::invalid_argument("--paths must be positive");
-  if (cmd.max_collisions == 0) throw std::invalid_argument("--max-collisions must be positive");
+    if (!(mu > 0.0 && mu <= 1.0)) throw InputError("--mu values must be in (0, 1], got " + format_number(mu));
+  for (double phi : cmd.phi_deg)
+    if (!std::isfinite(phi)) throw InputError("--phi values must be finite, got " + format_number(phi));
+  if (cmd.paths == 0) throw InputError("--paths must be positive");
+  if (cmd.max_collisions == 0) throw InputError("--max-collisions must be positive");
 }
 
 // The grid's outgoing directions for wi at phi = 0, in (mu_o, phi) row order.
@@ -74,13 +83,16 @@ void write_row(std::ostream& out, double c, double mu_i, double mu_o, double phi
 
 int run(const HalfspaceCommand& cmd, const std::string& command_line) {
   check_grid(cmd);
+  // The output is checked before the simulation (a directory, a link, a device: refused with nothing done).
+  if (!cmd.output.empty()) ochre::check_output_writable(fs::path(cmd.output));
+  ochre::install_signal_cleanup();
   hs::SimulationOptions options;
   options.threads = cmd.threads;
   options.max_collisions = cmd.max_collisions;
   if (cmd.phase == "isotropic")
     options.phase = hs::PhaseFunction::kIsotropic;
   else if (cmd.phase != "ls")
-    throw std::invalid_argument("--phase must be 'ls' or 'isotropic', got '" + cmd.phase + "'");
+    throw InputError("--phase must be 'ls' or 'isotropic', got '" + cmd.phase + "'");
 
   const std::vector<hs::Direction> outgoing = outgoing_grid(cmd);
   std::ostringstream comments, rows;
@@ -115,20 +127,12 @@ int run(const HalfspaceCommand& cmd, const std::string& command_line) {
     std::cout << comments.str() << rows.str();
     return 0;
   }
-  // Written under a temporary name and renamed, so an interrupted run never leaves a partial table.
-  const fs::path final_path(cmd.output), temp_path = cmd.output + ".tmp";
-  {
-    std::ofstream file(temp_path);
-    file << comments.str() << rows.str();
-    if (!file.flush()) throw std::runtime_error("cannot write " + temp_path.string());
-  }
-  fs::rename(temp_path, final_path);
-  return 0;
+  // Written under a temporary name and renamed, as every output of ochre (docs/cli.md, "Output files").
+  ochre::write_text_file(fs::path(cmd.output), comments.str() + rows.str());
+  return ochre::kExitDone;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int halfspace_command(int argc, char** argv) {
   CLI::App app{"ochre-halfspace: Monte-Carlo reference BRDF of a half-space of Lambertian spheres"};
   app.set_version_flag("--version", "ochre-halfspace " OCHRE_VERSION);
   HalfspaceCommand cmd;
@@ -139,27 +143,28 @@ int main(int argc, char** argv) {
   app.add_option("--phi", cmd.phi_deg, "Relative azimuths in degrees (0 = backscatter side)")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_option("--paths", cmd.paths, "Random walks per (c, mu_i)")->capture_default_str();
-  app.add_option("--seed", cmd.seed, "Seed (batch k uses seed + k)")->capture_default_str();
+  app.add_option("--paths", cmd.paths, "Random walks per (c, mu_i)")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
+  app.add_option("--seed", cmd.seed, "Seed (batch k uses seed + k)")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
   app.add_option("--threads", cmd.threads, "Threads (0 = all cores); results do not depend on it")
       ->capture_default_str();
   app.add_option("--max-collisions", cmd.max_collisions, "Walks are cut after this many collisions")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
   app.add_option("--phase", cmd.phase, "Phase function: ls (Lambertian sphere) or isotropic")
       ->capture_default_str();
   app.add_option("--output", cmd.output, "CSV file (default: standard output)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   std::string command_line = "ochre-halfspace";
   for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
-  try {
-    return run(cmd, command_line);
-  } catch (const std::exception& e) {
-    std::cerr << "ochre-halfspace: error: " << e.what() << '\n';
-    return 2;
-  }
+  return run(cmd, command_line);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-halfspace", [&] { return halfspace_command(argc, argv); });
 }

@@ -8,8 +8,8 @@
 #include <numeric>
 
 #include "materials/core/pcg32.h"
+#include "materials/lobes/directional_albedo.h"
 #include "spectra/input_error.h"
-#include "tools/brdf/directional_albedo.h"
 #include "tools/brdf/material_probe.h"
 #include "tools/python/py_support.h"
 

@@ -154,6 +154,7 @@ class RenderResult {
     d["rays"] = stats_.rays;
     d["shadow_rays"] = stats_.shadow_rays;
     d["discarded"] = stats_.discarded;
+    d["clamped"] = stats_.clamped;
     d["nonfinite_values"] = stats_.nonfinite_values;
     d["threads"] = stats_.threads;
     d["samples_per_second"] = stats_.samples_per_second();
@@ -170,7 +171,7 @@ class RenderResult {
 
   void write_exr(const py::handle& path) { ochre::write_exr(to_path(path), exr()); }
 
-  const std::string& colorspace() const { return outputs_.colorspace; }
+  const char* colorspace() const { return kWorkingSpaces.name(outputs_.colorspace); }
   const RenderSettings& settings() const { return settings_; }
 
  private:
@@ -190,64 +191,53 @@ class RenderResult {
 
 class PyScene {
  public:
-  explicit PyScene(std::unique_ptr<Scene> scene) : scene_(std::move(scene)) {}
+  explicit PyScene(LoadedScene loaded) : loaded_(std::move(loaded)) {}
 
-  Scene& scene() { return *scene_; }
-  const Scene& scene() const { return *scene_; }
+  const Scene& scene() const { return *loaded_.scene; }
+  const RenderJob& job() const { return loaded_.job; }
 
   // Renders with the GIL released on a worker thread; this thread wakes every 0.1 s to report progress and
   // to let Python see Ctrl-C (KeyboardInterrupt), which stops the render at a pixel boundary.
   std::unique_ptr<RenderResult> render(const RenderOptions& o, const py::object& progress) {
-    // One render of a scene at a time (a render changes its settings for a while); wait for it without the
-    // GIL, so that the render under way can report its progress.
-    std::unique_lock busy(rendering_, std::defer_lock);
-    {
-      py::gil_scoped_release release;
-      busy.lock();
-    }
-    Scene& s = *scene_;
-    const RenderSettings saved_settings = s.settings;
-    const OutputSettings saved_outputs = s.outputs;
-    struct Restore {
-      Scene& s;
-      const RenderSettings& settings;
-      const OutputSettings& outputs;
-      ~Restore() {
-        s.settings = settings;
-        s.outputs = outputs;
-      }
-    } restore{s, saved_settings, saved_outputs};
-
+    // The render's own job, a copy of the scene's with the call's options: the scene is not changed, so
+    // renders of one scene may run side by side (a progress callback may start another).
+    const Scene& scene = *loaded_.scene;
+    RenderJob job = loaded_.job;
+    RenderSettings& s = job.settings;
     if (o.spp) {
       if (*o.spp < 1 || *o.spp > (1u << 24))
         throw InputError(fmt::format("spp: must be in [1, {}]", 1 << 24));
-      s.settings.spp = *o.spp;
+      s.spp = *o.spp;
     }
-    if (o.seed) s.settings.seed = *o.seed;
+    if (o.seed) s.seed = *o.seed;
     if (o.threads) {
       if (*o.threads < 0 || *o.threads > 4096) throw InputError("threads: must be in [0, 4096]");
-      s.settings.threads = *o.threads;
+      s.threads = *o.threads;
     }
-    s.settings.sample_begin = o.sample_begin;
-    if (o.colorspace != "rec709" && o.colorspace != "acescg")
-      throw InputError(fmt::format("colorspace: unknown '{}' (known: rec709, acescg)", o.colorspace));
+    s.sample_begin = o.sample_begin;
+    const std::optional<ColorSpace> colorspace = kWorkingSpaces.parse(o.colorspace);
+    if (!colorspace)
+      throw InputError(
+          fmt::format("colorspace: unknown '{}' (known: {})", o.colorspace, kWorkingSpaces.list()));
     if (o.spectral_bins < 0 || o.spectral_bins > 471) throw InputError("spectral_bins: must be in [0, 471]");
     if (!(o.spectral_range.first >= 360.0f && o.spectral_range.second <= 830.0f &&
           o.spectral_range.first < o.spectral_range.second))
       throw InputError("spectral_range: must be (min, max) with 360 <= min < max <= 830");
-    s.outputs.stokes = o.stokes;
-    if (o.stokes && s.settings.polarization != "auto" && s.settings.polarization != "stokes")
-      throw InputError(
-          fmt::format("stokes: needs polarization mode stokes or auto, not '{}'", s.settings.polarization));
+    job.outputs.stokes = o.stokes;
+    const PolarizationSetting mode = s.polarization;
+    if (o.stokes && mode != PolarizationSetting::kAuto && mode != PolarizationSetting::kStokes)
+      throw InputError(fmt::format("stokes: needs polarization mode stokes or auto, not '{}'",
+                                   kPolarizationSettings.name(mode)));
     FilmLayers layers;
     layers.aovs = o.aovs;
     layers.stokes = o.stokes;
     layers.spectral_bins = o.spectral_bins;
     layers.spectral_min = o.spectral_range.first;
     layers.spectral_max = o.spectral_range.second;
-    auto film = std::make_unique<Film>(s.settings.width, s.settings.height, layers);
+    layers.light_groups = scene.light_groups;  // docs/lights.md, "Light groups"
+    auto film = std::make_unique<Film>(s.width, s.height, layers);
 
-    const uint64_t total = uint64_t(s.settings.width) * s.settings.height * s.settings.spp;
+    const uint64_t total = uint64_t(s.width) * s.height * s.spp;
     std::atomic<uint64_t> done{0};
     std::atomic<bool> cancel{false};
     RenderStats stats;
@@ -260,7 +250,7 @@ class PyScene {
       std::thread worker([&] {
         try {
           stats = ochre::render(
-              s, *film, [&](uint64_t n) { done += n; }, &cancel);
+              scene, job, *film, [&](uint64_t n) { done += n; }, &cancel);
         } catch (...) {
           failure = std::current_exception();
         }
@@ -287,14 +277,13 @@ class PyScene {
     }
     if (failure) std::rethrow_exception(failure);
     if (!progress.is_none()) progress(total, total);
-    OutputSettings outputs = s.outputs;
-    outputs.colorspace = o.colorspace;
-    return std::make_unique<RenderResult>(std::move(film), s.settings, stats, outputs, s.file.string());
+    OutputSettings outputs = job.outputs;
+    outputs.colorspace = *colorspace;
+    return std::make_unique<RenderResult>(std::move(film), s, stats, outputs, scene.file.string());
   }
 
  private:
-  std::unique_ptr<Scene> scene_;
-  std::mutex rendering_;
+  LoadedScene loaded_;
 };
 
 // {"spp": 64, ...}: the values of Mitsuba $parameters, written as str() writes them.
@@ -304,6 +293,16 @@ std::vector<std::pair<std::string, std::string>> mitsuba_parameters(const py::ob
     for (const auto& [key, value] : parameters.cast<py::dict>())
       p.emplace_back(key.cast<std::string>(), py::str(value).cast<std::string>());
   return p;
+}
+
+// A choice argument (polarization, sampler): its enum value; a ValueError naming the argument and the known
+// values for any other string.
+template <class Enum, size_t N>
+Enum parsed_choice(const py::object& value, const char* argument, const NamedChoices<Enum, N>& choices) {
+  const std::string text = value.cast<std::string>();
+  const std::optional<Enum> parsed = choices.parse(text);
+  if (!parsed) throw InputError(fmt::format("{}: unknown '{}' (known: {})", argument, text, choices.list()));
+  return *parsed;
 }
 
 SceneOverrides overrides_of(const py::object& spp, const py::object& resolution, const py::object& seed,
@@ -329,8 +328,9 @@ SceneOverrides overrides_of(const py::object& spp, const py::object& resolution,
     o.seed = static_cast<uint64_t>(v);
   }
   if (!threads.is_none()) o.threads = threads.cast<int>();
-  if (!polarization.is_none()) o.polarization = polarization.cast<std::string>();
-  if (!sampler.is_none()) o.sampler = sampler.cast<std::string>();
+  if (!polarization.is_none())
+    o.polarization = parsed_choice(polarization, "polarization", kPolarizationSettings);
+  if (!sampler.is_none()) o.sampler = parsed_choice(sampler, "sampler", kSamplerKinds);
   o.parameters = mitsuba_parameters(parameters);
   return o;
 }
@@ -353,19 +353,20 @@ std::unique_ptr<PyScene> load(const py::object& source, const py::object& spp, c
   return std::make_unique<PyScene>(load_scene(path, o));
 }
 
-py::dict settings_of(const Scene& s) {
+py::dict settings_of(const PyScene& p) {
+  const RenderSettings& s = p.job().settings;
   py::dict d;
-  d["width"] = s.settings.width;
-  d["height"] = s.settings.height;
-  d["spp"] = s.settings.spp;
-  d["max_depth"] = s.settings.max_depth;
-  d["rr_depth"] = s.settings.rr_depth;
-  d["branches"] = s.settings.branches;
-  d["seed"] = s.settings.seed;
-  d["threads"] = s.settings.threads;
-  d["sampler"] = s.settings.sampler;
-  d["polarization"] = s.settings.polarization;
-  d["filter"] = s.pixel_filter.description();
+  d["width"] = s.width;
+  d["height"] = s.height;
+  d["spp"] = s.spp;
+  d["max_depth"] = s.max_depth;
+  d["rr_depth"] = s.rr_depth;
+  d["branches"] = s.branches;
+  d["seed"] = s.seed;
+  d["threads"] = s.threads;
+  d["sampler"] = kSamplerKinds.name(s.sampler);
+  d["polarization"] = kPolarizationSettings.name(s.polarization);
+  d["filter"] = p.scene().pixel_filter.description();
   return d;
 }
 
@@ -413,20 +414,22 @@ void register_scene(py::module_& m) {
            "Writes the EXR `ochre render -o` would write for the same settings");
 
   py::class_<PyScene>(m, "Scene", "A loaded scene (docs/python.md).")
-      .def_property_readonly("settings", [](const PyScene& p) { return settings_of(p.scene()); })
+      .def_property_readonly("settings", [](const PyScene& p) { return settings_of(p); })
       .def_property_readonly("file", [](const PyScene& p) { return p.scene().file.string(); })
-      .def_property_readonly("width", [](const PyScene& p) { return p.scene().settings.width; })
-      .def_property_readonly("height", [](const PyScene& p) { return p.scene().settings.height; })
+      .def_property_readonly("width", [](const PyScene& p) { return p.job().settings.width; })
+      .def_property_readonly("height", [](const PyScene& p) { return p.job().settings.height; })
       .def_property_readonly("mesh_count", [](const PyScene& p) { return p.scene().meshes.size(); })
       .def_property_readonly("light_count", [](const PyScene& p) { return p.scene().lights.size(); })
       .def_property_readonly("material_names", [](const PyScene& p) { return p.scene().material_names; })
+      .def_property_readonly(
+          "warnings", [](const PyScene& p) { return p.scene().warnings; },
+          "What the scene loads but a user should know (docs/scene-format.md)")
       .def(
           "polarization_mode",
-          [](PyScene& p, bool stokes) {
-            const bool saved = p.scene().outputs.stokes;
-            p.scene().outputs.stokes = stokes;
-            const PolarizationChoice c = polarization_for(p.scene());
-            p.scene().outputs.stokes = saved;
+          [](const PyScene& p, bool stokes) {
+            RenderJob job = p.job();
+            job.outputs.stokes = stokes;
+            const PolarizationChoice c = polarization_for(p.scene(), job);
             return py::make_tuple(polarization_mode_name(c.mode), c.reason);
           },
           py::arg("stokes") = false, "(mode, reason) the render would use")

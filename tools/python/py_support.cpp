@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "materials/graph/graph_error.h"
+#include "renderer/image/exr_writer.h"
 #include "renderer/util/image_error.h"
 #include "spectra/input_error.h"
 
@@ -102,20 +103,30 @@ py::array_t<float> float_array(const std::vector<float>& values, const std::vect
   return a;
 }
 
+py::tuple exr_to_python(const ExrImage& image) {
+  py::dict channels;
+  for (const auto& [name, values] : image.channels)
+    channels[py::str(name)] = float_array(values, {image.height, image.width});
+  py::dict attributes;
+  for (const auto& [key, value] : image.string_attributes) attributes[py::str(key)] = value;
+  return py::make_tuple(channels, attributes);
+}
+
 void register_errors(py::module_& m) {
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   input_error.doc() =
       "Bad input: a malformed scene or material, a missing file, an out-of-range or non-finite value. The "
       "message names the file and the field (the command line exits with code 2 on the same errors).";
+  // Messages are cut like the command line's (message_excerpt): a file's 50 MB value is not quoted whole.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const GraphError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const ImageError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     }
   });
 }

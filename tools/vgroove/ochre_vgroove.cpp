@@ -9,15 +9,16 @@
 //   ochre-vgroove profile         --material NAME|--ior n,k --alpha A -o OUT.csv [--png OUT.png]
 //   ochre-vgroove compare         --material NAMES|--ior n,k [--alpha LIST] [--theta LIST] [--phi LIST]
 //                                 [--spp N] [--resolution PX] [--seed S] [--threads N] [--scene-dir DIR]
-// Exit codes: 0 = done, 1 = a plot script failed, 2 = bad input or usage.
+// Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad input or usage, 1 = a plot script failed, or an
+// internal error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
-#include <exception>
 
 #include "ochre/version.h"
 #include "renderer/util/signal_cleanup.h"
+#include "tools/cli/command_line.h"
+#include "tools/cli/program.h"
 #include "tools/vgroove/vgroove_commands.h"
 
 namespace {
@@ -33,9 +34,7 @@ constexpr const char* kMaterialHelp =
     "Au | Ag | Cu | Al | Si (built-in data), glass (n 1.5), paper-silver "
     "(0.1249 + 3.3391i), mirror";
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int vgroove_command(int argc, char** argv) {
   CLI::App app{"ochre-vgroove: the V-groove model of Saint-Pierre et al. 2019 (JOSA A 36(11) C51)"};
   app.set_version_flag("--version", "ochre-vgroove " OCHRE_VERSION);
   app.require_subcommand(1);
@@ -82,8 +81,11 @@ int main(int argc, char** argv) {
   maps_cmd->add_option("--alpha", maps.alphas, "Dihedral angles (degrees), comma list")->required();
   maps_cmd->add_option("--model", maps.models, "Comma list of models")->capture_default_str();
   maps_cmd->add_option("--size", maps.size, "Map width and height (pixels)")->capture_default_str();
-  maps_cmd->add_option("-o,--output", maps.output, "Colour map PNG")->required();
-  maps_cmd->add_option("--counts", maps.counts, "Also write the reflection-count map (PNG)");
+  maps_cmd->add_option("-o,--output", maps.output, "Colour map PNG")
+      ->required()
+      ->check(ochre::non_empty_path());
+  maps_cmd->add_option("--counts", maps.counts, "Also write the reflection-count map (PNG)")
+      ->check(ochre::non_empty_path());
   maps_cmd->add_flag("--grid", maps.grid, "Labelled figure (implied by several materials, alphas or models)");
 
   ochre::ProfileArgs profile;
@@ -92,8 +94,11 @@ int main(int argc, char** argv) {
   profile_cmd->add_option("--alpha", profile.alpha, "Dihedral angle (degrees)")->required();
   profile_cmd->add_option("--model", profile.models, "Comma list of models")->capture_default_str();
   profile_cmd->add_option("--step", profile.step, "Theta step (degrees)")->capture_default_str();
-  profile_cmd->add_option("-o,--output", profile.output, "CSV: phi_deg,theta_deg,model,L")->required();
-  profile_cmd->add_option("--png", profile.png, "Also plot it (PNG, needs matplotlib)");
+  profile_cmd->add_option("-o,--output", profile.output, "CSV: phi_deg,theta_deg,model,L")
+      ->required()
+      ->check(ochre::non_empty_path());
+  profile_cmd->add_option("--png", profile.png, "Also plot it (PNG, needs matplotlib)")
+      ->check(ochre::non_empty_path());
 
   ochre::CompareArgs compare;
   CLI::App* compare_cmd = app.add_subcommand(
@@ -111,28 +116,27 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("--spp", compare.spp, "Samples per pixel")->capture_default_str();
   compare_cmd->add_option("--resolution", compare.resolution, "Film width and height (pixels)")
       ->capture_default_str();
-  compare_cmd->add_option("--seed", compare.seed, "Sampler seed")->capture_default_str();
+  compare_cmd->add_option("--seed", compare.seed, "Sampler seed")
+      ->capture_default_str()
+      ->check(ochre::unsigned_64_check());
   compare_cmd->add_option("--threads", compare.threads, "Render threads (0 = all cores)")
       ->capture_default_str();
-  compare_cmd->add_option("--scene-dir", compare.scene_dir, "Keep the scenes rendered in this directory");
+  compare_cmd->add_option("--scene-dir", compare.scene_dir, "Keep the scenes rendered in this directory")
+      ->check(ochre::non_empty_path());
   compare_cmd->add_flag("--csv", compare.csv, "CSV instead of aligned text (notes and summary on stderr)");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
+  if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   ochre::install_signal_cleanup();  // SIGINT / SIGTERM leave no temporary output or scratch directory
-  try {
-    if (*bi_cmd) return ochre::run_bihemispherical(bi);
-    if (*dir_cmd) return ochre::run_directional(dir);
-    if (*tables_cmd) return ochre::run_tables(tables);
-    if (*maps_cmd) return ochre::run_maps(maps);
-    if (*profile_cmd) return ochre::run_profile(profile);
-    return ochre::run_compare(compare);
-  } catch (const std::exception& e) {  // InputError, ImageError: the message names the option or file
-    fmt::print(stderr, "ochre-vgroove: error: {}\n", e.what());
-    return 2;
-  }
+  if (*bi_cmd) return ochre::run_bihemispherical(bi);
+  if (*dir_cmd) return ochre::run_directional(dir);
+  if (*tables_cmd) return ochre::run_tables(tables);
+  if (*maps_cmd) return ochre::run_maps(maps);
+  if (*profile_cmd) return ochre::run_profile(profile);
+  return ochre::run_compare(compare);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return ochre::run_program("ochre-vgroove", [&] { return vgroove_command(argc, argv); });
 }

@@ -10,7 +10,7 @@
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/vgroove_reference.h"
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
+#include "tools/cli/csv_columns.h"
 #include "tools/vgroove/vgroove_inputs.h"
 #include "tools/vgroove/vgroove_material.h"
 #include "tools/vgroove/vgroove_spectral.h"

@@ -1,10 +1,10 @@
 #pragma once
 // The subcommands of ochre-vgroove (docs/tools.md): the V-groove model of Saint-Pierre, Chavel,
 // Simonot and Hebert 2019 (materials/lobes/vgroove/) as numbers, tables and figures. Each returns the
-// exit code (0 done, 1 a plot script failed); bad input throws InputError (the caller prints it and
-// exits with 2). Output files follow docs/cli.md, "Output files": checked before any work
-// (renderer/output/output_files.h), written under temporary names and renamed together when all are complete
-// (renderer/util/output_transaction.h).
+// exit code (docs/cli.md, "Exit codes"; tools/cli/program.h: 0 done, 1 a plot script failed); bad input
+// throws InputError (run_program prints it and exits with 2). Output files follow docs/cli.md, "Output
+// files": checked before any work (renderer/output/output_files.h), written under temporary names and renamed
+// together when all are complete (renderer/util/output_transaction.h).
 
 #include <string>
 
@@ -41,7 +41,7 @@ struct MapsArgs {
   std::string alphas, models = "rigorous";
   int size = 256;
   std::string output, counts;
-  bool grid = false;  // a labelled figure (tools/plot_vgroove.py); implied by several panels
+  bool grid = false;  // a labelled figure (tools/scripts/plot_vgroove.py); implied by several panels
 };
 
 struct ProfileArgs {

@@ -21,7 +21,7 @@
 #include "renderer/loader/scene_loader.h"
 #include "renderer/util/atomic_file.h"
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
+#include "tools/cli/csv_columns.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_compare_scene.h"
 #include "tools/vgroove/vgroove_inputs.h"
@@ -55,9 +55,9 @@ struct Rendered {
 };
 
 Rendered render_scene_file(const fs::path& file) {
-  const std::unique_ptr<Scene> scene = load_scene(file);
-  Film film(scene->settings.width, scene->settings.height);
-  const RenderStats stats = render(*scene, film);
+  const LoadedScene loaded = load_scene(file);
+  Film film(loaded.job.settings.width, loaded.job.settings.height);
+  const RenderStats stats = render(*loaded.scene, loaded.job, film);
   Rendered r{{}, stats.seconds};
   for (int j = 0; j < film.height(); ++j)
     for (int i = 0; i < film.width(); ++i) r.y.push_back(film.mean(i, j).y);

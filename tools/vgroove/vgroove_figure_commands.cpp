@@ -1,6 +1,6 @@
 // ochre-vgroove maps and profile (docs/tools.md): the figures of Saint-Pierre et al. 2019 (Figs 6, 8
 // and 9). Single maps are written here (OIIO); labelled grids and plots are drawn by
-// tools/plot_vgroove.py from the maps and CSV written here.
+// tools/scripts/plot_vgroove.py from the maps and CSV written here.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -11,8 +11,9 @@
 #include "renderer/util/output_transaction.h"
 #include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
-#include "tools/csv_columns.h"
-#include "tools/python_script.h"
+#include "tools/cli/csv_columns.h"
+#include "tools/cli/program.h"
+#include "tools/cli/python_script.h"
 #include "tools/vgroove/vgroove_commands.h"
 #include "tools/vgroove/vgroove_inputs.h"
 #include "tools/vgroove/vgroove_maps.h"
@@ -75,9 +76,10 @@ int write_grid(const MapsArgs& args, const std::vector<Panel>& panels) {
   if (!args.counts.empty()) script_args.push_back(outputs.add(args.counts).temp_path().string());
   const fs::path script = tool_script("plot_vgroove.py");
   if (!run_python(script, script_args)) {
-    std::cerr << fmt::format("ochre-vgroove: error: {} not written ({} failed; is matplotlib installed?)\n",
-                             args.output, script.string());
-    return 1;
+    std::cerr << fmt::format(
+        "ochre-vgroove: internal error: {} not written ({} failed; is matplotlib installed?)\n", args.output,
+        script.string());
+    return kExitInternalError;
   }
   outputs.commit();
   return 0;
@@ -135,9 +137,9 @@ int run_profile(const ProfileArgs& args) {
     if (!run_python(script, {"profile", csv_output.temp_path().string(),
                              outputs.add(args.png).temp_path().string(), title})) {
       std::cerr << fmt::format(
-          "ochre-vgroove: error: {} and {} not written ({} failed; is matplotlib installed?)\n", args.output,
-          args.png, script.string());
-      return 1;
+          "ochre-vgroove: internal error: {} and {} not written ({} failed; is matplotlib installed?)\n",
+          args.output, args.png, script.string());
+      return kExitInternalError;
     }
   }
   outputs.commit();

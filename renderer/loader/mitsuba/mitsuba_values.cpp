@@ -12,27 +12,6 @@
 
 namespace ochre {
 
-Vec3d operator+(Vec3d a, Vec3d b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-Vec3d operator-(Vec3d a, Vec3d b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-Vec3d operator*(double s, Vec3d a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-double dot(Vec3d a, Vec3d b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-Vec3d cross(Vec3d a, Vec3d b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double length(Vec3d a) {
-  return std::sqrt(dot(a, a));
-}
-Vec3d normalize(Vec3d a) {
-  return (1.0 / length(a)) * a;
-}
 nlohmann::json to_json(Vec3d v) {
   return nlohmann::json::array({v.x, v.y, v.z});
 }

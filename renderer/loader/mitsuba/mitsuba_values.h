@@ -8,20 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "materials/core/vec3d.h"
 #include "renderer/loader/mitsuba/mitsuba_xml.h"
 
 namespace ochre {
 
-struct Vec3d {
-  double x = 0, y = 0, z = 0;
-};
-Vec3d operator+(Vec3d a, Vec3d b);
-Vec3d operator-(Vec3d a, Vec3d b);
-Vec3d operator*(double s, Vec3d a);
-double dot(Vec3d a, Vec3d b);
-Vec3d cross(Vec3d a, Vec3d b);
-double length(Vec3d a);
-Vec3d normalize(Vec3d a);
+// [x, y, z] in ochre's scene JSON.
 nlohmann::json to_json(Vec3d v);
 
 // Row-major affine 4x4 matrix; points are column vectors (p' = M p), as Mitsuba's Transform4f.
