@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "material_test_support.h"
 #include "materials/graph/graph_error.h"
+#include "materials/material_test_support.h"
 #include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_registry.h"
 
