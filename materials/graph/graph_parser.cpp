@@ -7,8 +7,9 @@
 #include <stdexcept>
 
 #include "materials/core/single_precision.h"
-#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/json_literal.h"
+#include "materials/nodes/node_choices.h"
+#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/spectrum_source.h"
 
 namespace ochre {
@@ -215,7 +216,7 @@ class Parser {
         if (!j.is_string()) g_.fail(node, p.name, "expected a string, got " + json_excerpt(j));
         const std::string s = j.get<std::string>();
         if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), s) == p.choices.end())
-          g_.fail(node, p.name, "'" + s + "' is not one of: " + join(p.choices));
+          g_.fail(node, p.name, unknown_choice(p, s));
         return j;
       }
       case ParamKind::kInt: {
@@ -258,7 +259,7 @@ class Parser {
     GraphNode& node = g_.nodes[index];
     if (node.def->prepare) {
       try {
-        node.prepared = node.def->prepare(PrepareArgs{node.params, resolver_});
+        node.prepared = node.def->prepare(PrepareArgs{node.params, resolver_, *node.def});
       } catch (const NodeError& e) {
         g_.fail(index, e.parameter(), e.what());
       } catch (const std::exception& e) {

@@ -45,17 +45,6 @@ SocketType combine_operands(SocketType a, SocketType b, const char* verb) {
   return promote_values(a, b, "b");
 }
 
-SocketDef math_operand(const char* name, float default_value, const char* doc) {
-  SocketDef s;
-  s.name = name;
-  s.type = SocketType::kFloat;
-  s.polymorphic = true;
-  s.default_value = NodeValue::of_float(default_value);
-  s.role = SpectralRole::kInherit;
-  s.doc = doc;
-  return s;
-}
-
 bool constant_equals(const NodeValue& v, float x) {
   switch (v.type) {
     case SocketType::kFloat:

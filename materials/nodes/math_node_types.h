@@ -17,9 +17,6 @@ SocketType promote_values(SocketType a, SocketType b, const char* b_name);
 // Throws NodeError naming the operand that breaks the rule.
 SocketType combine_operands(SocketType a, SocketType b, const char* verb);
 
-// Factory for the operand sockets a and b of a math node.
-SocketDef math_operand(const char* name, float default_value, const char* doc);
-
 // True when a constant is exactly `x` everywhere (float, colour, vector, or a flat spectrum).
 bool constant_equals(const NodeValue& v, float x);
 

@@ -1,6 +1,7 @@
 // add(a, b): a + b for values (float, colour, spectrum, vector); for closures, the union of the
 // two lobe sets with their weights kept (OSL closure addition).
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/math_kernels.h"
 #include "materials/nodes/math_node_types.h"
 
@@ -50,7 +51,7 @@ NodeDefinition add_node() {
   d.doc =
       "Sum a + b. Values: element-wise, the result has the promoted type of a and b. Closures: both "
       "lobe sets, weights kept (OSL closure add).";
-  d.inputs = {math_operand("a", 0.0f, "first operand"), math_operand("b", 0.0f, "second operand")};
+  d.inputs = {operand_input("a", 0.0f, "first operand"), operand_input("b", 0.0f, "second operand")};
   d.outputs = {{"result", SocketType::kFloat, true, "a + b"}};
   d.resolve_types = resolve_add;
   d.select = select_add;

@@ -1,6 +1,7 @@
 // constant(value): a float, colour or vector written once and used by several nodes. Always
 // folded away: its consumers read the value directly.
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/json_literal.h"
 #include "materials/nodes/node_definition.h"
 
@@ -20,12 +21,8 @@ NodeDefinition constant_node() {
   NodeDefinition d;
   d.name = "constant";
   d.doc = "A constant float, colour or vector.";
-  ParamDef value;
-  value.name = "value";
-  value.kind = ParamKind::kValue;
-  value.required = true;
-  value.doc = "a number (float), [r, g, b] (colour, linear Rec.709) or {\"vector\": [x, y, z]}";
-  d.params = {value};
+  d.params = {required_value_param(
+      "value", "a number (float), [r, g, b] (colour, linear Rec.709) or {\"vector\": [x, y, z]}")};
   d.outputs = {{"value", SocketType::kFloat, true, "the value, of the type written"}};
   d.prepare = prepare_constant;
   return d;

@@ -25,6 +25,7 @@
 namespace ochre {
 
 class ResourceResolver;
+struct NodeDefinition;
 
 // What a node reads from the ShadingContext besides its inputs (facts, and no constant folding).
 enum ContextUsage : uint32_t {
@@ -64,6 +65,10 @@ struct ParamDef {
   std::vector<std::string> choices;  // allowed strings (kString), empty = any
   std::optional<double> min, max;    // kInt / kFloat range
   std::string doc;
+  // A research variant, not a setting of the product: kept to compare with a paper as printed (or with the
+  // literature it cites) and to measure the product's choices; its default is the product's. Its doc starts
+  // with "research:", and docs/nodes.md lists it in the node's "Research parameters" table.
+  bool research = false;
 };
 
 // A fault a node hook reports; the compiler adds file, material and node names.
@@ -80,6 +85,7 @@ class NodeError : public std::runtime_error {
 struct PrepareArgs {
   const nlohmann::json& params;  // every declared parameter present in the scene, others absent
   ResourceResolver& resolver;
+  const NodeDefinition& node;  // the node's own definition (its declared choices: node_choices.h)
 };
 
 struct Prepared {

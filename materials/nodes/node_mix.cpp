@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/math_node_types.h"
 #include "spectra/non_finite.h"
 
@@ -84,16 +85,10 @@ NodeDefinition mix_node() {
   d.doc =
       "Linear blend (1 - factor) a + factor b. Values: the promoted type of a and b. Closures: both weighted "
       "sums, scaled by (1 - factor) and factor (OSL closure mix).";
-  SocketDef factor;
-  factor.name = "factor";
-  factor.type = SocketType::kFloat;
-  factor.default_value = NodeValue::of_float(0.5f);
-  factor.min = 0.0f;
-  factor.max = 1.0f;
-  factor.clamped = true;
-  factor.doc = "blend factor; a constant must lie in [0, 1], a linked value is clamped to it";
-  d.inputs = {math_operand("a", 0.0f, "value or closure at factor 0"),
-              math_operand("b", 0.0f, "value or closure at factor 1"), factor};
+  d.inputs = {operand_input("a", 0.0f, "value or closure at factor 0"),
+              operand_input("b", 0.0f, "value or closure at factor 1"),
+              float_input("factor", SocketType::kFloat, 0.5f, clamped_range(0.0f, 1.0f),
+                          "blend factor; a constant must lie in [0, 1], a linked value is clamped to it")};
   d.outputs = {{"result", SocketType::kFloat, true, "the blend"}};
   d.resolve_types = resolve_mix;
   d.select = select_mix;

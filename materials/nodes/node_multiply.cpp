@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/math_kernels.h"
 #include "materials/nodes/math_node_types.h"
 #include "spectra/product_spectrum.h"
@@ -100,7 +101,7 @@ NodeDefinition multiply_node() {
       "Product a * b. Values: element-wise, the result has the promoted type of a and b. A closure times a "
       "float, colour or spectrum scales its lobe weights and emission (OSL closure scale); closure x closure "
       "is an error.";
-  d.inputs = {math_operand("a", 1.0f, "first factor"), math_operand("b", 1.0f, "second factor")};
+  d.inputs = {operand_input("a", 1.0f, "first factor"), operand_input("b", 1.0f, "second factor")};
   d.outputs = {{"result", SocketType::kFloat, true, "a * b"}};
   d.colour_operands_are_tints = true;
   d.resolve_types = resolve_multiply;

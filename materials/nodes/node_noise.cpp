@@ -2,9 +2,11 @@
 // position (by default the shading point's world position), seamless on any mesh and needing no uvs:
 // fractal gradient noise or the crack lines of a cellular pattern (materials/numerics/noise.h).
 
+#include <array>
 #include <cmath>
 
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/numerics/noise.h"
 
@@ -12,8 +14,12 @@ namespace ochre {
 
 namespace {
 
+enum class NoisePattern { kFbm, kCracks };
+constexpr std::array kNoisePatterns{Choice{"fbm", NoisePattern::kFbm},
+                                    Choice{"cracks", NoisePattern::kCracks}};
+
 struct NoiseData {
-  bool cracks = false;
+  NoisePattern pattern = NoisePattern::kFbm;
   float frequency = 1.0f;
   FractalNoise fractal;
   uint32_t seed = 0;
@@ -22,7 +28,7 @@ struct NoiseData {
 
 Prepared prepare_noise(const PrepareArgs& args) {
   auto data = std::make_shared<NoiseData>();
-  data->cracks = args.params.at("pattern").get<std::string>() == "cracks";
+  data->pattern = choice_value(args, "pattern", kNoisePatterns);
   data->frequency = args.params.at("frequency").get<float>();
   data->fractal.octaves = args.params.at("octaves").get<int>();
   data->fractal.lacunarity = args.params.at("lacunarity").get<float>();
@@ -37,7 +43,7 @@ Prepared prepare_noise(const PrepareArgs& args) {
 void eval_noise(const NodeArgs& a) {
   const NoiseData& n = a.data<NoiseData>();
   const Vec3 p = a.in_vector(0) * n.frequency;
-  if (n.cracks) {
+  if (n.pattern == NoisePattern::kCracks) {
     const CellDistances c = cell_noise(p, n.seed);
     const float t = std::fmin(1.0f, (c.f2 - c.f1) / n.width);  // NaN-free: f2 >= f1, width > 0
     a.set_float(0, 1.0f - t * t * (3.0f - 2.0f * t));
@@ -56,7 +62,7 @@ NodeDefinition noise_node() {
                             "where the noise is evaluated; default: the shading point's world position")};
   d.params = {
       choice_param(
-          "pattern", "fbm", {"fbm", "cracks"},
+          "pattern", "fbm", choice_names(kNoisePatterns),
           "fbm: 0.5 + 0.5 x fractal gradient noise; cracks: 1 on the borders of random cells, 0 inside"),
       number_param("frequency", 1.0, 1e-6, 1e6, "features per unit length (the position is scaled by it)"),
       integer_param("octaves", 4, 1, 16, "fbm: layers summed"),

@@ -24,6 +24,13 @@ void check_definition(const NodeDefinition& d) {
   for (const SocketDef& s : d.inputs)
     if (d.param(s.name)) fail("'" + s.name + "' is both an input and a parameter");
   if (d.has_closure_output() && d.outputs.size() != 1) fail("a closure node has exactly one output");
+  for (const ParamDef& p : d.params) {
+    if (p.choices.empty() || p.default_value.is_null()) continue;
+    const auto& c = p.choices;
+    if (!p.default_value.is_string() ||
+        std::find(c.begin(), c.end(), p.default_value.get<std::string>()) == c.end())
+      fail("the default of '" + p.name + "' is not one of its choices");
+  }
 }
 
 }  // namespace

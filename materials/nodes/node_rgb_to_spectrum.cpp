@@ -1,8 +1,11 @@
 // rgb_to_spectrum(color; mode): an explicit colour -> spectrum conversion, choosing the upsampling
 // (reflectance or illuminant) instead of taking it from the socket the result feeds.
 
+#include <array>
 #include <memory>
 
+#include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/rgb_upsampling.h"
 
@@ -14,11 +17,12 @@ struct Mode {
   SpectralRole role;
 };
 
+constexpr std::array kUpsamplingModes{Choice{"reflectance", SpectralRole::kReflectance},
+                                      Choice{"illuminant", SpectralRole::kIlluminant}};
+
 Prepared prepare_rgb_to_spectrum(const PrepareArgs& args) {
-  const bool illuminant = args.params.at("mode").get<std::string>() == "illuminant";
   Prepared p;
-  p.payload =
-      std::make_shared<Mode>(Mode{illuminant ? SpectralRole::kIlluminant : SpectralRole::kReflectance});
+  p.payload = std::make_shared<Mode>(Mode{choice_value(args, "mode", kUpsamplingModes)});
   return p;
 }
 
@@ -45,19 +49,12 @@ NodeDefinition rgb_to_spectrum_node() {
   NodeDefinition d;
   d.name = "rgb_to_spectrum";
   d.doc = "Converts a colour to a spectrum with the chosen upsampling.";
-  SocketDef color;
-  color.name = "color";
-  color.type = SocketType::kColour;
-  color.default_value = NodeValue::of_colour({1.0f, 1.0f, 1.0f});
-  color.min = 0.0f;
-  color.doc = "linear Rec.709 colour (negative constants are errors)";
-  d.inputs = {color};
-  ParamDef mode;
-  mode.name = "mode";
-  mode.default_value = "reflectance";
-  mode.choices = {"reflectance", "illuminant"};
-  mode.doc = "reflectance: smooth bounded spectrum (unbounded above 1); illuminant: times D65 at luminance 1";
-  d.params = {mode};
+  d.inputs = {colour_input("color", SocketType::kColour, {1.0f, 1.0f, 1.0f}, SpectralRole::kNone,
+                           constant_range(0.0f, std::nullopt),
+                           "linear Rec.709 colour (negative constants are errors)")};
+  d.params = {choice_param(
+      "mode", "reflectance", choice_names(kUpsamplingModes),
+      "reflectance: smooth bounded spectrum (unbounded above 1); illuminant: times D65 at luminance 1")};
   d.outputs = {{"spectrum", SocketType::kSpectrum, false, "the upsampled spectrum"}};
   d.prepare = prepare_rgb_to_spectrum;
   d.eval = eval_rgb_to_spectrum;

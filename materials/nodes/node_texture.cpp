@@ -4,9 +4,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "materials/nodes/resource_resolver.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
+#include "materials/nodes/resource_resolver.h"
 
 namespace ochre {
 
@@ -19,10 +20,12 @@ struct TextureData {
 };
 
 Prepared prepare_texture(const PrepareArgs& args) {
+  // The word goes to the renderer as it is (ResourceResolver::texture), which decodes it with the file.
+  const std::string colorspace = *choice_name(args, "colorspace");
   const std::filesystem::path path = args.resolver.resolve(args.params.at("file").get<std::string>());
   auto data = std::make_shared<TextureData>();
   try {
-    data->id = args.resolver.texture(path, args.params.at("colorspace").get<std::string>(), data->channels);
+    data->id = args.resolver.texture(path, colorspace, data->channels);
   } catch (const std::exception& e) {
     throw NodeError("file", "cannot open texture '" + path.string() + "': " + e.what());
   }
@@ -69,25 +72,13 @@ NodeDefinition texture_node() {
   d.inputs = {
       context_input("uv", SocketType::kVector, "uv",
                     "lookup coordinates (u, v, ignored); default: the mesh uv"),
-      float_input("footprint", SocketType::kFloat, -1.0f, std::nullopt, std::nullopt,
+      float_input("footprint", SocketType::kFloat, -1.0f, kAnyValue,
                   "filter width in the units of `uv` (e.g. a projection's footprint); < 0: the mesh uv's")};
-  ParamDef file;
-  file.name = "file";
-  file.required = true;
-  file.doc = "image file, relative to the scene file";
-  ParamDef colorspace;
-  colorspace.name = "colorspace";
-  colorspace.default_value = "auto";
-  colorspace.choices = {"auto", "srgb", "linear"};
-  colorspace.doc =
-      "encoding of the stored values: auto (from the file: 8-bit images sRGB, float linear), srgb, linear";
-  ParamDef channel;
-  channel.name = "channel";
-  channel.kind = ParamKind::kInt;
-  channel.default_value = 0;
-  channel.min = 0;
-  channel.doc = "channel read by the value output";
-  d.params = {file, colorspace, channel};
+  d.params = {required_string_param("file", "image file, relative to the scene file"),
+              choice_param("colorspace", "auto", {"auto", "srgb", "linear"},
+                           "encoding of the stored values: auto (from the file: 8-bit images sRGB, float "
+                           "linear), srgb, linear"),
+              integer_param("channel", 0, 0, std::nullopt, "channel read by the value output")};
   d.outputs = {{"color", SocketType::kColour, false, "linear Rec.709 colour"},
                {"value", SocketType::kFloat, false, "the channel `channel`, linear"}};
   d.context_usage = kUsesUV | kUsesTextures;

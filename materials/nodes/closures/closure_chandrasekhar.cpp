@@ -2,6 +2,7 @@
 // (materials/lobes/chandrasekhar_halfspace.h), the exact H function tabulated once.
 
 #include "materials/lobes/chandrasekhar_halfspace.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -27,16 +28,8 @@ NodeDefinition chandrasekhar_node() {
   d.doc =
       "Chandrasekhar's half space of isotropic scatterers: f = c H(mu_i) H(mu_o) / (4 pi (mu_i + mu_o)) "
       "with the exact H function. A depolarizer.";
-  SocketDef albedo;
-  albedo.name = "albedo";
-  albedo.type = SocketType::kSpectrum;
-  albedo.default_value = NodeValue::of_float(0.8f);
-  albedo.role = SpectralRole::kReflectance;
-  albedo.min = 0.0f;
-  albedo.max = 1.0f;
-  albedo.clamped = true;
-  albedo.doc = "single-scattering albedo c of the particles (not the surface's albedo)";
-  d.inputs = {albedo};
+  d.inputs = {reflectance_input("albedo", 0.8f, clamped_range(0.0f, 1.0f),
+                                "single-scattering albedo c of the particles (not the surface's albedo)")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the Chandrasekhar lobe"}};
   d.eval = emit_chandrasekhar;
   d.closure_traits = chandrasekhar_traits;

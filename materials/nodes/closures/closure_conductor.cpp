@@ -10,6 +10,7 @@
 
 #include "materials/lobes/conductor.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "spectra/named_spectra.h"
 #include "spectra/non_finite.h"
@@ -24,10 +25,10 @@ struct NamedMetal {
 
 Prepared prepare_conductor(const PrepareArgs& args) {
   Prepared p;
-  if (!args.params.contains("metal")) return p;
-  const std::string metal = args.params.at("metal").get<std::string>();
+  const std::optional<std::string> metal = choice_name(args, "metal");
+  if (!metal) return p;
   p.payload = std::make_shared<NamedMetal>(
-      NamedMetal{named_spectrum("metal-" + metal + "-eta"), named_spectrum("metal-" + metal + "-k")});
+      NamedMetal{named_spectrum("metal-" + *metal + "-eta"), named_spectrum("metal-" + *metal + "-k")});
   return p;
 }
 
@@ -59,24 +60,13 @@ NodeDefinition conductor_node() {
   NodeDefinition d;
   d.name = "conductor";
   d.doc = "Fresnel reflection off a metal (complex index n - i k), smooth or GGX-rough; polarizing.";
-  SocketDef roughness;
-  roughness.name = "roughness";
-  roughness.type = SocketType::kFloat;
-  roughness.default_value = NodeValue::of_float(0.0f);
-  roughness.min = 0.0f;
-  roughness.max = 1.0f;
-  roughness.clamped = true;
-  roughness.doc =
-      "GGX alpha (not squared); 0 = perfect mirror (delta lobe); a linked value is clamped to [0, 1]";
   d.inputs = {named_spectrum_input("eta", "metal-Cu-eta", "real part n of the index (default: copper)"),
               named_spectrum_input("k", "metal-Cu-k", "extinction coefficient k >= 0 (default: copper)"),
-              roughness};
-  ParamDef metal;
-  metal.name = "metal";
-  metal.kind = ParamKind::kString;
-  metal.choices = {"Au", "Ag", "Cu", "Al", "Si"};
-  metal.doc = "built-in optical constants; when given, eta and k are ignored";
-  d.params = {metal};
+              float_input("roughness", SocketType::kFloat, 0.0f, clamped_range(0.0f, 1.0f),
+                          "GGX alpha (not squared); 0 = perfect mirror (delta lobe); a linked value is "
+                          "clamped to [0, 1]")};
+  d.params = {optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si"},
+                                    "built-in optical constants; when given, eta and k are ignored")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the conductor lobe"}};
   d.prepare = prepare_conductor;
   d.eval = emit_conductor;

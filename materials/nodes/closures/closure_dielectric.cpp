@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "materials/lobes/dielectric.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 #include "spectra/non_finite.h"
 
@@ -54,32 +55,13 @@ NodeDefinition dielectric_node() {
   NodeDefinition d;
   d.name = "dielectric";
   d.doc = "A dielectric interface (glass, water, black glass) with a constant index; polarizing.";
-  SocketDef ior;
-  ior.name = "ior";
-  ior.type = SocketType::kFloat;
-  ior.default_value = NodeValue::of_float(1.5f);
-  ior.min = kMinIor;
-  ior.clamped = true;
-  ior.doc =
-      "relative index n_inside / n_outside (the normal points outside); linked values below 0.01 are raised "
-      "to it";
-  SocketDef roughness;
-  roughness.name = "roughness";
-  roughness.type = SocketType::kFloat;
-  roughness.default_value = NodeValue::of_float(0.0f);
-  roughness.min = 0.0f;
-  roughness.max = 1.0f;
-  roughness.clamped = true;
-  roughness.doc = "GGX alpha (not squared); 0 = smooth (delta); > 0: rough reflection only";
-  d.inputs = {ior, roughness};
-  ParamDef opaque;
-  opaque.name = "opaque";
-  opaque.kind = ParamKind::kInt;
-  opaque.default_value = 0;
-  opaque.min = 0;
-  opaque.max = 1;
-  opaque.doc = "1: the refracted part is absorbed (black glass), 0: it is traced (smooth only)";
-  d.params = {opaque};
+  d.inputs = {float_input("ior", SocketType::kFloat, 1.5f, clamped_range(kMinIor, std::nullopt),
+                          "relative index n_inside / n_outside (the normal points outside); linked values "
+                          "below 0.01 are raised to it"),
+              float_input("roughness", SocketType::kFloat, 0.0f, clamped_range(0.0f, 1.0f),
+                          "GGX alpha (not squared); 0 = smooth (delta); > 0: rough reflection only")};
+  d.params = {integer_param(
+      "opaque", 0, 0, 1, "1: the refracted part is absorbed (black glass), 0: it is traced (smooth only)")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the dielectric lobe"}};
   d.prepare = prepare_dielectric;
   d.eval = emit_dielectric;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -28,24 +29,14 @@ NodeDefinition emission_node() {
   NodeDefinition d;
   d.name = "emission";
   d.doc = "Emitted radiance strength x color, added to the closure's emission (no lobes).";
-  SocketDef color;
-  color.name = "color";
-  color.type = SocketType::kSpectrum;
-  color.default_value = NodeValue::of_colour({1.0f, 1.0f, 1.0f});
-  color.role = SpectralRole::kIlluminant;
-  color.min = 0.0f;
-  color.clamped = true;
-  color.doc =
-      "emitted spectral radiance per unit strength; a colour is upsampled as an illuminant; negative "
-      "constants are errors, a negative linked value (e.g. a texel) counts as 0";
-  SocketDef strength;
-  strength.name = "strength";
-  strength.type = SocketType::kFloat;
-  strength.default_value = NodeValue::of_float(1.0f);
-  strength.min = 0.0f;
-  strength.clamped = true;
-  strength.doc = "radiance scale; a negative linked value counts as 0";
-  d.inputs = {color, strength};
+  d.inputs = {
+      colour_input("color", SocketType::kSpectrum, {1.0f, 1.0f, 1.0f}, SpectralRole::kIlluminant,
+                   clamped_range(0.0f, std::nullopt),
+                   "emitted spectral radiance per unit strength; a colour is upsampled as an "
+                   "illuminant; negative constants are errors, a negative linked value (e.g. a texel) "
+                   "counts as 0"),
+      float_input("strength", SocketType::kFloat, 1.0f, clamped_range(0.0f, std::nullopt),
+                  "radiance scale; a negative linked value counts as 0")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the emission"}};
   d.eval = emit_emission;
   d.closure_traits = emission_traits;

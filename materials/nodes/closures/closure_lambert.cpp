@@ -2,6 +2,7 @@
 // lobe's closure weight (as OSL's diffuse(N) scaled by a colour).
 
 #include "materials/lobes/lambert.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -25,14 +26,9 @@ NodeDefinition lambert_node() {
   NodeDefinition d;
   d.name = "lambert";
   d.doc = "Ideal diffuse reflection f = color / pi (a depolarizer).";
-  SocketDef color;
-  color.name = "color";
-  color.type = SocketType::kSpectrum;
-  color.default_value = NodeValue::of_float(0.8f);
-  color.role = SpectralRole::kReflectance;
-  color.min = 0.0f;
-  color.doc = "albedo; values above 1 are allowed (not energy conserving), negative constants are errors";
-  d.inputs = {color};
+  d.inputs = {reflectance_input(
+      "color", 0.8f, constant_range(0.0f, std::nullopt),
+      "albedo; values above 1 are allowed (not energy conserving), negative constants are errors")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the diffuse lobe"}};
   d.eval = emit_lambert;
   d.closure_traits = lambert_traits;

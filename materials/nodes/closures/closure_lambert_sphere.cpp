@@ -3,41 +3,37 @@
 // Its colour is set either by the bond (spherical) albedo kd, mapped to the particle albedo c, or by c
 // directly.
 
+#include <array>
 #include <memory>
-#include <string>
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
 
 namespace {
 
+// kd -> c: the inverse of the model's own bond albedo, or d'Eon's Eq 46.
+enum class KdMapping { kExact, kEq46 };
+
+constexpr std::array kSphereVariants{Choice{"full", LambertSphereVariant::kFull},
+                                     Choice{"fast", LambertSphereVariant::kFast},
+                                     Choice{"exact", LambertSphereVariant::kExact}};
+constexpr std::array kKdMappings{Choice{"exact", KdMapping::kExact}, Choice{"eq46", KdMapping::kEq46}};
+
 struct LambertSphereSettings {
   LambertSphereVariant variant = LambertSphereVariant::kFull;
-  bool eq46_mapping = false;  // kd -> c by d'Eon Eq 46 instead of the model's own bond albedo
+  KdMapping mapping = KdMapping::kExact;
 };
-
-std::string param_or(const PrepareArgs& args, const char* name, const char* fallback) {
-  return args.params.contains(name) ? args.params.at(name).get<std::string>() : fallback;
-}
 
 Prepared prepare_lambert_sphere(const PrepareArgs& args) {
   auto s = std::make_shared<LambertSphereSettings>();
-  const std::string variant = param_or(args, "variant", "full");
-  if (variant == "fast")
-    s->variant = LambertSphereVariant::kFast;
-  else if (variant == "exact")
-    s->variant = LambertSphereVariant::kExact;
-  else if (variant != "full")
-    throw NodeError("variant", "unknown variant '" + variant + "' (full, fast or exact)");
-  const std::string mapping = param_or(args, "mapping", "exact");
-  if (mapping != "exact" && mapping != "eq46")
-    throw NodeError("mapping", "unknown mapping '" + mapping + "' (exact or eq46)");
-  s->eq46_mapping = mapping == "eq46";
+  s->variant = choice_value(args, "variant", kSphereVariants);
+  s->mapping = choice_value(args, "mapping", kKdMappings);
   Prepared p;
   p.payload = s;
   return p;
@@ -51,7 +47,7 @@ void emit_lambert_sphere(const NodeArgs& a) {
   bool uses_kd = false;  // particle_albedo < 0 (or NaN) in some lane
   for (int k = 0; k < kSpectrumSamples; ++k) uses_kd |= !(particle_albedo[k] >= 0.0f);
   SampledSpectrum c;
-  if (uses_kd && s.eq46_mapping) {
+  if (uses_kd && s.mapping == KdMapping::kEq46) {
     for (int k = 0; k < kSpectrumSamples; ++k) c[k] = lambert_sphere_c_from_kd_eq46(kd[k]);
   } else if (uses_kd) {
     const BondAlbedoInverse& inverse = s.variant == LambertSphereVariant::kExact
@@ -80,28 +76,20 @@ NodeDefinition lambert_sphere_node() {
   d.doc =
       "Lambertian-sphere BRDF (d'Eon): a half space of sparse white-Lambertian spheres; strong "
       "backscattering, saturated colours. A depolarizer.";
-  SocketDef kd;
-  kd.name = "kd";
-  kd.type = SocketType::kSpectrum;
-  kd.default_value = NodeValue::of_float(0.8f);
-  kd.role = SpectralRole::kReflectance;
-  kd.min = 0.0f;
-  kd.max = 1.0f;
-  kd.clamped = true;
-  kd.doc = "bond (spherical) albedo, the diffuse colour; mapped to the particle albedo by `mapping`";
-  SocketDef c;
-  c.name = "particle_albedo";
-  c.type = SocketType::kSpectrum;
-  c.default_value = NodeValue::of_float(-1.0f);
-  c.role = SpectralRole::kReflectance;
-  c.doc = "albedo c of the spheres; when >= 0 it is used instead of kd (default -1: use kd)";
-  d.inputs = {kd, c};
-  d.params = {choice_param("variant", "full", {"full", "fast", "exact"},
+  d.inputs = {
+      reflectance_input("kd", 0.8f, clamped_range(0.0f, 1.0f),
+                        "bond (spherical) albedo, the diffuse colour; mapped to the particle albedo by "
+                        "`mapping`"),
+      reflectance_input("particle_albedo", -1.0f, kAnyValue,
+                        "albedo c of the spheres; when >= 0 it is used instead of kd (default -1: use "
+                        "kd)")};
+  d.params = {choice_param("variant", "full", choice_names(kSphereVariants),
                            "full: exact single + corrected fitted multiple scattering; fast: Eq 48 (not "
                            "energy conserving); exact: tabulated converged half-space solution"),
-              choice_param("mapping", "exact", {"exact", "eq46"},
-                           "kd -> c: exact inverts the model's own bond albedo (< 0.5 % error); eq46 is the "
-                           "paper's fit (renders up to 3.8 % too bright)")};
+              research_param(choice_param(
+                  "mapping", "exact", choice_names(kKdMappings),
+                  "kd -> c: exact inverts the model's own bond albedo (< 0.5 % error); eq46 is the "
+                  "paper's fit (renders up to 3.8 % too bright)"))};
   d.outputs = {{"closure", SocketType::kClosure, false, "the Lambert-sphere lobe"}};
   d.prepare = prepare_lambert_sphere;
   d.eval = emit_lambert_sphere;

@@ -3,19 +3,26 @@
 // microgeometry, a periodic cross-section traced facet by facet (materials/lobes/vgroove/
 // microgroove_lobe.h). The groove axis: groove_closure.h.
 
+#include <array>
 #include <memory>
-#include <string>
 
 #include "materials/core/pi.h"
 #include "materials/lobes/vgroove/microgroove_lobe.h"
 #include "materials/nodes/closures/groove_closure.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 
 namespace ochre {
 
 namespace {
 
 constexpr GrooveInputs kMicrogrooveInputs{0, 1, 2, 3};
+
+enum class ProfileShape { kV, kAsymmetricV, kFlatBottom, kRounded, kVMix };
+constexpr std::array kProfileShapes{
+    Choice{"v", ProfileShape::kV}, Choice{"asymmetric_v", ProfileShape::kAsymmetricV},
+    Choice{"flat_bottom", ProfileShape::kFlatBottom}, Choice{"rounded", ProfileShape::kRounded},
+    Choice{"v_mix", ProfileShape::kVMix}};
 
 struct MicrogrooveSettings {
   GrooveFacetSettings facet;
@@ -30,23 +37,31 @@ double degrees_param(const PrepareArgs& args, const char* name, double fallback)
 Prepared prepare_microgroove(const PrepareArgs& args) {
   auto s = std::make_shared<MicrogrooveSettings>();
   s->facet = parse_groove_settings(args);
-  const std::string profile = string_param(args, "profile", "v");
   const double alpha = degrees_param(args, "alpha", 90.0);
-  if (profile == "v") {
-    s->profile = std::make_shared<GrooveProfile>(GrooveProfile::v(alpha));
-  } else if (profile == "asymmetric_v") {
-    const double slope1 = degrees_param(args, "slope1", 45.0), slope2 = degrees_param(args, "slope2", 45.0);
-    s->profile = std::make_shared<GrooveProfile>(GrooveProfile::asymmetric_v(slope1, slope2));
-  } else if (profile == "flat_bottom") {
-    const double bottom = args.params.contains("bottom") ? args.params.at("bottom").get<double>() : 0.3;
-    s->profile = std::make_shared<GrooveProfile>(GrooveProfile::flat_bottom(alpha, bottom));
-  } else if (profile == "rounded") {
-    const int segments = args.params.contains("segments") ? args.params.at("segments").get<int>() : 32;
-    s->profile = std::make_shared<GrooveProfile>(GrooveProfile::rounded(alpha, segments));
-  } else {  // v_mix
-    s->alpha_min = degrees_param(args, "alpha_min", 45.0);
-    s->alpha_max = degrees_param(args, "alpha_max", 90.0);
-    if (s->alpha_max < s->alpha_min) throw NodeError("alpha_max", "must not be less than alpha_min");
+  switch (choice_value(args, "profile", kProfileShapes)) {
+    case ProfileShape::kV:
+      s->profile = std::make_shared<GrooveProfile>(GrooveProfile::v(alpha));
+      break;
+    case ProfileShape::kAsymmetricV: {
+      const double slope1 = degrees_param(args, "slope1", 45.0), slope2 = degrees_param(args, "slope2", 45.0);
+      s->profile = std::make_shared<GrooveProfile>(GrooveProfile::asymmetric_v(slope1, slope2));
+      break;
+    }
+    case ProfileShape::kFlatBottom: {
+      const double bottom = args.params.contains("bottom") ? args.params.at("bottom").get<double>() : 0.3;
+      s->profile = std::make_shared<GrooveProfile>(GrooveProfile::flat_bottom(alpha, bottom));
+      break;
+    }
+    case ProfileShape::kRounded: {
+      const int segments = args.params.contains("segments") ? args.params.at("segments").get<int>() : 32;
+      s->profile = std::make_shared<GrooveProfile>(GrooveProfile::rounded(alpha, segments));
+      break;
+    }
+    case ProfileShape::kVMix:
+      s->alpha_min = degrees_param(args, "alpha_min", 45.0);
+      s->alpha_max = degrees_param(args, "alpha_max", 90.0);
+      if (s->alpha_max < s->alpha_min) throw NodeError("alpha_max", "must not be less than alpha_min");
+      break;
   }
   Prepared p;
   p.payload = s;
@@ -78,23 +93,15 @@ NodeDefinition microgroove_node() {
       "bottom, rounded, or a mix of V angles) traced facet by facet with a Fresnel reflection at each; a "
       "delta BSDF, polarizing in the rigorous and sp models.";
   d.inputs = groove_facet_and_direction_inputs();
-  ParamDef segments;
-  segments.name = "segments";
-  segments.kind = ParamKind::kInt;
-  segments.default_value = 32;
-  segments.min = 2;
-  segments.max = GrooveProfile::kMaxSegments;
-  segments.doc = "rounded: chords approximating the arc";
   d.params = {
-      choice_param("profile", "v", {"v", "asymmetric_v", "flat_bottom", "rounded", "v_mix"},
-                   "cross-section of one groove"),
+      choice_param("profile", "v", choice_names(kProfileShapes), "cross-section of one groove"),
       number_param("alpha", 90.0, 1.0, 179.9,
                    "v, flat_bottom, rounded: dihedral angle in degrees (rounded: between the rim "
                    "tangents)"),
       number_param("slope1", 45.0, 1.0, 89.0, "asymmetric_v: slope of the left facet in degrees"),
       number_param("slope2", 45.0, 1.0, 89.0, "asymmetric_v: slope of the right facet in degrees"),
       number_param("bottom", 0.3, 0.0, 0.99, "flat_bottom: the fraction of the V's depth cut flat"),
-      segments,
+      integer_param("segments", 32, 2, GrooveProfile::kMaxSegments, "rounded: chords approximating the arc"),
       number_param("alpha_min", 45.0, 1.0, 179.9, "v_mix: smallest dihedral angle in degrees"),
       number_param("alpha_max", 90.0, 1.0, 179.9,
                    "v_mix: largest dihedral angle in degrees (grooves of equal width, angles uniform)")};

@@ -2,6 +2,7 @@
 // (materials/lobes/oren_nayar.h), albedo `color` as the closure weight.
 
 #include "materials/lobes/oren_nayar.h"
+#include "materials/nodes/definition_builders.h"
 #include "materials/nodes/node_definition.h"
 
 namespace ochre {
@@ -25,20 +26,10 @@ NodeDefinition oren_nayar_node() {
   NodeDefinition d;
   d.name = "oren_nayar";
   d.doc = "Oren-Nayar rough diffuse reflection (the qualitative 1994 model), albedo `color`. A depolarizer.";
-  SocketDef color;
-  color.name = "color";
-  color.type = SocketType::kSpectrum;
-  color.default_value = NodeValue::of_float(0.8f);
-  color.role = SpectralRole::kReflectance;
-  color.min = 0.0f;
-  color.doc = "albedo (the closure weight, as for lambert)";
-  SocketDef sigma;
-  sigma.name = "sigma";
-  sigma.type = SocketType::kFloat;
-  sigma.default_value = NodeValue::of_float(0.3f);
-  sigma.min = 0.0f;
-  sigma.doc = "roughness: standard deviation of the facet slope angle, radians (0 = Lambert)";
-  d.inputs = {color, sigma};
+  d.inputs = {reflectance_input("color", 0.8f, constant_range(0.0f, std::nullopt),
+                                "albedo (the closure weight, as for lambert)"),
+              float_input("sigma", SocketType::kFloat, 0.3f, constant_range(0.0f, std::nullopt),
+                          "roughness: standard deviation of the facet slope angle, radians (0 = Lambert)")};
   d.outputs = {{"closure", SocketType::kClosure, false, "the Oren-Nayar lobe"}};
   d.eval = emit_oren_nayar;
   d.closure_traits = oren_nayar_traits;

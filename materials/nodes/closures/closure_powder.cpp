@@ -4,14 +4,15 @@
 // single-scattering albedo from Mie theory for the pigment's optical constants and the grain radius
 // (materials/lobes/powder/pigment_table.h), unless `rho` overrides it.
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
 
 #include "materials/lobes/powder/pigment_table.h"
 #include "materials/lobes/powder/powder_lobe.h"
-#include "materials/nodes/closures/groove_closure.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "materials/nodes/node_definition.h"
 #include "materials/nodes/spectrum_source.h"
 
@@ -27,15 +28,30 @@ struct PowderSettings {
   PowderSamplingStrategy sampling = PowderSamplingStrategy::kMixture;
 };
 
-PowderTau parse_tau(const std::string& s) {
-  if (s == "zhu_pine_weitz") return PowderTau::kZhuPineWeitz;
-  if (s == "two_thirds") return PowderTau::kTwoThirds;
-  return PowderTau::kPaper;
-}
+constexpr std::array kPowderLadders{Choice{"symmetric", PowderLadder::kSymmetric},
+                                    Choice{"printed", PowderLadder::kPrinted}};
+constexpr std::array kLadderDecays{Choice{"c0", PowderLadderDecay::kC0},
+                                   Choice{"alpha", PowderLadderDecay::kWithAlpha}};
+constexpr std::array kPowderNormalisations{Choice{"brdf", PowderNormalisation::kPerSteradian},
+                                           Choice{"printed", PowderNormalisation::kPrinted}};
+constexpr std::array kPowderSurfaces{Choice{"harvey_shack", PowderSurface::kHarveyShack},
+                                     Choice{"gaussian", PowderSurface::kGaussian}};
+constexpr std::array kPowderTaus{Choice{"paper", PowderTau::kPaper},
+                                 Choice{"zhu_pine_weitz", PowderTau::kZhuPineWeitz},
+                                 Choice{"two_thirds", PowderTau::kTwoThirds}};
+constexpr std::array kPowderSamplings{Choice{"mixture", PowderSamplingStrategy::kMixture},
+                                      Choice{"cosine", PowderSamplingStrategy::kCosine}};
 
 Prepared prepare_powder(const PrepareArgs& args) {
   auto s = std::make_shared<PowderSettings>();
-  const PowderTau tau = parse_tau(string_param(args, "tau", "paper"));
+  PowderParams<float>& o = s->options;
+  o.ladder = choice_value(args, "ladder", kPowderLadders);
+  o.ladder_decay = choice_value(args, "ladder_decay", kLadderDecays);
+  o.normalisation = choice_value(args, "normalisation", kPowderNormalisations);
+  o.surface = choice_value(args, "surface", kPowderSurfaces);
+  s->sampling = choice_value(args, "sampling", kPowderSamplings);
+  const PowderTau tau = choice_value(args, "tau", kPowderTaus);
+  const std::string pigment = *choice_name(args, "pigment");
   if (args.params.contains("pigment_file")) {
     const std::string file = args.params.at("pigment_file").get<std::string>();
     try {
@@ -46,19 +62,8 @@ Prepared prepare_powder(const PrepareArgs& args) {
       throw NodeError("pigment_file", e.what());
     }
   } else {
-    s->pigment = PigmentTable::named(string_param(args, "pigment", "hematite"), tau);
+    s->pigment = PigmentTable::named(pigment, tau);
   }
-  PowderParams<float>& o = s->options;
-  o.ladder = string_param(args, "ladder", "symmetric") == "printed" ? PowderLadder::kPrinted
-                                                                    : PowderLadder::kSymmetric;
-  o.ladder_decay = string_param(args, "ladder_decay", "c0") == "alpha" ? PowderLadderDecay::kWithAlpha
-                                                                       : PowderLadderDecay::kC0;
-  o.normalisation = string_param(args, "normalisation", "brdf") == "printed"
-                        ? PowderNormalisation::kPrinted
-                        : PowderNormalisation::kPerSteradian;
-  o.surface = string_param(args, "surface", "harvey_shack") == "gaussian" ? PowderSurface::kGaussian
-                                                                          : PowderSurface::kHarveyShack;
-  if (string_param(args, "sampling", "mixture") == "cosine") s->sampling = PowderSamplingStrategy::kCosine;
   if (args.params.contains("surface_sigma"))
     o.gaussian_sigma = static_cast<float>(args.params.at("surface_sigma").get<double>() * kPi / 180.0);
   Prepared p;
@@ -109,47 +114,52 @@ NodeDefinition powder_node() {
       "Dry powder (pigments such as hematite): enhanced-backscattering BRDF of Gerardin, Martinetto and "
       "Holzschuch 2023; the grains' albedo from Mie theory and the pigment's optical constants. A "
       "depolarizer.";
-  SocketDef rho = float_input(
-      "rho", SocketType::kSpectrum, -1.0f, std::nullopt, 1.0f,
-      "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo (default -1)");
-  rho.clamped = false;
-  d.inputs = {float_input("volume_amplitude", SocketType::kSpectrum, 1.0f, 0.0f, std::nullopt,
-                          "A_v: scale of the volume terms (1 = physically normalised)"),
-              float_input("g", SocketType::kSpectrum, 0.0f, -0.99f, 0.99f,
-                          "Henyey-Greenstein anisotropy of the grains"),
-              float_input("kappa", SocketType::kSpectrum, 0.25f, 1e-6f, 1e6f, "extinction coefficient, 1/um"),
-              float_input("radius", SocketType::kFloat, 0.05f, 1e-6f, 1e6f,
-                          "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
-              float_input("surface_amplitude", SocketType::kSpectrum, 3e-6f, 0.0f, std::nullopt,
-                          "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
-              float_input("correlation_length", SocketType::kFloat, 2.0f, 1e-6f, 1e6f,
-                          "surface correlation length l_c, um"),
-              float_input("thickness", SocketType::kFloat, 1e30f, 1e-9f, 1e30f,
-                          "layer thickness d in um (single scattering only); default 1e30: infinite"),
-              rho};
+  d.inputs = {
+      float_input("volume_amplitude", SocketType::kSpectrum, 1.0f, clamped_range(0.0f, std::nullopt),
+                  "A_v: scale of the volume terms (1 = physically normalised)"),
+      float_input("g", SocketType::kSpectrum, 0.0f, clamped_range(-0.99f, 0.99f),
+                  "Henyey-Greenstein anisotropy of the grains"),
+      float_input("kappa", SocketType::kSpectrum, 0.25f, clamped_range(1e-6f, 1e6f),
+                  "extinction coefficient, 1/um"),
+      float_input("radius", SocketType::kFloat, 0.05f, clamped_range(1e-6f, 1e6f),
+                  "effective grain radius in um (Mie albedo; tabulated for 0.002-20 um)"),
+      float_input("surface_amplitude", SocketType::kSpectrum, 3e-6f, clamped_range(0.0f, std::nullopt),
+                  "A_s' = A_s sigma_s^2 of the Harvey-Shack surface term, um^2"),
+      float_input("correlation_length", SocketType::kFloat, 2.0f, clamped_range(1e-6f, 1e6f),
+                  "surface correlation length l_c, um"),
+      float_input("thickness", SocketType::kFloat, 1e30f, clamped_range(1e-9f, 1e30f),
+                  "layer thickness d in um (single scattering only); default 1e30: infinite"),
+      float_input("rho", SocketType::kSpectrum, -1.0f, constant_range(std::nullopt, 1.0f),
+                  "single-scattering albedo of the grains; when >= 0 it replaces the Mie albedo "
+                  "(default -1)")};
   d.params = {
       choice_param("pigment", "hematite", PigmentTable::names(),
                    "built-in optical constants: hematite (Querry 1985; randomly oriented grains, "
                    "(2 o + e) / 3), or one of its rays"),
       string_param("pigment_file",
                    "a CSV of the grains' optical constants with columns n and k (index n + i k); replaces "
-                   "`pigment`"),
-      choice_param("ladder", "symmetric", {"symmetric", "printed"},
-                   "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
-                   "or as printed (for comparison)"),
-      choice_param("ladder_decay", "c0", {"c0", "alpha"},
-                   "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
-      choice_param("normalisation", "brdf", {"brdf", "printed"},
-                   "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
-      choice_param("surface", "harvey_shack", {"harvey_shack", "gaussian"},
-                   "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
-      number_param("surface_sigma", 5.7, 0.01, 90.0, "Gaussian surface term only: its width in degrees"),
-      choice_param("tau", "paper", {"paper", "zhu_pine_weitz", "two_thirds"},
-                   "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
-                   "1991), or 2/3"),
-      choice_param("sampling", "mixture", {"mixture", "cosine"},
-                   "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
-                   "comparison)")};
+                   "`pigment`")};
+  // The paper as printed, the literature's alternatives and the sampler's baseline, beside the corrected
+  // model as their defaults (docs/materials/powder.md, 'Product and research settings').
+  for (ParamDef& p : research_params(
+           {choice_param("ladder", "symmetric", choice_names(kPowderLadders),
+                         "multiple-scattering ladder: Eq 21 with its sign fixed (symmetric, reciprocal), "
+                         "or as printed (for comparison)"),
+            choice_param("ladder_decay", "c0", choice_names(kLadderDecays),
+                         "the ladder's decay: c0 (no interference term), or the printed c with alpha"),
+            choice_param("normalisation", "brdf", choice_names(kPowderNormalisations),
+                         "L2 and C divided by 4 pi (a true BRDF), or as printed (4 pi larger)"),
+            choice_param("surface", "harvey_shack", choice_names(kPowderSurfaces),
+                         "surface term: Harvey-Shack (Eqs 27-28) or the Gaussian of Eq 26"),
+            number_param("surface_sigma", 5.7, 0.01, 90.0,
+                         "Gaussian surface term only: its width in degrees"),
+            choice_param("tau", "paper", choice_names(kPowderTaus),
+                         "extrapolation ratio tau_o: Eq 16 as printed, its inverse (Zhu, Pine and Weitz "
+                         "1991), or 2/3"),
+            choice_param("sampling", "mixture", choice_names(kPowderSamplings),
+                         "importance sampling: the cone / surface / cosine mixture, or cosine only (for "
+                         "comparison)")}))
+    d.params.push_back(std::move(p));
   d.outputs = {{"closure", SocketType::kClosure, false, "the powder lobe"}};
   d.prepare = prepare_powder;
   d.eval = emit_powder;

@@ -46,7 +46,7 @@ NodeDefinition vgroove_node() {
   d.doc =
       "Parallel V-grooves with specular facets (Saint-Pierre et al. 2019): a delta BSDF whose rays "
       "reflect 1, 2, ... times inside a groove, traced exactly; polarizing in the rigorous and sp models.";
-  d.inputs = {float_input("alpha", SocketType::kFloat, 90.0f, kMinAlphaDegrees, 180.0f,
+  d.inputs = {float_input("alpha", SocketType::kFloat, 90.0f, clamped_range(kMinAlphaDegrees, 180.0f),
                           "dihedral (opening) angle of the grooves in degrees; 180 = flat; a linked value "
                           "is clamped to [0.1, 180]")};
   for (SocketDef& s : groove_facet_and_direction_inputs()) d.inputs.push_back(std::move(s));

@@ -1,26 +1,24 @@
 #include "materials/nodes/closures/groove_closure.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "materials/core/frame.h"
 #include "materials/nodes/definition_builders.h"
+#include "materials/nodes/node_choices.h"
 #include "spectra/named_spectra.h"
 
 namespace ochre {
 
-std::string string_param(const PrepareArgs& args, const char* name, const char* fallback) {
-  return args.params.contains(name) ? args.params.at(name).get<std::string>() : fallback;
-}
-
 namespace {
 
-ChainModel parse_model(const std::string& model) {
-  if (model == "unpolarized") return ChainModel::kUnpolarized;
-  if (model == "sp") return ChainModel::kSeparateSP;
-  if (model == "paper_literal") return ChainModel::kPaperLiteral;
-  return ChainModel::kRigorous;
-}
+constexpr std::array kChainModels{
+    Choice{"rigorous", ChainModel::kRigorous}, Choice{"unpolarized", ChainModel::kUnpolarized},
+    Choice{"sp", ChainModel::kSeparateSP}, Choice{"paper_literal", ChainModel::kPaperLiteral}};
+constexpr std::array kDirectionSpaces{Choice{"uv", DirectionSpace::kUV},
+                                      Choice{"object", DirectionSpace::kObject},
+                                      Choice{"world", DirectionSpace::kWorld}};
 
 // The reference direction in world space.
 Vec3 reference_direction(const NodeArgs& a, DirectionSpace space, int direction_input) {
@@ -42,19 +40,16 @@ Vec3 tangent_of(const Vec3& n, const Vec3& t) {
 
 GrooveFacetSettings parse_groove_settings(const PrepareArgs& args) {
   GrooveFacetSettings s;
-  const std::string metal = string_param(args, "metal", "");
-  if (metal == "mirror") {
+  s.model = choice_value(args, "model", kChainModels);
+  s.space = choice_value(args, "direction_space", kDirectionSpaces);
+  if (const std::optional<std::string> metal = choice_name(args, "metal"); metal == "mirror") {
     s.mirror = true;
-  } else if (!metal.empty()) {
-    s.eta = named_spectrum("metal-" + metal + "-eta");
-    s.k = named_spectrum("metal-" + metal + "-k");
+  } else if (metal) {
+    s.eta = named_spectrum("metal-" + *metal + "-eta");
+    s.k = named_spectrum("metal-" + *metal + "-k");
   }
-  s.model = parse_model(string_param(args, "model", "rigorous"));
   if (args.params.contains("max_reflections"))
     s.reflection_limit = args.params.at("max_reflections").get<int>();
-  const std::string space = string_param(args, "direction_space", "uv");
-  s.space = space == "object" ? DirectionSpace::kObject
-                              : (space == "world" ? DirectionSpace::kWorld : DirectionSpace::kUV);
   return s;
 }
 
@@ -84,41 +79,32 @@ ClosureTraits groove_traits(const GrooveFacetSettings& s) {
 }
 
 std::vector<SocketDef> groove_facet_and_direction_inputs() {
-  SocketDef direction;
-  direction.name = "direction";
-  direction.type = SocketType::kVector;
-  direction.default_value = NodeValue::of_vector({1.0f, 0.0f, 0.0f});
-  direction.doc = "reference groove direction in object or world space (see direction_space); ignored for uv";
   return {named_spectrum_input("eta", "metal-Cu-eta", "real part n of the facets' index (default: copper)"),
           named_spectrum_input("k", "metal-Cu-k",
                                "extinction coefficient k >= 0 (0: a dielectric, e.g. black glass)"),
-          float_input("angle", SocketType::kFloat, 0.0f, std::nullopt, std::nullopt,
+          float_input("angle", SocketType::kFloat, 0.0f, kAnyValue,
                       "groove direction: degrees from the reference direction, counter-clockwise about "
                       "the normal (may be textured)"),
-          direction};
+          vector_input("direction", {1.0f, 0.0f, 0.0f},
+                       "reference groove direction in object or world space (see direction_space); ignored "
+                       "for uv")};
 }
 
 std::vector<ParamDef> groove_common_params() {
-  ParamDef metal = choice_param("metal", "", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
-                                "built-in optical constants of the facets (mirror: reflectance 1, no "
-                                "retardance); when given, eta and k are ignored");
-  metal.default_value = nullptr;  // absent: the eta and k inputs
-  ParamDef max_reflections;
-  max_reflections.name = "max_reflections";
-  max_reflections.kind = ParamKind::kInt;
-  max_reflections.default_value = 0;
-  max_reflections.min = 0;
-  max_reflections.max = 100000;
-  max_reflections.doc = "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit";
-  return {metal,
-          choice_param("model", "rigorous", {"rigorous", "unpolarized", "sp", "paper_literal"},
-                       "polarization treatment: rigorous Mueller chain; unpolarized (product of "
-                       "unpolarized reflectances); sp (s and p reflected separately, averaged); "
-                       "paper_literal (the printed Eq 33, for comparison only)"),
-          max_reflections,
-          choice_param("direction_space", "uv", {"uv", "object", "world"},
-                       "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
-                       "or world space")};
+  return {
+      optional_choice_param("metal", {"Au", "Ag", "Cu", "Al", "Si", "mirror"},
+                            "built-in optical constants of the facets (mirror: reflectance 1, no "
+                            "retardance); when given, eta and k are ignored"),
+      research_param(choice_param("model", "rigorous", choice_names(kChainModels),
+                                  "polarization treatment: rigorous Mueller chain; unpolarized (product of "
+                                  "unpolarized reflectances); sp (s and p reflected separately, averaged); "
+                                  "paper_literal (the printed Eq 33, for comparison only)")),
+      research_param(
+          integer_param("max_reflections", 0, 0, 100000,
+                        "rays needing more reflections are absorbed (the paper's Table 3); 0 = no limit")),
+      choice_param("direction_space", "uv", choice_names(kDirectionSpaces),
+                   "reference direction: the mesh's dp/du (uv), or the `direction` input in object "
+                   "or world space")};
 }
 
 }  // namespace ochre

@@ -22,7 +22,6 @@ struct GrooveFacetSettings {
 
 // The parameters `metal`, `model`, `max_reflections` and `direction_space`.
 GrooveFacetSettings parse_groove_settings(const PrepareArgs& args);
-std::string string_param(const PrepareArgs& args, const char* name, const char* fallback);
 
 // Input indices of the shared sockets in a groove closure's definition.
 struct GrooveInputs {
