@@ -2,9 +2,11 @@
 // InputError: the exception for bad user input (malformed scene, missing or unreadable file,
 // parameter out of range). The message names the file and the element at fault; the command
 // line tools exit with code 2 on it. Defined in the lowest library so that every reader of user
-// files (spectra's CSV tables included) can throw it; renderer/input_error.h re-exports it.
+// files (spectra's CSV tables included) can throw it.
 
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 namespace ochre {
 
@@ -12,5 +14,15 @@ class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// A message as a person reads it: at most `limit` characters, the middle of a longer one (a 50 MB value a
+// file gave, quoted in full) replaced by the count of what was left out. The programs print every error
+// through it (tools/cli/program.h).
+inline std::string message_excerpt(std::string_view message, size_t limit = 4096) {
+  if (message.size() <= limit) return std::string(message);
+  const size_t head = limit * 3 / 4, tail = limit / 8;
+  return std::string(message.substr(0, head)) + " [... " + std::to_string(message.size() - head - tail) +
+         " characters left out ...] " + std::string(message.substr(message.size() - tail));
+}
 
 }  // namespace ochre

@@ -25,7 +25,7 @@ PACKAGES=(
   chromium chromium-driver python3-selenium
   # Fuzzing (tests/fuzz, tools/dev/fuzz.sh): clang with libFuzzer and the sanitizer runtimes.
   clang-14 libfuzzer-14-dev libclang-rt-14-dev
-  # The Slurm tests (tests/slurm: a one-node cluster on 127.0.0.1, tools/scripts/one_node_cluster.sh): the
+  # The Slurm tests (tests/cli/slurm: a one-node cluster on 127.0.0.1, tools/scripts/one_node_cluster.sh): the
   # daemons, the client commands and munge; nothing is started at installation on a machine without systemd,
   # and on one with systemd only munge.service (slurmd and slurmctld need /etc/slurm/slurm.conf).
   slurmctld slurmd slurm-client munge

@@ -1,6 +1,6 @@
 #pragma once
 // Mueller matrices (4x4, float) and their algebra. Conventions (docs/polarization.md, whose 'Check
-// values' tests/materials/mueller_test.cpp reproduces):
+// values' tests/materials/core/mueller_test.cpp reproduces):
 // - a Mueller matrix maps a Stokes vector (materials/core/stokes.h) given in one reference frame to one
 //   in another; the frames belong to whoever uses the matrix (see MuellerResponse in lobe.h);
 // - rotator(theta) rotates the reference FRAME (x turns by theta towards y, i.e. counter-clockwise

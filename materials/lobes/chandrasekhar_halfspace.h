@@ -4,8 +4,8 @@
 //   f = c / (4 pi) H(mu_i) H(mu_o) / (mu_i + mu_o),
 // with the exact isotropic H function (materials/numerics/h_function.h) tabulated once on first use over
 // x = sqrt(mu) and s = sqrt(1 - c) (65 x 33 nodes, bilinear; the error is measured in
-// tests/lambert_sphere/lobes_test.cpp). Energy conserving at c = 1. An ideal depolarizer; cosine-weighted
-// sampling.
+// tests/materials/lobes/lambert_sphere/lobes_test.cpp). Energy conserving at c = 1. An ideal depolarizer;
+// cosine-weighted sampling.
 
 #include "materials/lobes/lobe.h"
 

@@ -8,7 +8,7 @@
 //   F(wo.h) D G2 / (4 cos_o cos_i); polarized by the Fresnel Mueller matrix at the microfacet normal h.
 // Mueller frames (lobe.h MuellerResponse): in_x = out_x = the s axis cross(wi, m) of the reflecting
 // (micro)normal m, y = cross(d, x) per beam: the frames of the note's matrices, no further sign flips
-// (derivation in docs/polarization.md; checked by tests/materials/conductor_test.cpp).
+// (derivation in docs/polarization.md; checked by tests/materials/lobes/conductor_test.cpp).
 // Single scattering only: a rough conductor loses the energy of multiply scattered light (measured in
 // conductor_test: RoughConductorFurnace).
 

@@ -82,6 +82,17 @@ void check_comparable(const RgbImage& test, const RgbImage& reference, const std
     throw InputError(fmt::format("working space mismatch: {} is {}, {} is {}", test_name, test.working_space,
                                  reference_name, reference.working_space));
   }
+  // A reference is the truth the metrics measure against: a NaN or infinite value in it would make every
+  // metric NaN (and pass every threshold test unseen), so it is bad input. (A test image may hold them: its
+  // metrics are then NaN and fail any threshold.)
+  for (size_t i = 0; i < reference.rgb.size(); ++i)
+    if (!std::isfinite(reference.rgb[i])) {
+      const size_t pixel = i / 3;
+      throw InputError(fmt::format("{}: pixel ({}, {}) channel {} is {}: a reference must be finite",
+                                   reference_name, pixel % static_cast<size_t>(reference.width),
+                                   pixel / static_cast<size_t>(reference.width), "RGB"[i % 3],
+                                   reference.rgb[i]));
+    }
 }
 
 ImageComparison compare_images(const RgbImage& test, const RgbImage& reference,

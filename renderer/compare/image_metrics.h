@@ -27,7 +27,8 @@ struct RgbImage {
 // that of ACES AP1, else "rec709". Throws InputError naming the file when a channel is missing.
 RgbImage rgb_from_exr(const ExrImage& exr, const std::filesystem::path& file);
 
-// Throws InputError naming both files when sizes or working spaces differ.
+// Throws InputError naming both files when sizes or working spaces differ, and naming the reference and
+// the pixel when a reference value is NaN or infinite.
 void check_comparable(const RgbImage& test, const RgbImage& reference, const std::string& test_name,
                       const std::string& reference_name);
 

@@ -1,5 +1,7 @@
 #include "renderer/compare/regression_compare.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -127,14 +129,29 @@ LuminanceEstimate luminance_from_reference(const ExrImage& image, const std::fil
   LuminanceEstimate e;
   e.width = image.width;
   e.height = image.height;
-  try {
-    e.samples_per_pixel = std::stod(spp->second);
-  } catch (const std::exception&) {
-    throw InputError(file.string() + ": attribute 'ochre:regress_spp' is not a number ('" + spp->second +
-                     "')");
-  }
+  // A bad reference is bad input, never a render regression: the sample count must be a whole number of at
+  // least 1, every mean finite and every variance finite and >= 0 (fmt/strtod accept "nan" and "inf").
+  const std::string& text = spp->second;
+  char* end = nullptr;
+  const double count = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(count) || count < 1.0 || count != std::floor(count))
+    throw InputError(
+        fmt::format("{}: attribute 'ochre:regress_spp': expected a sample count of at least 1, got "
+                    "'{}' (regenerate the reference with ochre-regress --update)",
+                    file.string(), text));
+  e.samples_per_pixel = count;
   const std::vector<float>* y = require("Y");
   const std::vector<float>* variance = require("variance.Y");
+  const size_t pixels = static_cast<size_t>(image.width) * image.height;
+  for (size_t i = 0; i < pixels; ++i) {
+    const float mean = (*y)[i], var = (*variance)[i];
+    if (!std::isfinite(mean) || !std::isfinite(var) || var < 0.0f)
+      throw InputError(fmt::format(
+          "{}: pixel ({}, {}): {} (regenerate the reference with ochre-regress "
+          "--update)",
+          file.string(), i % image.width, i / image.width,
+          !std::isfinite(mean) ? fmt::format("Y is {}", mean) : fmt::format("variance.Y is {}", var)));
+  }
   e.mean_y.assign(y->begin(), y->end());
   e.variance_of_mean.assign(variance->begin(), variance->end());
   return e;

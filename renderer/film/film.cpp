@@ -16,13 +16,12 @@ namespace ochre {
 
 namespace {
 constexpr double kScale = 0x1p40;
-constexpr double kMaxMagnitude = 1e15;
 
 // Round to nearest (ties to even) in fixed point. Values below 2^62 / kScale (about 4e6, every
 // ordinary sample) take one cvtsd2si, which rounds by the same default mode as nearbyint; larger ones
 // the general 128-bit path (a library call). Both give the same integer.
 __int128 to_fixed(double v) {
-  v = std::clamp(v, -kMaxMagnitude, kMaxMagnitude);
+  v = std::clamp(v, -kMaxSampleMagnitude, kMaxSampleMagnitude);
   const double scaled = v * kScale;
 #if defined(__SSE2__)
   if (std::fabs(scaled) < 0x1p62) return _mm_cvtsd_si64(_mm_set_sd(scaled));
@@ -39,13 +38,15 @@ std::string film_description(int width, int height, const FilmLayers& layers) {
   if (layers.aovs) text += ", AOVs";
   if (layers.stokes) text += ", Stokes";
   if (layers.spectral_bins > 0) text += fmt::format(", {} spectral bins", layers.spectral_bins);
+  if (!layers.light_groups.empty()) text += fmt::format(", {} light groups", layers.light_groups.size());
   return text + ")";
 }
 
 std::size_t Film::bytes_per_pixel(const FilmLayers& layers) {
   const std::size_t components = layers.stokes ? 4 : 1;
   return sizeof(Pixel) + (layers.aovs ? sizeof(AovPixel) : 0) + (layers.stokes ? 9 * sizeof(__int128) : 0) +
-         static_cast<std::size_t>(std::max(layers.spectral_bins, 0)) * components * sizeof(__int128);
+         static_cast<std::size_t>(std::max(layers.spectral_bins, 0)) * components * sizeof(__int128) +
+         layers.light_groups.size() * 3 * sizeof(__int128);
 }
 
 Film::Film(int width, int height, const FilmLayers& layers) : width_(width), height_(height) {
@@ -56,6 +57,27 @@ Film::Film(int width, int height, const FilmLayers& layers) : width_(width), hei
   if (layers.stokes) enable_stokes();
   if (layers.spectral_bins > 0)
     enable_spectral(layers.spectral_bins, layers.spectral_min, layers.spectral_max);
+  if (!layers.light_groups.empty()) enable_light_groups(layers.light_groups);
+}
+
+void Film::enable_light_groups(const std::vector<std::string>& names) {
+  light_groups_ = names;
+  groups_.assign(pixels_.size() * names.size() * 3, 0);
+}
+
+void Film::add_group_sample(int x, int y, size_t group, const XYZ& xyz) {
+  __int128* g = &groups_[(index(x, y) * light_groups_.size() + group) * 3];
+  g[0] += to_fixed(xyz.x);
+  g[1] += to_fixed(xyz.y);
+  g[2] += to_fixed(xyz.z);
+}
+
+XYZ Film::mean_group(int x, int y, size_t group) const {
+  const size_t i = index(x, y);
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[i].count));
+  const __int128* g = &groups_[(i * light_groups_.size() + group) * 3];
+  return {static_cast<float>(from_fixed(g[0]) / n), static_cast<float>(from_fixed(g[1]) / n),
+          static_cast<float>(from_fixed(g[2]) / n)};
 }
 
 void Film::add_sample(int x, int y, const XYZ& xyz) {
@@ -164,6 +186,7 @@ FilmLayers Film::layers() const {
   layers.aovs = has_aovs();
   layers.stokes = has_stokes();
   layers.spectral_bins = spectral_bins_;
+  layers.light_groups = light_groups_;
   if (spectral_bins_ > 0) {
     layers.spectral_min = lambda_min_;
     layers.spectral_max = lambda_min_ + bin_width_ * static_cast<float>(spectral_bins_);
@@ -194,6 +217,8 @@ std::vector<std::string> Film::accumulator_names() const {
       for (const char* xyz : {"X", "Y", "Z"}) names.push_back(fmt::format("S{}.{}", c, xyz));
   for (int c = 0; c < stokes_components_ && spectral_bins_ > 0; ++c)
     for (int b = 0; b < spectral_bins_; ++b) names.push_back(fmt::format("S{}.bin{}", c, b));
+  for (const std::string& group : light_groups_)
+    for (const char* xyz : {"X", "Y", "Z"}) names.push_back(fmt::format("group.{}.{}", group, xyz));
   return names;
 }
 
@@ -217,6 +242,9 @@ Film::AccumulatorRef Film::accumulator_ref(size_t index, size_t pixel) {
   }
   const size_t per_pixel = static_cast<size_t>(spectral_bins_) * stokes_components_;
   if (index < per_pixel) return {&spectral_[pixel * per_pixel + index], nullptr};
+  index -= per_pixel;
+  const size_t group_sums = light_groups_.size() * 3;
+  if (index < group_sums) return {&groups_[pixel * group_sums + index], nullptr};
   throw std::out_of_range("Film: no accumulator " + std::to_string(index));
 }
 

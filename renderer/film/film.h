@@ -5,7 +5,8 @@
 // range is cut between processes. Each sample value is rounded once to a multiple of 2^-40
 // and summed in 128-bit integers: integer addition is associative, so any split of the sample
 // range, merged, gives the same bits as one run (docs/architecture.md, 'Film'). The rounding error per
-// sample (4.5e-13) is far below anything visible; magnitudes are clamped at 1e15.
+// sample (4.5e-13) is far below anything visible; magnitudes are clamped at kMaxSampleMagnitude (1e15),
+// and render() counts the samples it clamps (RenderStats::clamped) so that the tools report them.
 
 #include <array>
 #include <cstddef>
@@ -18,6 +19,9 @@
 
 namespace ochre {
 
+// The largest magnitude a sample's value may add to the film; larger ones are clamped to it.
+inline constexpr double kMaxSampleMagnitude = 1e15;
+
 struct Vec3f {
   float x = 0, y = 0, z = 0;
 };
@@ -28,6 +32,7 @@ struct FilmLayers {
   int spectral_bins = 0;  // over [spectral_min, spectral_max] nm
   float spectral_min = 360.0f, spectral_max = 830.0f;
   bool stokes = false;
+  std::vector<std::string> light_groups;  // XYZ per light group (docs/lights.md, "Light groups")
 };
 
 // "film 640x480 (XYZ, AOVs, Stokes, 16 spectral bins)", for messages.
@@ -75,6 +80,14 @@ class Film {
   void add_stokes_sample(int x, int y, const std::array<XYZ, 3>& s123);
   // Mean XYZ-weighted Stokes component c in 1..3.
   XYZ mean_stokes(int x, int y, int c) const;
+
+  // Light groups: XYZ per group (S0 only), whose sum over the groups is the pixel's XYZ up to rounding.
+  void enable_light_groups(const std::vector<std::string>& names);
+  const std::vector<std::string>& light_groups() const { return light_groups_; }
+  // Adds one sample's XYZ of group `group` (the sample's total is added with add_sample).
+  void add_group_sample(int x, int y, size_t group, const XYZ& xyz);
+  // Mean XYZ of group `group` over the pixel's samples.
+  XYZ mean_group(int x, int y, size_t group) const;
 
   // Adds the sums of another film with the same layers over the same pixels (a disjoint sample range),
   // or, with an offset, over the pixels [x0, x0 + other.width()) x [y0, y0 + other.height()) of this
@@ -124,6 +137,8 @@ class Film {
   int spectral_bins_ = 0;
   int stokes_components_ = 1;     // 4 with Stokes output
   std::vector<__int128> stokes_;  // per pixel: S1..S3 x XYZ
+  std::vector<std::string> light_groups_;
+  std::vector<__int128> groups_;  // per pixel: groups x XYZ
   float lambda_min_ = 0.0f, bin_width_ = 0.0f;
 };
 

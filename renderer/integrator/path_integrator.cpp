@@ -109,12 +109,28 @@ Vec3 camera_stokes_axis(const Camera& camera, const Vec3& dir) {
   return len > 1e-6f ? x / len : Frame::from_normal(dir).s;
 }
 
+// Light arriving along a path: `receive` adds it to the Stokes vector it is given. Without groups, straight
+// into L (the bits of a render without groups); with them, into a fresh vector added to L and, its S0, to
+// the light's group.
+template <class Receive>
+void deliver(const LightSink& sink, int group, const Receive& receive) {
+  if (!sink.groups) {
+    receive(sink.L);
+    return;
+  }
+  SensorStokes c{};
+  receive(c);
+  for (size_t i = 0; i < c.size(); ++i) sink.L[i] += c[i];
+  if (group >= 0) sink.groups[group] += c[0] * sink.group_weight;
+}
+
 }  // namespace
 
 template <class Sampler, class T>
 void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                                  const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const {
+                                  const Scene::LightPmfs* pmfs, PathStats& stats,
+                                  const LightSink& sink) const {
   // A single light is picked whatever the number: its dimension is not drawn.
   size_t index = 0;
   if (pmfs || scene_.light_selection.size() > 1) {
@@ -144,13 +160,15 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   const float mis = ls->delta || ls->only_by_light_sampling
                         ? 1.0f
                         : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
-  throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
+  deliver(sink, group_of(static_cast<int>(index)), [&](SensorStokes& L) {
+    throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
+  });
 }
 
 template <class Sampler, class T>
 void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T& throughput,
                                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                                    LobeArena& arena, PathStats& stats, SensorStokes& L) const {
+                                    LobeArena& arena, PathStats& stats, const LightSink& sink) const {
   const MirrorLights::Choice choice =
       scene_.mirror_lights.sample(sampler.get_1d(SampleDims::bounce(depth, SampleDims::kMirrorLightChoice)));
   if (!(choice.pmf > 0.0f)) return;
@@ -206,7 +224,9 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   if (at_x.m) storage->m = storage->m * k;
   T through_mirror = throughput;
   through_mirror.scatter(at_x, at_x.f * k);
-  through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+  deliver(sink, group_of(static_cast<int>(choice.light)), [&](SensorStokes& L) {
+    through_mirror.receive_through(sampled_response<T>(m, wo_m, *exit, lambda), 1.0f, incoming, -ls->wi, L);
+  });
 }
 
 float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf,
@@ -222,6 +242,8 @@ float PathIntegrator::mirrored_emission_weight(int mirror, int light, const Vec3
 template <class T>
 struct PathState {
   SensorStokes L{};
+  SampledSpectrum* groups = nullptr;  // light groups (LightSink)
+  float group_weight = 1.0f;
   T beta;
   bool specular = true;  // the previous event was the camera or a delta lobe: no MIS on emission
   float prev_pdf = 0.0f;
@@ -255,7 +277,10 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
                                             : scene_.environment->radiance(s.ray.dir, lambda, &env_pdf);
       const float w =
           s.specular ? 1.0f : power_heuristic(s.prev_pdf, light_pmf(scene_.environment_light) * env_pdf);
-      s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, s.L);
+      deliver(LightSink{s.L, s.groups, s.group_weight}, group_of(scene_.environment_light),
+              [&](SensorStokes& L) {
+                s.beta.receive(IncomingLight{Le * w, false, {}}, -s.ray.dir, L);
+              });
     }
     return false;
   }
@@ -287,7 +312,9 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
       w = mirrored_emission_weight(s.chain_mirror, light, s.chain_origin, s.chain_pdf, v.sp.p, v.sp.ng);
     }
     const std::optional<Vec3> polarizer = light >= 0 ? scene_.lights[light]->polarizer_axis : std::nullopt;
-    s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, s.L);
+    deliver(LightSink{s.L, s.groups, s.group_weight}, group_of(light), [&](SensorStokes& L) {
+      s.beta.receive(filtered_emission(polarizer, wo, v.closure.emission() * w), wo, L);
+    });
   }
   if (depth >= max_depth_ || !v.closure.has_lobes()) return false;
 
@@ -299,9 +326,10 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
 
   if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
     if (local_lights_) scene_.light_pmfs(v.sp.p, s.light_pmfs);
-    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, s.L);
+    const LightSink sink{s.L, s.groups, s.group_weight};
+    direct_light(v, wo, s.beta, lambda, sampler, depth, local_lights_ ? &s.light_pmfs : nullptr, stats, sink);
     if (!scene_.mirror_lights.empty() && depth + 2 <= max_depth_)
-      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, s.L);
+      mirrored_light(v, wo, s.beta, lambda, sampler, depth, arena, stats, sink);
   }
   return true;
 }
@@ -343,8 +371,9 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
 template <class Sampler, class T>
 SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
                                    const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
-                                   PathStats& stats, FirstHit* first_hit) const {
-  PathState<T> s{.beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+                                   PathStats& stats, FirstHit* first_hit, SampledSpectrum* groups) const {
+  PathState<T> s{.groups = groups,
+                 .beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
                            T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
                  .ray = camera_ray};
   PathVertex v;
@@ -372,6 +401,7 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
     const Sampler numbers = sampler.branch(j, branches_);
     PathState<T> c = s;
     c.L = SensorStokes{};
+    c.group_weight = 1.0f / static_cast<float>(branches_);
     for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
       if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
@@ -384,22 +414,24 @@ SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
 template <class Sampler>
 SensorStokes PathIntegrator::radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                                       const Sampler& sampler, LobeArena& arena, PathStats& stats,
-                                      FirstHit* first_hit) const {
+                                      FirstHit* first_hit, SampledSpectrum* groups) const {
   switch (mode_) {
     case PolarizationMode::kOff:
-      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit,
+                                                   groups);
     case PolarizationMode::kIntensity:
-      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
     case PolarizationMode::kStokes:
-      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit);
+      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
   }
   return {};
 }
 
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                               const IndependentSampler&, LobeArena&, PathStats&,
-                                               FirstHit*) const;
+                                               const IndependentSampler&, LobeArena&, PathStats&, FirstHit*,
+                                               SampledSpectrum*) const;
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
-                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*) const;
+                                               const SobolSampler&, LobeArena&, PathStats&, FirstHit*,
+                                               SampledSpectrum*) const;
 
 }  // namespace ochre

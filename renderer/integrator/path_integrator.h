@@ -34,6 +34,14 @@ struct PathStats {
 template <class Throughput>
 struct PathState;
 
+// Where light arriving along a path goes: the path's radiance L and, with light groups, the S0 of each group
+// (docs/lights.md, "Light groups"), which sum to L's S0.
+struct LightSink {
+  SensorStokes& L;
+  SampledSpectrum* groups = nullptr;  // one per group of the scene, or null: no groups
+  float group_weight = 1.0f;          // a branch's share (1 / branches) of a branched path
+};
+
 class PathIntegrator {
  public:
   PathIntegrator(const Scene& scene, const RenderSettings& settings, PolarizationMode mode)
@@ -48,10 +56,12 @@ class PathIntegrator {
   // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from
   // `sampler`. `cone` is the camera ray's footprint, used to filter textures.
   // Instantiated for IndependentSampler and SobolSampler.
+  // `groups`: with light groups, one spectrum per group of the scene, zero on entry, receives the S0 each
+  // group's lights give (null: none).
   template <class Sampler>
   SensorStokes radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                         const Sampler& sampler, LobeArena& arena, PathStats& stats,
-                        FirstHit* first_hit = nullptr) const;
+                        FirstHit* first_hit = nullptr, SampledSpectrum* groups = nullptr) const;
 
  private:
   // Arrival of s.ray: emission, shading and next-event estimation at the vertex it hits (stored in v).
@@ -67,19 +77,25 @@ class PathIntegrator {
                const SampledWavelengths& lambda, const Sampler& sampler) const;
   template <class Sampler, class Throughput>
   SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
-                     const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit) const;
+                     const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit,
+                     SampledSpectrum* groups) const;
+  // The light group of light `light` (-1: an emitter that is no light), -1 without groups.
+  int group_of(int light) const {
+    if (scene_.light_groups.empty()) return -1;
+    return light >= 0 ? scene_.light_group_of[static_cast<size_t>(light)] : scene_.other_light_group;
+  }
   // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L. `pmfs`: the
   // lights' probabilities at this point (Scene::light_pmfs), or null to choose by power.
   template <class Sampler, class Throughput>
   void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                    const Scene::LightPmfs* pmfs, PathStats& stats, SensorStokes& L) const;
+                    const Scene::LightPmfs* pmfs, PathStats& stats, const LightSink& sink) const;
   // Next-event estimation through a planar mirror: one sample of a light's mirror image (planar_mirrors.h),
   // the path x -> mirror -> light MIS-weighted against BSDF sampling of the same path.
   template <class Sampler, class Throughput>
   void mirrored_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
                       const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
-                      LobeArena& arena, PathStats& stats, SensorStokes& L) const;
+                      LobeArena& arena, PathStats& stats, const LightSink& sink) const;
   // Emission reached by a BSDF-sampled path x -> mirror -> light: the MIS weight against mirrored_light().
   float mirrored_emission_weight(int mirror, int light, const Vec3& x, float bsdf_pdf, const Vec3& p,
                                  const Vec3& ng) const;

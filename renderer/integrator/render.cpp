@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "renderer/film/noise_threshold.h"
 #include "renderer/geometry/surface_shading.h"
 #include "renderer/integrator/path_integrator.h"
 #include "spectra/cie.h"
@@ -21,7 +22,7 @@ namespace {
 constexpr int kTileSize = 16;
 
 struct TileCounters {
-  std::atomic<uint64_t> rays{0}, shadow_rays{0}, discarded{0}, nonfinite_values{0};
+  std::atomic<uint64_t> samples{0}, rays{0}, shadow_rays{0}, discarded{0}, clamped{0}, nonfinite_values{0};
 };
 
 // First-hit AOVs of one sample: albedo as the colour it has under D65 (white = 1), the normal, the depth.
@@ -34,14 +35,22 @@ void add_aovs(Film& film, int x, int y, const FirstHit& first, const SampledWave
                       first.hit ? first.depth : 0.0f);
 }
 
-// Adds one camera sample to the film; returns true when it was discarded (NaN / Inf: counted, adds zero).
+// What became of a camera sample: added, discarded (NaN / Inf: counted, adds zero) or clamped to the film's
+// range (added at kMaxSampleMagnitude).
+enum class SampleFate { kAdded, kDiscarded, kClamped };
+
+bool beyond_film_range(const XYZ& v) {
+  return std::fabs(v.x) > kMaxSampleMagnitude || std::fabs(v.y) > kMaxSampleMagnitude ||
+         std::fabs(v.z) > kMaxSampleMagnitude;
+}
+
 // The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
 XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {
   return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
 }
 
-bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
-                const SensorResponse* sensor) {
+SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
+                      const SensorResponse* sensor, const SampledSpectrum* groups) {
   XYZ xyz = sensor_value(sensor, S[0], lambda);
   std::array<XYZ, 3> s123{};
   bool finite = is_finite(xyz);
@@ -53,13 +62,18 @@ bool add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWa
   if (!finite) {
     film.add_sample(x, y, {0, 0, 0});
     if (film.has_stokes()) film.add_stokes_sample(x, y, {});
-    return true;
+    return SampleFate::kDiscarded;
   }
+  bool clamped = beyond_film_range(xyz);
+  for (const XYZ& s : s123) clamped = clamped || beyond_film_range(s);
   film.add_sample(x, y, xyz);
+  if (groups)
+    for (size_t g = 0; g < film.light_groups().size(); ++g)
+      film.add_group_sample(x, y, g, sensor_value(sensor, groups[g], lambda));
   if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
   if (film.spectral_bins() > 0)
     for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);
-  return false;
+  return clamped ? SampleFate::kClamped : SampleFate::kAdded;
 }
 
 // One tile of the rendered rectangle: image pixels [x0, x1) x [y0, y1).
@@ -72,13 +86,19 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
                  const Tile& tile, const PixelRect& rect, SampleRange samples, Film& film,
                  TileCounters& counters, const ProgressCallback& progress, const std::atomic<bool>* cancel) {
   thread_local LobeArena arena;
+  // Progress counts every sample of the range, also those a pixel of a noise-threshold render skips.
   // The tile runs on this thread from start to end (no TBB call inside): its values are the increase.
   const NonFiniteTally& nonfinite = thread_non_finite_tally();
   const uint64_t nonfinite_before = nonfinite.values;
   PathStats stats;
   const RayCone cone = scene.camera.pixel_cone();
   const SensorResponse* sensor = scene.sensor.get();
-  uint64_t discarded = 0;
+  uint64_t taken = 0, discarded = 0, clamped = 0;
+  const double threshold = s.noise_threshold;
+  // Light groups: the S0 of each group's lights, per sample (docs/lights.md, "Light groups").
+  const size_t group_count = film.light_groups().size();
+  std::array<SampledSpectrum, Scene::kMaxLightGroups> groups;
+  SampledSpectrum* const group_sums = group_count > 0 ? groups.data() : nullptr;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
@@ -86,6 +106,8 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
       const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       const int fx = x - rect.x0, fy = y - rect.y0;
       for (uint32_t k = samples.begin; k < samples.end; ++k) {
+        if (threshold > 0.0 && !pixel_takes_sample(film, fx, fy, k, threshold)) break;
+        ++taken;
         const Sampler sampler(s.seed, pixel_index, k);
         const float u_lambda = sampler.get_1d(SampleDims::kWavelength);
         const SampledWavelengths lambda =
@@ -93,16 +115,21 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
         const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
         const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
         FirstHit first;
-        const SensorStokes S =
-            integrator.radiance(ray, cone, lambda, sampler, arena, stats, film.has_aovs() ? &first : nullptr);
+        for (size_t g = 0; g < group_count; ++g) groups[g] = SampledSpectrum(0.0f);
+        const SensorStokes S = integrator.radiance(ray, cone, lambda, sampler, arena, stats,
+                                                   film.has_aovs() ? &first : nullptr, group_sums);
         if (film.has_aovs()) add_aovs(film, fx, fy, first, lambda);
-        if (add_sample(film, fx, fy, S, lambda, sensor)) ++discarded;
+        const SampleFate fate = add_sample(film, fx, fy, S, lambda, sensor, group_sums);
+        if (fate == SampleFate::kDiscarded) ++discarded;
+        if (fate == SampleFate::kClamped) ++clamped;
       }
     }
   }
+  counters.samples += taken;
   counters.rays += stats.rays;
   counters.shadow_rays += stats.shadow_rays;
   counters.discarded += discarded;
+  counters.clamped += clamped;
   counters.nonfinite_values += nonfinite.values - nonfinite_before;
   if (progress) progress(static_cast<uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * samples.size());
 }
@@ -115,6 +142,7 @@ void RenderStats::add(const RenderStats& pass) {
   rays += pass.rays;
   shadow_rays += pass.shadow_rays;
   discarded += pass.discarded;
+  clamped += pass.clamped;
   nonfinite_values += pass.nonfinite_values;
   threads = pass.threads;
 }
@@ -138,6 +166,11 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
+  if (!film.light_groups().empty() && film.light_groups() != scene.light_groups)
+    throw std::invalid_argument("render_range: the film's light groups are not the scene's");
+  // A pixel of a noise-threshold render decides from all its samples so far: the film holds [0, begin).
+  if (s.noise_threshold > 0.0 && s.sample_begin != 0)
+    throw std::invalid_argument("render_range: a noise-threshold render starts at sample 0");
   const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
   const PathIntegrator integrator(scene, s, polarization_for(scene, job).mode);
@@ -164,10 +197,11 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
       tbb::simple_partitioner());
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.samples = static_cast<uint64_t>(rect.width()) * rect.height() * samples.size();
+  stats.samples = counters.samples;
   stats.rays = counters.rays;
   stats.shadow_rays = counters.shadow_rays;
   stats.discarded = counters.discarded;
+  stats.clamped = counters.clamped;
   stats.nonfinite_values = counters.nonfinite_values;
   stats.threads = threads;
   stats.cancelled = cancel && cancel->load();

@@ -20,6 +20,7 @@ struct RenderStats {
   uint64_t rays = 0;              // intersect queries
   uint64_t shadow_rays = 0;       // occlusion queries
   uint64_t discarded = 0;         // NaN / Inf samples, counted as zero
+  uint64_t clamped = 0;           // samples beyond the film's range, clamped to it (kMaxSampleMagnitude)
   uint64_t nonfinite_values = 0;  // NaN / Inf values of material programs, made finite (non_finite_tally.h)
   int threads = 0;
   bool cancelled = false;  // stopped by the cancel flag: the film is incomplete

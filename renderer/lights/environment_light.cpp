@@ -127,7 +127,7 @@ BuiltLight build_environment(const LightContext& ctx) {
     return {std::make_unique<EnvironmentLight>(
                 parse_spectrum(j.require("radiance"), SpectrumRole::Illuminant, j.child("radiance"), ctx.dir),
                 ctx.scene_radius, scale),
-            std::nullopt, ""};
+            std::nullopt, f.has("scale") ? "scale" : "radiance"};
   }
   const std::filesystem::path path = ctx.dir / f.string("file");
   std::shared_ptr<const EnvironmentMap> map;
@@ -137,7 +137,7 @@ BuiltLight build_environment(const LightContext& ctx) {
     f.fail("file", fmt::format("cannot read environment map '{}': {}", path.string(), e.what()));
   }
   return {std::make_unique<EnvironmentLight>(std::move(map), ctx.scene_radius, scale, rotation), std::nullopt,
-          ""};
+          f.has("scale") ? "scale" : "file"};
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // point_light.h, spot_light.h, sphere_light.h, environment_light.h, area_light.h.
 
 #include <optional>
+#include <string>
 
 #include "materials/core/vec3.h"
 #include "spectra/sampled_wavelengths.h"
@@ -21,6 +22,9 @@ struct LightSample {
   Vec3 light_normal;  // geometric normal at the sampled point (area lights)
 };
 
+// The light group of the emitters that name none (docs/lights.md, "Light groups"): a reserved name.
+inline constexpr const char* kOtherLightGroup = "other";
+
 class Light {
  public:
   virtual ~Light() = default;
@@ -37,6 +41,9 @@ class Light {
 
   // Transmission axis (world) of a linear polarizer in front of the light (light_polarizer.h), if any.
   std::optional<Vec3> polarizer_axis;
+  // The light group the light belongs to ("group" of a light, "light_group" of an emissive shape; docs/
+  // lights.md, "Light groups"); empty: none.
+  std::string group;
 };
 
 }  // namespace ochre

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 #include "renderer/lights/light_type.h"
@@ -32,11 +34,34 @@ const LightRegistry& LightRegistry::builtin() {
 BuiltLight LightType::load(const JsonFields& f, const std::filesystem::path& dir, const Camera& camera,
                            const Vec3d& origin, float scene_radius) const {
   const FieldSpec type_field = string_field("type", true, "the light type");
+  const FieldSpec group_field = light_group_field("group");
   std::vector<const FieldSpec*> specs{&type_field};
   for (const FieldSpec& own : fields) specs.push_back(&own);
+  specs.push_back(&group_field);
   const DeclaredFields declared(f, specs);
   declared.check_known();
-  return build(LightContext{declared, dir, camera, origin, scene_radius});
+  BuiltLight built = build(LightContext{declared, dir, camera, origin, scene_radius});
+  built.light->group = parse_light_group(f, "group");
+  return built;
+}
+
+FieldSpec light_group_field(const char* name) {
+  return string_field(
+      name, false,
+      "the light group it belongs to: the render writes a layer per group, which ochre relight "
+      "recombines (docs/lights.md, \"Light groups\")");
+}
+
+std::string parse_light_group(const JsonFields& f, const char* key) {
+  if (!f.has(key)) return "";
+  const std::string name = f.required_string(key);
+  const bool valid = !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+  if (!valid) f.fail(key, fmt::format("'{}' is not a group name: 1 to 64 letters, digits, '_' or '-'", name));
+  if (name == kOtherLightGroup)
+    f.fail(key, fmt::format("'{}' is the group of the emitters that name none; choose another name", name));
+  return name;
 }
 
 std::optional<Vec3> parse_light_polarizer(const JsonFields& f) {

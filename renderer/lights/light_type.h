@@ -36,8 +36,8 @@ struct LightContext {
 struct BuiltLight {
   std::unique_ptr<Light> light;
   std::optional<FlameLight> flame;  // a flame flickers in frame sequences; its light is `light`
-  // The field a message names when the light's power overflows single precision; empty: no check (the
-  // environment's power is bounded by its map).
+  // The field a message names when the light's power overflows single precision (a radiance of 3e38 would
+  // turn every sample it reaches into infinity); empty: no check.
   std::string power_field;
 };
 
@@ -59,6 +59,10 @@ struct LightType {
 std::optional<Vec3> parse_light_polarizer(const JsonFields& f);
 // The declaration of that field.
 FieldSpec polarizer_field();
+// "group" of a light, "light_group" of an emissive shape: its declaration, and the name (InputError naming
+// the field unless it is 1 to 64 letters, digits, '_' or '-', and not the reserved "other"; "" when absent).
+FieldSpec light_group_field(const char* name);
+std::string parse_light_group(const JsonFields& f, const char* key);
 
 class LightRegistry : public TypeRegistry<LightType> {
  public:

@@ -122,12 +122,13 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "branches", "seed", "threads", "polarization",
-                   "sampler", "mirror_lights", "light_selection"});
+                   "sampler", "mirror_lights", "light_selection", "noise_threshold"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
     s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    s.noise_threshold = f.number("noise_threshold", s.noise_threshold, 0.0, 1.0);
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.light_selection =
         parse_choice(f, "light_selection", kLightSelections, s.light_selection, "light selection");
@@ -372,11 +373,15 @@ void load_shapes(const SceneSources& sources, const JsonFields& top, Scene& scen
       meshes.push_back(load_shape(fields, type, scene, templates, shape.file.parent_path()));
     }
     const std::optional<Vec3> polarizer = parse_light_polarizer(f);
+    const std::string group = parse_light_group(f, "light_group");
     for (Mesh& mesh : meshes) {
       if (polarizer && !scene.materials[mesh.material]->facts().is_emissive)
         f.fail("polarizer", "a polarizer belongs in front of a light: this shape's material does not emit");
+      if (!group.empty() && !scene.materials[mesh.material]->facts().is_emissive)
+        f.fail("light_group", "a light group holds lights: this shape's material does not emit");
       scene.meshes.push_back(std::move(mesh));
       scene.mesh_polarizers.push_back(polarizer);
+      scene.mesh_light_groups.push_back(group);
     }
   }
 }
@@ -421,6 +426,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.polarization) s.polarization = *o.polarization;
   if (o.sampler) s.sampler = *o.sampler;
   if (o.branches) s.branches = *o.branches;
+  if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 
 // An emissive shape whose emission is the same everywhere (known when the scene loads) and whose power
@@ -435,26 +441,38 @@ void check_area_light_power(const Scene& scene, const JsonFields& top) {
   }
 }
 
-LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
-                        const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+void check_no_parameters(const SceneOverrides& overrides, const std::string& file) {
   if (!overrides.parameters.empty())
     throw InputError(fmt::format("{}: scene parameters ({}=...) apply to Mitsuba XML scenes only", file,
                                  overrides.parameters.front().first));
+}
+
+// What every load starts with: the scene's top-level keys checked, its film, integrator and output settings
+// read and the overrides applied (build_scene goes on with the rest; job_of_json stops here).
+void load_job_settings(const JsonFields& top, const std::filesystem::path& scene_dir,
+                       const SceneOverrides& overrides, const std::string& file, RenderJob& job,
+                       PixelFilter& pixel_filter) {
+  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
+                   "description", "include", "presets"});
+  (void)top.string("description", "");  // its type, checked here as when the whole scene loads
+  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
+    top.fail("ochre", "expected a version string or number");
+  load_settings(top, scene_dir, job, pixel_filter);
+  apply_overrides(overrides, job.settings);
+  check_settings(job.settings, file);
+}
+
+LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
+                        const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  check_no_parameters(overrides, file);
   LoadedScene loaded{std::make_unique<Scene>(), RenderJob{}};
   Scene* scene = loaded.scene.get();
   RenderJob& job = loaded.job;
   scene->file = std::filesystem::absolute(scene_path);
   const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
   const JsonFields top(sources.root, file + ":");
-  top.check_known({"ochre", "camera", "film", "integrator", "output", "materials", "lights", "shapes",
-                   "description", "include", "presets"});
+  load_job_settings(top, scene->file.parent_path(), overrides, file, job, scene->pixel_filter);
   scene->description = top.string("description", "");
-  if (top.has("ochre") && !top.require("ochre").is_string() && !top.require("ochre").is_number())
-    top.fail("ochre", "expected a version string or number");
-
-  load_settings(top, scene->file.parent_path(), job, scene->pixel_filter);
-  apply_overrides(overrides, job.settings);
-  check_settings(job.settings, file);
   scene->camera = load_camera(top, job.settings, scene->origin);
   if (top.has("camera")) {
     const JsonFields camera(top.require("camera"), top.child("camera"));
@@ -482,30 +500,60 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
   }
   scene->accel = std::make_unique<Accel>(scene->meshes);
   scene->build_lights(job.settings.mirror_lights);
+  job.outputs.light_groups = scene->light_groups;
   check_area_light_power(*scene, top);
+  if (scene->light_groups.size() > Scene::kMaxLightGroups)
+    top.fail("lights",
+             fmt::format("{} light groups (with \"other\", the emitters that name none); at most {}",
+                         scene->light_groups.size(), Scene::kMaxLightGroups));
   return loaded;
 }
 
-LoadedScene load_scene_checked(const nlohmann::json& root, const std::string& name,
-                               const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+RenderJob job_of_json(const nlohmann::json& root, const std::string& file,
+                      const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
+  check_no_parameters(overrides, file);
+  const SceneSources sources = load_scene_sources(root, scene_path, file, overrides.preset);
+  RenderJob job;
+  PixelFilter pixel_filter;
+  load_job_settings(JsonFields(sources.root, file + ":"), std::filesystem::absolute(scene_path).parent_path(),
+                    overrides, file, job, pixel_filter);
+  return job;
+}
+
+// `load()` (build_scene or job_of_json for the scene `name`), its errors as InputError naming the file; a
+// value a preset wrote is reported where it landed, with the preset that put it there.
+template <class Load>
+auto with_scene_messages(const std::string& name, const SceneOverrides& overrides, const Load& load)
+    -> decltype(load()) {
   try {
-    return build_scene(root, name, scene_path, overrides);
-  } catch (const GraphError& e) {
-    throw InputError(e.what());
-  } catch (const nlohmann::json::exception& e) {
-    // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
-    throw InputError(fmt::format("{}: {}", name, e.what()));
+    try {
+      return load();
+    } catch (const GraphError& e) {
+      throw InputError(e.what());
+    } catch (const nlohmann::json::exception& e) {
+      // A read of the scene that escaped the checks of json_fields.h: still bad input in this file.
+      throw InputError(fmt::format("{}: {}", name, e.what()));
+    }
+  } catch (const InputError& e) {
+    if (!overrides.preset) throw;
+    const std::string message = e.what();
+    if (message.find("presets") != std::string::npos) throw;
+    throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
+                                 *overrides.preset, name));
   }
 }
 
-// translate_mitsuba_scene, then load_scene_json with `overrides` (overrides.parameters are the $name
-// parameters); the loader's messages are told at the XML element the failing part came from.
-LoadedScene load_mitsuba_scene(const std::filesystem::path& file, const SceneOverrides& overrides) {
+// translate_mitsuba_scene, then `load(json, overrides)` with the overrides of the JSON scene
+// (overrides.parameters are the $name parameters); the loader's messages are told at the XML element the
+// failing part came from.
+template <class Load>
+auto load_mitsuba(const std::filesystem::path& file, const SceneOverrides& overrides, const Load& load)
+    -> decltype(load(nlohmann::json(), overrides)) {
   const MitsubaTranslation translation = translate_mitsuba_scene(file, overrides.parameters);
   SceneOverrides json_overrides = overrides;
   json_overrides.parameters.clear();
   try {
-    return load_scene_json(translation.scene, file.string(), file, json_overrides);
+    return load(translation.scene, json_overrides);
   } catch (const InputError& e) {
     throw InputError(translation.at_origin(e.what(), file.string()));
   }
@@ -515,21 +563,25 @@ LoadedScene load_mitsuba_scene(const std::filesystem::path& file, const SceneOve
 
 LoadedScene load_scene_json(const nlohmann::json& root, const std::string& name,
                             const std::filesystem::path& scene_path, const SceneOverrides& overrides) {
-  if (!overrides.preset) return load_scene_checked(root, name, scene_path, overrides);
-  try {
-    return load_scene_checked(root, name, scene_path, overrides);
-  } catch (const InputError& e) {
-    // A value the preset wrote is reported where it landed: say which preset put it there.
-    const std::string message = e.what();
-    if (message.find("presets") != std::string::npos) throw;
-    throw InputError(fmt::format("{} (with preset '{}': presets.{} of {})", message, *overrides.preset,
-                                 *overrides.preset, name));
-  }
+  return with_scene_messages(name, overrides, [&] { return build_scene(root, name, scene_path, overrides); });
 }
 
 LoadedScene load_scene(const std::filesystem::path& path, const SceneOverrides& overrides) {
-  if (is_mitsuba_scene_file(path)) return load_mitsuba_scene(path, overrides);
+  if (is_mitsuba_scene_file(path))
+    return load_mitsuba(path, overrides,
+                        [&](const nlohmann::json& root, const SceneOverrides& json_overrides) {
+                          return load_scene_json(root, path.string(), path, json_overrides);
+                        });
   return load_scene_json(read_json_file(path, "scene file"), path.string(), path, overrides);
+}
+
+RenderJob load_render_job(const std::filesystem::path& path, const SceneOverrides& overrides) {
+  const auto load_json = [&](const nlohmann::json& root, const SceneOverrides& json_overrides) {
+    return with_scene_messages(path.string(), json_overrides,
+                               [&] { return job_of_json(root, path.string(), path, json_overrides); });
+  };
+  if (is_mitsuba_scene_file(path)) return load_mitsuba(path, overrides, load_json);
+  return load_json(read_json_file(path, "scene file"), overrides);
 }
 
 }  // namespace ochre

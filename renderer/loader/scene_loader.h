@@ -24,7 +24,8 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<PolarizationSetting> polarization;
   std::optional<SamplerKind> sampler;
-  std::optional<int> branches;  // integrator.branches (ochre-converge variants)
+  std::optional<int> branches;            // integrator.branches (ochre-converge variants)
+  std::optional<double> noise_threshold;  // integrator.noise_threshold; 0 turns it off
   // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
   std::vector<std::pair<std::string, std::string>> parameters;
   std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)
@@ -38,6 +39,12 @@ struct LoadedScene {
 };
 
 LoadedScene load_scene(const std::filesystem::path& file, const SceneOverrides& overrides = {});
+
+// The render job of a scene file only: its film, integrator and output settings (includes and the preset
+// applied; an XML scene translated) with the overrides applied, checked as load_scene checks them. No
+// camera, material, shape or light is loaded, so this is cheap whatever the scene's size: for checking a
+// command line against a scene before any work (ochre render --check-settings, docs/cli.md).
+RenderJob load_render_job(const std::filesystem::path& file, const SceneOverrides& overrides = {});
 
 // A scene given as JSON: `name` names it in every message ("scene.json", "<dict>"); relative paths in it
 // resolve against the directory of `scene_path` (scene.file).

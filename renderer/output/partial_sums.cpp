@@ -10,9 +10,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
+#include "renderer/film/noise_threshold.h"
 #include "renderer/image/exr_input_stream.h"
 #include "renderer/image/exr_writer.h"
 #include "renderer/util/atomic_file.h"
@@ -112,6 +114,14 @@ std::optional<std::pair<float, float>> parse_float_pair(std::string_view text) {
   return std::pair{a, b};
 }
 
+// A pixel holds the samples the coverage says; a pixel of a noise-threshold render may have stopped at a
+// decision point before them (renderer/film/noise_threshold.h).
+bool count_matches(__int128 count, uint64_t expected, const PartialSumsHeader& h) {
+  if (count < 0 || count > static_cast<__int128>(UINT64_MAX)) return false;
+  const auto n = static_cast<uint64_t>(count);
+  return h.noise_threshold > 0.0 ? valid_noise_threshold_count(n, expected) : n == expected;
+}
+
 }  // namespace
 
 void parse_identity_fields(const std::string& file, PartialSumsHeader& header) {
@@ -150,6 +160,30 @@ void parse_identity_fields(const std::string& file, PartialSumsHeader& header) {
                fmt::format("expected MIN-MAX in nm, got '{}'", field("ochre.spectralRange")));
   header.layers.spectral_min = range->first;
   header.layers.spectral_max = range->second;
+  const std::string_view threshold = field("ochre.noiseThreshold");
+  double value = -1.0;
+  const auto [end, error] = std::from_chars(threshold.data(), threshold.data() + threshold.size(), value);
+  if (error != std::errc() || end != threshold.data() + threshold.size() || !(value >= 0.0 && value <= 1.0))
+    fail_field(file, "ochre.noiseThreshold", fmt::format("expected a number in [0, 1], got '{}'", threshold));
+  header.noise_threshold = value;
+  // Light groups: names of letters, digits, '_' and '-', comma-separated (renderer/lights/light_type.h).
+  const std::string_view groups = field("ochre.lightGroups");
+  header.layers.light_groups.clear();
+  for (size_t start = 0; start < groups.size();) {
+    const size_t comma = std::min(groups.find(',', start), groups.size());
+    const std::string_view name = groups.substr(start, comma - start);
+    const bool valid =
+        !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+        });
+    if (!valid || header.layers.light_groups.size() >= 16)
+      fail_field(file, "ochre.lightGroups",
+                 fmt::format("expected up to 16 group names separated by commas, got '{}'", groups));
+    header.layers.light_groups.emplace_back(name);
+    start = comma + 1;
+    if (comma + 1 == groups.size())
+      fail_field(file, "ochre.lightGroups", fmt::format("ends with a comma: '{}'", groups));
+  }
 }
 
 void write_partial_sums(AtomicOutput& output, const PartialSumsHeader& header, const Film& film) {
@@ -297,6 +331,13 @@ PartialSumsFile::PartialSumsFile(const fs::path& path) : impl_(std::make_unique<
                              format_pixel_rect(piece.rect), format_sample_range(piece.samples),
                              format_pixel_rect(h.rect), h.spp));
   h.coverage = *coverage;
+  if (h.noise_threshold > 0.0)
+    for (const CoveragePiece& piece : h.coverage)
+      if (piece.samples.begin != 0)
+        fail_field(file, "ochre.coverage",
+                   fmt::format("piece {}:{} does not start at sample 0: a noise-threshold render is split by "
+                               "pixels, never by samples",
+                               format_pixel_rect(piece.rect), format_sample_range(piece.samples)));
   for (auto [name, value] : {std::pair{"ochre.discardedSamples", &h.discarded_samples},
                              std::pair{"ochre.nonFiniteShadingValues", &h.nonfinite_values}}) {
     const auto parsed = parse_integer<uint64_t>(attributes[name]);
@@ -375,11 +416,12 @@ void PartialSumsFile::add_to(Film& film, int x0, int y0) const {
             for (int w = kWords; w-- > 0;) bits = (bits << 32) | words[a * kWords + w][i];
             const auto value = static_cast<__int128>(bits);
             add_value_to_checksum(checksum, value);
-            if (a == count_index && value != static_cast<__int128>(expected.at(rect.x0 + x, rect.y0 + y)))
+            if (a == count_index && !count_matches(value, expected.at(rect.x0 + x, rect.y0 + y), h))
               fail_field(file, "sums.count",
-                         fmt::format("pixel ({}, {}) holds {} samples, but ochre.coverage says {}",
+                         fmt::format("pixel ({}, {}) holds {} samples, but ochre.coverage says {}{}",
                                      rect.x0 + x, rect.y0 + y, static_cast<uint64_t>(value),
-                                     expected.at(rect.x0 + x, rect.y0 + y)));
+                                     expected.at(rect.x0 + x, rect.y0 + y),
+                                     h.noise_threshold > 0.0 ? " (or a power of two from 16 below it)" : ""));
             const size_t pixel = static_cast<size_t>(y0 + y) * film.width() + (x0 + x);
             film.set_accumulator(a, pixel, film.accumulator(a, pixel) + value);
           }

@@ -35,6 +35,7 @@ struct PartialSumsHeader {
   RenderIdentity identity;                // must be equal for files to merge
   int image_width = 0, image_height = 0;  // from ochre.resolution
   uint32_t spp = 0;                       // the whole render's samples per pixel (ochre.spp)
+  double noise_threshold = 0.0;           // ochre.noiseThreshold: > 0, pixels may hold fewer samples
   FilmLayers layers;                      // from ochre.aovs, ochre.stokes, ochre.spectralBins/Range
   PixelRect rect;                         // the pixels held
   std::vector<CoveragePiece> coverage;    // inside rect, samples inside [0, spp)

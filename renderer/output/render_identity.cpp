@@ -1,6 +1,7 @@
 #include "renderer/output/render_identity.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -57,9 +58,12 @@ std::string scene_content_hash(const std::vector<InputFileRecord>& scene_inputs)
 
 const std::vector<std::string>& identity_field_names() {
   static const std::vector<std::string> names = {
-      "ochre.version", "ochre.sceneHash",    "ochre.resolution",    "ochre.spp",        "ochre.seed",
-      "ochre.sampler", "ochre.polarization", "ochre.maxDepth",      "ochre.rrDepth",    "ochre.aovs",
-      "ochre.stokes",  "ochre.spectralBins", "ochre.spectralRange", "ochre.colorspace", "ochre.sensor"};
+      "ochre.version",       "ochre.sceneHash",      "ochre.resolution",     "ochre.spp",
+      "ochre.seed",          "ochre.sampler",        "ochre.polarization",   "ochre.maxDepth",
+      "ochre.rrDepth",       "ochre.aovs",           "ochre.stokes",         "ochre.spectralBins",
+      "ochre.spectralRange", "ochre.colorspace",     "ochre.sensor",         "ochre.branches",
+      "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame",
+      "ochre.lightGroups"};
   return names;
 }
 
@@ -82,6 +86,12 @@ RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const s
       {"ochre.spectralRange", fmt::format("{}-{}", layers.spectral_min, layers.spectral_max)},
       {"ochre.colorspace", kWorkingSpaces.name(job.outputs.colorspace)},
       {"ochre.sensor", sensor_identity(job.outputs)},
+      {"ochre.branches", std::to_string(s.branches)},
+      {"ochre.mirrorLights", s.mirror_lights ? "1" : "0"},
+      {"ochre.lightSelection", kLightSelections.name(s.light_selection)},
+      {"ochre.noiseThreshold", fmt::format("{}", s.noise_threshold)},
+      {"ochre.frame", s.frame ? fmt::format("{} at {} fps", *s.frame, s.fps) : std::string()},
+      {"ochre.lightGroups", fmt::format("{}", fmt::join(layers.light_groups, ","))},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

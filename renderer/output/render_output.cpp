@@ -55,6 +55,15 @@ void add_aov_channels(const Film& film, ColorSpace space, ExrImage& image) {
   for (int k = 0; k < 8; ++k) image.channels.emplace_back(names[k], std::move(c[k]));
 }
 
+// "samples.Y" alone: where a noise-threshold render put its samples (with AOVs it is one of them).
+void add_sample_count_channel(const Film& film, ExrImage& image) {
+  std::vector<float> count(static_cast<size_t>(film.width()) * film.height());
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x)
+      count[static_cast<size_t>(y) * film.width() + x] = static_cast<float>(film.sample_count(x, y));
+  image.channels.emplace_back("samples.Y", std::move(count));
+}
+
 }  // namespace
 
 std::string spectral_channel_name(int component, float centre_nm) {
@@ -91,19 +100,55 @@ std::optional<float> spectral_channel_wavelength(std::string_view name, int comp
   return nm;
 }
 
+namespace {
+
+// The working-space RGB of one film value (XYZ, or a camera sensor's R, G, B), as the image's R, G, B.
+RGB output_rgb(const XYZ& m, const OutputSettings& outputs) {
+  if (outputs.camera_rgb) return {m.x, m.y, m.z};
+  if (!outputs.sensor_to_xyz) return xyz_to_rgb(m, outputs.colorspace);
+  const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
+  return xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
+                    outputs.colorspace);
+}
+
+void add_light_group_channels(const Film& film, const OutputSettings& outputs, ExrImage& image) {
+  const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::string names;
+  for (size_t g = 0; g < film.light_groups().size(); ++g) {
+    std::array<std::vector<float>, 3> c{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
+    for (int y = 0; y < film.height(); ++y)
+      for (int x = 0; x < film.width(); ++x) {
+        const RGB rgb = output_rgb(film.mean_group(x, y, g), outputs);
+        const size_t i = static_cast<size_t>(y) * film.width() + x;
+        c[0][i] = rgb.r;
+        c[1][i] = rgb.g;
+        c[2][i] = rgb.b;
+      }
+    const std::string& group = film.light_groups()[g];
+    for (int k = 0; k < 3; ++k)
+      image.channels.emplace_back(fmt::format("group.{}.{}", group, "RGB"[k]), std::move(c[k]));
+    names += (names.empty() ? "" : ",") + group;
+  }
+  image.string_attributes["ochre.lightGroups"] = names;
+  // The display transform, for `ochre relight` to make the display image as the render did.
+  image.string_attributes["ochre.display.ocioConfig"] = outputs.ocio_config;
+  image.string_attributes["ochre.display.display"] = outputs.display;
+  image.string_attributes["ochre.display.view"] = outputs.view;
+  image.string_attributes["ochre.display.exposure"] = fmt::format("{}", outputs.exposure);
+  if (outputs.white_balance_xyz)
+    image.string_attributes["ochre.display.whiteBalance"] =
+        fmt::format("{} {} {}", (*outputs.white_balance_xyz)[0], (*outputs.white_balance_xyz)[1],
+                    (*outputs.white_balance_xyz)[2]);
+}
+
+}  // namespace
+
 std::vector<float> film_to_rgb(const Film& film, const OutputSettings& outputs) {
   if (!outputs.camera_rgb && !outputs.sensor_to_xyz) return film_to_rgb(film, outputs.colorspace);
-  const ColorSpace space = outputs.colorspace;
   std::vector<float> rgb(static_cast<size_t>(film.width()) * film.height() * 3);
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
-      const XYZ m = film.mean(x, y);  // the sensor's R, G, B
-      RGB c{m.x, m.y, m.z};
-      if (!outputs.camera_rgb) {
-        const Array3d xyz = *outputs.sensor_to_xyz * Array3d{m.x, m.y, m.z};
-        c = xyz_to_rgb({static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])},
-                       space);
-      }
+      const RGB c = output_rgb(film.mean(x, y), outputs);  // the sensor's R, G, B, or XYZ from them
       const size_t i = (static_cast<size_t>(y) * film.width() + x) * 3;
       rgb[i] = c.r;
       rgb[i + 1] = c.g;
@@ -140,8 +185,10 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
     image.channels.emplace_back(names[c], std::move(channel));
   }
   if (film.has_aovs()) add_aov_channels(film, colorspace, image);
+  if (!film.has_aovs() && settings.noise_threshold > 0.0) add_sample_count_channel(film, image);
   if (film.spectral_bins() > 0) add_spectral_channels(film, image);
   if (film.has_stokes()) add_stokes_channels(film, image);
+  if (!film.light_groups().empty()) add_light_group_channels(film, outputs, image);
   // Camera RGB has the sensor's own primaries: no chromaticities are claimed for it.
   if (!outputs.camera_rgb)
     image.chromaticities =
@@ -157,7 +204,13 @@ ExrImage render_exr_image(const Film& film, const std::vector<float>& rgb, const
   image.string_attributes["ochre.sampleRange"] =
       fmt::format("{}-{}", settings.sample_begin, settings.sample_begin + settings.spp);
   image.string_attributes["ochre.seed"] = std::to_string(settings.seed);
+  if (settings.noise_threshold > 0.0) {
+    image.string_attributes["ochre.noiseThreshold"] = fmt::format("{}", settings.noise_threshold);
+    image.string_attributes["ochre.samples"] = std::to_string(stats.samples);
+  }
   image.string_attributes["ochre.discardedSamples"] = std::to_string(stats.discarded);
+  // Written only when samples were clamped, so that every other image keeps its header.
+  if (stats.clamped > 0) image.string_attributes["ochre.clampedSamples"] = std::to_string(stats.clamped);
   image.string_attributes["ochre.nonFiniteShadingValues"] = std::to_string(stats.nonfinite_values);
   return image;
 }
@@ -197,6 +250,7 @@ FilmLayers film_layers(const OutputSettings& outputs) {
   layers.spectral_min = outputs.spectral_min;
   layers.spectral_max = outputs.spectral_max;
   layers.stokes = outputs.stokes || !outputs.polarization_png.empty();
+  if (exr) layers.light_groups = outputs.light_groups;
   return layers;
 }
 

@@ -17,7 +17,7 @@
 // scrambled (0,m,2)-net in each pair. Unlike pbrt it needs no sample count. The price: samples
 // 2k and 2k+1 fall in opposite halves of every dimension, so an integrand coupling two different
 // padded dimensions (e.g. a 2x2 checkerboard of two 1D dims) can see about twice the variance of
-// independent sampling (measured in tests/renderer/test_sobol_sampler.cpp).
+// independent sampling (measured in tests/renderer/sampling/sobol_sampler_test.cpp).
 //
 // The Sobol sequence is 32-bit: the low 32 bits of the sample index pick the point, the high bits
 // select a different scramble, so indices beyond 2^32 do not repeat points.

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "spectra/color_space.h"
 #include "spectra/mat3.h"
@@ -67,8 +68,11 @@ struct RenderSettings {
   int height = 512;
   uint32_t spp = 64;          // samples per pixel
   uint32_t sample_begin = 0;  // sample range [sample_begin, sample_begin + spp): split renders
-  int max_depth = 8;          // maximum number of scattering events on a path
-  int rr_depth = 5;           // Russian roulette starts after this many bounces (docs/performance.md)
+  // > 0: each pixel stops sampling once its relative standard error is at most this; spp is then the
+  // maximum (renderer/film/noise_threshold.h). Requires sample_begin 0.
+  double noise_threshold = 0.0;
+  int max_depth = 8;  // maximum number of scattering events on a path
+  int rr_depth = 5;   // Russian roulette starts after this many bounces (docs/performance.md)
   // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
   // (docs/architecture.md#branched-paths).
   int branches = 1;
@@ -79,6 +83,10 @@ struct RenderSettings {
   int threads = 0;  // 0 = all cores
   SamplerKind sampler = SamplerKind::kSobol;
   PolarizationSetting polarization = PolarizationSetting::kAuto;
+  // The frame (1-based) of a flicker sequence at `fps` frames per second that a still render shows, for the
+  // render's identity (the flames' state is the scene's, Scene::set_frame); none: not a frame.
+  std::optional<uint64_t> frame;
+  double fps = 24.0;
 };
 
 struct OutputSettings {
@@ -100,6 +108,8 @@ struct OutputSettings {
   bool camera_rgb = false;
   std::optional<Mat3> sensor_to_xyz;
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
+  // The scene's light groups (Scene::light_groups): EXR layers group.<name>.R/G/B (docs/lights.md).
+  std::vector<std::string> light_groups;
   float spectral_min = 360.0f,
         spectral_max = 830.0f;  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
 };

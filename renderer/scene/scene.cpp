@@ -14,6 +14,7 @@ void Scene::build_lights(bool mirror_lights_on) {
     auto light = std::make_unique<AreaLight>(meshes[m], material, textures.get(), origin.to_float());
     if (light->power() <= 0.0f) continue;
     if (m < mesh_polarizers.size()) light->polarizer_axis = mesh_polarizers[m];
+    if (m < mesh_light_groups.size()) light->group = mesh_light_groups[m];
     mesh_light[m] = static_cast<int>(lights.size());
     lights.push_back(std::move(light));
   }
@@ -22,6 +23,35 @@ void Scene::build_lights(bool mirror_lights_on) {
     if (lights[i].get() == environment) environment_light = static_cast<int>(i);
   if (mirror_lights_on) mirror_lights.build(meshes, materials, lights.size(), environment_light);
   update_light_selection();
+  build_light_groups();
+}
+
+void Scene::build_light_groups() {
+  light_groups.clear();
+  light_group_of.assign(lights.size(), -1);
+  other_light_group = -1;
+  bool named = false;
+  for (const auto& light : lights) named = named || !light->group.empty();
+  for (const std::string& group : mesh_light_groups) named = named || !group.empty();
+  if (!named) return;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const std::string& name = lights[i]->group;
+    if (name.empty()) continue;
+    const auto it = std::find(light_groups.begin(), light_groups.end(), name);
+    light_group_of[i] = static_cast<int>(it - light_groups.begin());
+    if (it == light_groups.end()) light_groups.push_back(name);
+  }
+  // Every other emitter (a light without a group, an emissive surface too faint to be a light) is in
+  // "other", so that the groups sum to the image.
+  bool ungrouped = std::find(light_group_of.begin(), light_group_of.end(), -1) != light_group_of.end();
+  for (size_t m = 0; m < meshes.size(); ++m)
+    ungrouped = ungrouped || (mesh_light[m] < 0 && materials[meshes[m].material]->facts().is_emissive);
+  if (ungrouped) {
+    other_light_group = static_cast<int>(light_groups.size());
+    light_groups.push_back(kOtherLightGroup);
+    for (int& g : light_group_of)
+      if (g < 0) g = other_light_group;
+  }
 }
 
 void Scene::set_frame(uint64_t frame, double fps, uint64_t seed) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "materials/core/mueller.h"
@@ -64,6 +65,17 @@ struct Scene {
   // axis, y up) and in front of emissive shapes (per mesh; point and spot lights hold their own).
   std::optional<Mueller> camera_analyzer;
   std::vector<std::optional<Vec3>> mesh_polarizers;
+  std::vector<std::string> mesh_light_groups;  // per mesh: the light group of an emissive shape ("": none)
+
+  // Light groups (docs/lights.md, "Light groups"): empty when no light names one. Otherwise the groups'
+  // names, in the order they first appear, then "other" when some emitter has no group; light_group_of[i]
+  // is light i's group and other_light_group the group of emission without a group (-1: none).
+  std::vector<std::string> light_groups;
+  std::vector<int> light_group_of;
+  int other_light_group = -1;
+  static constexpr size_t kMaxLightGroups = 16;
+  // Fills light_groups, light_group_of and other_light_group from the lights' groups.
+  void build_light_groups();
 
   // Facts the integrator uses to model only what the scene needs.
   bool polarizing_materials = false;
@@ -71,7 +83,7 @@ struct Scene {
   bool needs_uv = false;
 
   // Builds the light list and selection distribution (after meshes and materials exist); with
-  // `mirror_lights`, the lights' images in planar mirrors too.
+  // `mirror_lights`, the lights' images in planar mirrors too; then the light groups.
   void build_lights(bool mirror_lights);
 
   // Frame state. Sets every flame to its state at frame `frame` (0-based) of a sequence at `fps` frames per

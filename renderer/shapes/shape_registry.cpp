@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "renderer/lights/light_type.h"
 #include "renderer/shapes/shape_type.h"
 
 namespace ochre {
@@ -39,6 +40,7 @@ const std::vector<FieldSpec>& common_shape_fields() {
       boolean_field("flip_uv_v", false, "v -> 1 - v"),
       object_field("polarizer", "",
                    "{\"axis\": [x, y, z]}: a linear polarizer in front of an emissive shape"),
+      light_group_field("light_group"),
   };
   return fields;
 }

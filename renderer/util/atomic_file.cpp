@@ -92,6 +92,17 @@ void check_output_writable(const fs::path& output) {
   if (::access(dir.c_str(), W_OK | X_OK) != 0) {
     throw ImageError(fmt::format("cannot write {}: directory {} is not writable", out, dir.string()));
   }
+  // The temporary file beside it (temporary_name) needs room in the name too: a name the file system cannot
+  // hold would fail only when the output is written, after the work.
+  const long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  const size_t temporary_suffix =
+      temporary_name(output.filename()).string().size() - output.filename().string().size();
+  if (name_max > 0 && output.filename().string().size() + temporary_suffix > static_cast<size_t>(name_max))
+    throw ImageError(
+        fmt::format("cannot write {}: its name is {} bytes long; this file system allows {} "
+                    "(less {} for the temporary file written first)",
+                    out.size() > 300 ? out.substr(0, 200) + "..." : out, output.filename().string().size(),
+                    name_max, temporary_suffix));
   struct stat info {};
   if (::lstat(output.c_str(), &info) != 0) return;  // a new file
   if (S_ISDIR(info.st_mode)) throw ImageError(fmt::format("cannot write {}: it is a directory", out));

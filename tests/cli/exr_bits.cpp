@@ -3,6 +3,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 
 #include "renderer/image/exr_reader.h"
 
@@ -57,6 +58,18 @@ bool same_rgb_values(const ExrImage& a, const ExrImage& b) {
   bytes.replace(size_at + 4, size, value);
   std::ofstream(to, std::ios::binary) << bytes;
   return ::testing::AssertionSuccess();
+}
+
+const std::vector<float>& exr_channel(const ExrImage& image, const std::string& name) {
+  const std::vector<float>* c = image.find_channel(name);
+  if (!c) throw std::runtime_error("the image has no channel " + name);
+  return *c;
+}
+
+double mean_of(const std::vector<float>& values) {
+  double sum = 0.0;
+  for (float v : values) sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
 }
 
 }  // namespace ochre::test

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "renderer/image/exr_writer.h"
 
@@ -26,5 +27,12 @@ bool same_rgb_values(const ExrImage& a, const ExrImage& b);
 ::testing::AssertionResult copy_with_string_attribute(const std::filesystem::path& from,
                                                       const std::filesystem::path& to,
                                                       const std::string& name, const std::string& value);
+
+// The channel `name` of an image read back; std::runtime_error naming it when the image lacks it (a test
+// failure, not a crash).
+const std::vector<float>& exr_channel(const ExrImage& image, const std::string& name);
+
+// The mean of a channel's values.
+double mean_of(const std::vector<float>& values);
 
 }  // namespace ochre::test

@@ -55,5 +55,23 @@ TEST(OchreHalfspace, BadInputExitsWithTwo) {
   }
 }
 
+// The output follows docs/cli.md, "Output files": a directory, a symbolic link or a device is refused before
+// the simulation runs (exit 2), and nothing is left beside it.
+TEST(OchreHalfspace, OutputsThatWouldDestroyDataAreRefusedFirst) {
+  const auto dir = scratch_dir();
+  std::filesystem::create_directory(dir / "adir");
+  std::filesystem::create_symlink("target.csv", dir / "link.csv");
+  for (const std::string& output : {std::string("adir"), std::string("link.csv"), std::string("/dev/null")}) {
+    const CommandResult r =
+        run_tool("ochre-halfspace", "--c 0.5 --paths 100 --mu 0.5 --phi 0 --output " + output, dir);
+    EXPECT_EQ(r.exit_code, 2) << output << "\n" << r.output;
+    EXPECT_NE(r.output.find("cannot write " + output), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("paths, albedo"), std::string::npos) << "the simulation ran: " << r.output;
+  }
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 2u) << "only adir and link.csv";
+}
+
 }  // namespace
 }  // namespace ochre::test::ochre_halfspace_test

@@ -1,6 +1,6 @@
 #pragma once
 // Starting a tool in the background and waiting for it, for the tests that signal a running tool
-// (test_signals.cpp, test_checkpoint.cpp).
+// (signals_test.cpp, checkpoint_test.cpp).
 
 #include <sys/types.h>
 

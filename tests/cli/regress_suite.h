@@ -1,5 +1,5 @@
 #pragma once
-// Helpers of the ochre-regress tests (test_regression.cpp, test_regress_html.cpp): the committed suite of
+// Helpers of the ochre-regress tests (regression_test.cpp, regress_html_test.cpp): the committed suite of
 // tests/regression, copies of its scenes into a scratch suite, and running the tool.
 
 #include <filesystem>

@@ -6,9 +6,11 @@ Debian 12's packages"):
    file of the same target. Two such helpers end up in one translation unit, where an exact repeat is a
    compile error but two overloads are not: a call could silently bind to the other file's helper.
 2. A test file (one with TEST macros) keeps its code in a namespace named after the file
-   (namespace ochre::test::test_split_merge), so test files may reuse helper names freely.
+   (namespace ochre::test::split_merge_test), so test files may reuse helper names freely.
+And the one naming scheme of test files (docs/architecture.md, "Tests"): a file with TEST macros is named
+x_test.cpp, and a file named so has them.
 
-Exit status 0 when both hold, 1 with a list of the offending names and files otherwise.
+Exit status 0 when all hold, 1 with a list of the offending names and files otherwise.
 Usage: unity_names.py SOURCE_DIR
 """
 
@@ -31,8 +33,9 @@ LIBRARY_DIRECTORIES = [
     ("tools/halfspace", False, {"ochre_halfspace.cpp"}),
     ("tools/python", False, set()),
 ]
-TEST_DIRECTORIES = ["cli", "renderer", "materials", "spectra", "lambert_sphere", "halfspace", "slurm", "powder",
-                    "vgroove", "regress"]
+# The test folders, searched with their sub-folders (tests/CMakeLists.txt: one executable per folder, the
+# unit tests in folders that mirror the sources).
+TEST_DIRECTORIES = ["cli", "renderer", "materials", "spectra", "tools"]
 
 DECLARATION = re.compile(r"^[^(=;{]*?([A-Za-z_]\w*)\s*(\(|=|\{|;|\[)")
 TYPE = re.compile(r"^(?:struct|class|enum class|enum|union)\s+([A-Za-z_]\w*)")
@@ -81,9 +84,14 @@ def library_problems(source):
 def test_problems(source):
     problems = []
     for directory in TEST_DIRECTORIES:
-        for path in sorted((source / "tests" / directory).glob("*.cpp")):
+        for path in sorted((source / "tests" / directory).rglob("*.cpp")):
             text = path.read_text(encoding="utf-8")
-            if not TEST_MACRO.search(text):
+            has_tests = TEST_MACRO.search(text) is not None
+            if has_tests != path.stem.endswith("_test"):
+                problems.append(f"{path.relative_to(source).as_posix()}: " +
+                                ("a test file is named x_test.cpp" if has_tests else
+                                 "no TEST in it: only test files are named x_test.cpp"))
+            if not has_tests:
                 continue
             openers = NAMESPACE_OPENER.findall(text)
             if not openers:

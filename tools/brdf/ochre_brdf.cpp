@@ -53,7 +53,8 @@ int brdf_command(int argc, char** argv) {
   plot_cmd->add_option("--output", plot.output, "PNG file")->required();
   plot_cmd->add_option("--incidence", plot.incidence_deg, "Incidence angles (degrees)")->delimiter(',');
   plot_cmd->add_option("--lambda", plot.lambda_nm, "Wavelength (nm)")->capture_default_str();
-  plot_cmd->add_option("--csv", plot.csv, "Also keep the plotted values in this CSV");
+  plot_cmd->add_option("--csv", plot.csv, "Also keep the plotted values in this CSV")
+      ->check(ochre::non_empty_path());
 
   ochre::Chi2Args chi2;
   CLI::App* chi2_cmd = app.add_subcommand("chi2", "Chi-square test of sample() against pdf()");

@@ -45,6 +45,21 @@ inline CLI::Validator unsigned_64_check() {
       "UINT64");
 }
 
+// An integer in [min, max] in decimal, for counts and numbers with a range of their own (frames): the
+// message gives that range, never the type's ("-3" is not read as 2^64 - 3 nor reported against 2^64 - 1).
+inline CLI::Validator unsigned_range_check(uint64_t min, uint64_t max) {
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error == std::errc() && end == text.data() + text.size() && value >= min && value <= max)
+          return "";
+        return "must be between " + std::to_string(min) + " and " + std::to_string(max) + " (got " + text +
+               ")";
+      },
+      "INT in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+}
+
 // A finite number in [min, max] (CLI::Range and CLI::PositiveNumber let NaN through: every comparison with it
 // is false), or in (min, max] when min_open.
 inline CLI::Validator finite_number_check(double min, double max, bool min_open, const std::string& what) {
@@ -73,6 +88,16 @@ inline CLI::Validator finite_non_negative() {
 }
 inline CLI::Validator finite_positive() {
   return finite_number_check(0.0, std::numeric_limits<double>::max(), true, "a finite number > 0");
+}
+
+// A path option (an output, an input, a folder): a given but empty value is bad input, never read as
+// "not given" (which would fall back on a default path and write over a file there).
+inline CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "expected a path, got an empty string" : "";
+      },
+      "PATH");
 }
 
 }  // namespace ochre

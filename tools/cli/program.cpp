@@ -16,7 +16,7 @@ namespace {
 const char* current_program = "ochre";
 
 int report(const char* kind, const char* what, int code) {
-  std::cerr << current_program << ": " << kind << ": " << what << "\n";
+  std::cerr << current_program << ": " << kind << ": " << message_excerpt(what) << "\n";
   return code;
 }
 

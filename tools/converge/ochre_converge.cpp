@@ -5,6 +5,8 @@
 // and compares the image with the reference (relative MSE and RMSE, renderer/compare/image_metrics.h).
 // Exit codes (docs/cli.md, "Exit codes"): 0 = done, 2 = bad input or usage, 1 = internal error.
 #include <fmt/format.h>
+
+#include <charconv>
 #include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
@@ -108,12 +110,20 @@ void apply_variant_setting(const std::string& spec, const std::string& key, cons
     if (*o.branches < 1 || *o.branches > ochre::RenderSettings::kMaxBranches)
       throw InputError(fmt::format("--variant '{}': branches must be in [1, {}], not {}", spec,
                                    ochre::RenderSettings::kMaxBranches, *o.branches));
+  } else if (key == "noise_threshold") {
+    // As --noise-threshold: a finite number in [0, 1], the whole value.
+    double threshold = -1.0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), threshold);
+    if (error != std::errc() || end != value.data() + value.size() || !(threshold >= 0.0 && threshold <= 1.0))
+      throw InputError(
+          fmt::format("--variant '{}': noise_threshold must be a number in [0, 1], not '{}'", spec, value));
+    o.noise_threshold = threshold;
   } else if (key == "spp")
     throw InputError(fmt::format("--variant '{}': spp is swept by --spp, not set per variant", spec));
   else
     throw InputError(
         fmt::format("--variant '{}': unknown setting '{}' (sampler, seed, threads, width, height, "
-                    "polarization, branches)",
+                    "polarization, branches, noise_threshold)",
                     spec, key));
 }
 
@@ -166,6 +176,7 @@ ochre::RgbImage auto_reference(const ConvergeCommand& cmd) {
   const uint32_t spp = kAutoReferenceFactor * *std::max_element(cmd.spp.begin(), cmd.spp.end());
   const uint64_t seed = settings.seed + kReferenceSeedOffset;
   settings.seed = seed;
+  settings.noise_threshold = 0.0;  // every pixel at the reference's samples
   fmt::print("reference: auto, rendered here at {} spp ({}x the largest) with seed {} (sampler {}, {}x{})\n",
              spp, kAutoReferenceFactor, seed, ochre::kSamplerKinds.name(settings.sampler), settings.width,
              settings.height);
@@ -332,14 +343,17 @@ int converge_command(int argc, char** argv) {
   app.add_option("scene", cmd.scene, "Scene (JSON)")->required();
   app.add_option("--reference", cmd.reference,
                  "Reference EXR, or 'auto' (rendered here at 16x the largest spp)")
-      ->required();
+      ->required()
+      ->check(ochre::non_empty_path());
   app.add_option("--spp", cmd.spp, "Sample counts, e.g. 1,4,16,64")->delimiter(',')->required();
   app.add_option("--variant", cmd.variant_specs,
-                 "NAME:key=value,... with keys sampler, seed, threads, width, height, polarization, branches "
+                 "NAME:key=value,... with keys sampler, seed, threads, width, height, polarization, branches, "
+                 "noise_threshold (--spp is then the most a pixel takes) "
                  "(repeatable; default one variant 'base')");
-  app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds");
-  app.add_option("--plot", cmd.plot,
-                 "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)");
+  app.add_option("--csv", cmd.csv, "Write the rows variant,spp,seconds,relmse,rmse,relmse_x_seconds")
+      ->check(ochre::non_empty_path());
+  app.add_option("--plot", cmd.plot, "Write a log-log plot of relMSE against seconds (PNG, needs matplotlib)")
+      ->check(ochre::non_empty_path());
   auto* threads_opt = app.add_option("--threads", threads, "Render threads (default: the scene's)")
                           ->check(CLI::Range(0, 4096));  // as ochre render
   auto* seed_opt =

@@ -129,7 +129,7 @@ int diff_command(int argc, char** argv) {
   app.add_option("test", cmd.test, "Image to check (EXR)")->required();
   app.add_option("reference", cmd.reference, "Reference image (EXR)")->required();
   app.add_flag("--json", cmd.json, "Print the metrics as JSON");
-  app.add_option("--heatmap", cmd.heatmap, "Write an error heat-map PNG");
+  app.add_option("--heatmap", cmd.heatmap, "Write an error heat-map PNG")->check(ochre::non_empty_path());
   app.add_option("--heatmap-metric", cmd.heatmap_metric, "de00 (default) | luminance")
       ->check(CLI::IsMember({"de00", "luminance"}));
   auto* scale_opt =

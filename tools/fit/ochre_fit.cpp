@@ -30,7 +30,8 @@ int fit_command(int argc, char** argv) {
   CLI::App* powder =
       app.add_subcommand("powder", "The dry-powder BRDF (Gerardin, Martinetto and Holzschuch 2023)");
   CLI::Option* data =
-      powder->add_option("--data", fit.data, "Measurements: CSV theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf");
+      powder->add_option("--data", fit.data, "Measurements: CSV theta_i,phi_i,theta_o,phi_o,lambda_nm,brdf")
+          ->check(ochre::non_empty_path());
   CLI::Option* synthesize = powder->add_option(
       "--synthesize", synth.output, "Write synthetic measurements of known parameters to this CSV");
   data->excludes(synthesize);
@@ -64,9 +65,14 @@ int fit_command(int argc, char** argv) {
       ->capture_default_str()
       ->needs(data);
   powder->add_option("-o,--output", fit.material, "Write the fitted material (JSON scene with a preview)")
-      ->needs(data);
-  powder->add_option("--plot", fit.plot, "Plot of data and fit in the plane of incidence (PNG)")->needs(data);
-  powder->add_option("--csv", fit.csv, "Data, fit and residual per measurement (CSV)")->needs(data);
+      ->needs(data)
+      ->check(ochre::non_empty_path());
+  powder->add_option("--plot", fit.plot, "Plot of data and fit in the plane of incidence (PNG)")
+      ->needs(data)
+      ->check(ochre::non_empty_path());
+  powder->add_option("--csv", fit.csv, "Data, fit and residual per measurement (CSV)")
+      ->needs(data)
+      ->check(ochre::non_empty_path());
   powder->add_flag("-q,--quiet", fit.quiet, "No progress lines on stderr while fitting")->needs(data);
   powder
       ->add_option("--params", synth.params,
@@ -89,7 +95,8 @@ int fit_command(int argc, char** argv) {
       ->add_option("--geometry", synth.geometry,
                    "Synthesize at the geometries and wavelengths of this measurements CSV")
       ->excludes(lambda)
-      ->needs(synthesize);
+      ->needs(synthesize)
+      ->check(ochre::non_empty_path());
 
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   if (fit.data.empty() == synth.output.empty())

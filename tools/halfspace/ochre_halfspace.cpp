@@ -21,6 +21,8 @@
 #include <vector>
 
 #include "ochre/version.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/signal_cleanup.h"
 #include "spectra/input_error.h"
 #include "tools/cli/command_line.h"
 #include "tools/cli/program.h"
@@ -81,6 +83,9 @@ void write_row(std::ostream& out, double c, double mu_i, double mu_o, double phi
 
 int run(const HalfspaceCommand& cmd, const std::string& command_line) {
   check_grid(cmd);
+  // The output is checked before the simulation (a directory, a link, a device: refused with nothing done).
+  if (!cmd.output.empty()) ochre::check_output_writable(fs::path(cmd.output));
+  ochre::install_signal_cleanup();
   hs::SimulationOptions options;
   options.threads = cmd.threads;
   options.max_collisions = cmd.max_collisions;
@@ -122,14 +127,8 @@ int run(const HalfspaceCommand& cmd, const std::string& command_line) {
     std::cout << comments.str() << rows.str();
     return 0;
   }
-  // Written under a temporary name and renamed, so an interrupted run never leaves a partial table.
-  const fs::path final_path(cmd.output), temp_path = cmd.output + ".tmp";
-  {
-    std::ofstream file(temp_path);
-    file << comments.str() << rows.str();
-    if (!file.flush()) throw InputError("--output: cannot write " + temp_path.string());
-  }
-  fs::rename(temp_path, final_path);
+  // Written under a temporary name and renamed, as every output of ochre (docs/cli.md, "Output files").
+  ochre::write_text_file(fs::path(cmd.output), comments.str() + rows.str());
   return ochre::kExitDone;
 }
 

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 
 #include "renderer/scene/render_settings.h"
 #include "spectra/input_error.h"
+#include "tools/cli/duration.h"
 
 namespace ochre {
 
@@ -62,12 +64,26 @@ T number(const PartialSumsFile& checkpoint, const std::string& name) {
 }  // namespace
 
 void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
-                          const OutputSettings& out) {
+                          const OutputSettings& out, std::optional<double> interval,
+                          std::optional<double> seconds) {
   header.notes["ochre.checkpoint.target"] = format_sample_range(part.samples);
   header.notes["ochre.checkpoint.partialSums"] = std::string(split ? "1" : "0");
   header.notes["ochre.checkpoint.exr"] = absolute_or_empty(out.exr);
   header.notes["ochre.checkpoint.png"] = absolute_or_empty(out.png);
   header.notes["ochre.checkpoint.polarizationPng"] = absolute_or_empty(out.polarization_png);
+  header.notes["ochre.checkpoint.interval"] = interval ? fmt::format("{}s", *interval) : std::string();
+  if (seconds) header.notes["ochre.checkpoint.seconds"] = fmt::format("{:.3f}", *seconds);
+}
+
+std::optional<double> recorded_seconds(const PartialSumsHeader& header) {
+  const auto it = header.notes.find("ochre.checkpoint.seconds");
+  if (it == header.notes.end()) return std::nullopt;
+  const std::string& text = it->second;
+  double seconds = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(seconds) || seconds < 0.0)
+    return std::nullopt;
+  return seconds;
 }
 
 RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile& checkpoint) {
@@ -84,6 +100,22 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.width = h.image_width;
   r.overrides.height = h.image_height;
   r.overrides.sampler = choice(checkpoint, "ochre.sampler", kSamplerKinds);
+  r.overrides.noise_threshold = h.noise_threshold;
+  // A frame of a sequence: "K at F fps" (its outputs are already numbered in the notes).
+  if (const std::string& frame = field(checkpoint, "ochre.frame"); !frame.empty()) {
+    uint64_t number = 0;
+    double fps = 0.0;
+    const size_t at = frame.find(" at ");
+    const bool parsed = at != std::string::npos && frame.ends_with(" fps") &&
+                        std::from_chars(frame.data(), frame.data() + at, number).ptr == frame.data() + at &&
+                        std::from_chars(frame.data() + at + 4, frame.data() + frame.size() - 4, fps).ptr ==
+                            frame.data() + frame.size() - 4;
+    if (!parsed || number < 1 || !(fps > 0.0 && fps <= 10000.0))
+      throw InputError(fmt::format("{}: ochre.frame: expected 'K at F fps', got '{}'", file, frame));
+    r.still_frame = number;
+    r.fps = fps;
+    r.number_outputs = false;
+  }
   // The mode used, as chosen then (auto is recorded as the mode it chose).
   r.overrides.polarization = choice(checkpoint, "ochre.polarization", kPolarizationSettings);
   r.aovs = h.layers.aovs;
@@ -113,6 +145,15 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
     if (h.rect != PixelRect{0, 0, h.image_width, h.image_height}) r.region = h.rect;
   }
   if (r.checkpoint.empty()) r.checkpoint = file;
+  // The interval the render was started with, unless the command line sets one (checkpoints written
+  // before the note existed have none).
+  const auto interval = h.notes.find("ochre.checkpoint.interval");
+  if (!r.checkpoint_interval && interval != h.notes.end() && !interval->second.empty()) {
+    r.checkpoint_interval = parse_duration(interval->second);
+    if (!r.checkpoint_interval)
+      throw InputError(fmt::format("{}: ochre.checkpoint.interval: expected a duration, got '{}'", file,
+                                   interval->second));
+  }
   return r;
 }
 

@@ -4,6 +4,7 @@
 // render: the scene, its settings (the identity), the samples aimed at, the outputs.
 
 #include <filesystem>
+#include <optional>
 
 #include "renderer/output/partial_sums.h"
 #include "tools/ochre/render_command.h"
@@ -14,9 +15,18 @@ namespace ochre {
 struct OutputSettings;
 
 // Records the resume notes in a checkpoint's header: the samples aimed at (`part`), whether the outputs
-// are partial sums (`split`), the output paths (absolute).
+// are partial sums (`split`), the output paths (absolute), the checkpoint interval (seconds; none when
+// `interval` is empty), which a resumed render keeps unless its command line gives another, and the seconds
+// spent rendering the samples held, over every run that rendered them (none when unknown: a resumed
+// checkpoint that did not record them), from which ochre info and ochre-slurm --status estimate the time
+// left (docs/distributed.md).
 void add_checkpoint_notes(PartialSumsHeader& header, const RenderPart& part, bool split,
-                          const OutputSettings& out);
+                          const OutputSettings& out, std::optional<double> interval,
+                          std::optional<double> seconds);
+
+// The rendering seconds a checkpoint records (ochre.checkpoint.seconds); none when it records none or the
+// note is not a finite number >= 0.
+std::optional<double> recorded_seconds(const PartialSumsHeader& header);
 
 // The command a checkpoint continues: its scene (unless `given` names the scene at another path),
 // settings, layers and outputs, with what the resuming command line may set (outputs, display, threads,

@@ -197,6 +197,7 @@ RenderSettings merged_settings(const PartFields& part) {
   s.sample_begin = 0;
   s.seed = part.unsigned_integer("ochre.seed");
   s.sampler = part.choice("ochre.sampler", kSamplerKinds);
+  s.noise_threshold = h.noise_threshold;
   return s;
 }
 

@@ -1,4 +1,6 @@
 // ochre command line: `ochre render SCENE.json -o OUT.exr [--png OUT.png] ...` (docs/cli.md).
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <regex>
 #include <tuple>
@@ -10,10 +12,36 @@
 #include "tools/cli/duration.h"
 #include "tools/cli/program.h"
 #include "tools/ochre/frame_options.h"
+#include "tools/ochre/info_command.h"
 #include "tools/ochre/merge_command.h"
+#include "tools/ochre/relight_command.h"
 #include "tools/ochre/render_command.h"
 
 namespace {
+
+// --ocio-config, --display, --view and --exposure of the commands that write the display image of an
+// earlier render (merge, relight): each defaults to the render's.
+struct DisplayOverrides {
+  std::string ocio, display, view;
+  float exposure = 0.0f;
+  CLI::Option *ocio_opt = nullptr, *display_opt = nullptr, *view_opt = nullptr, *exposure_opt = nullptr;
+
+  void add_to(CLI::App* app) {
+    ocio_opt = app->add_option("--ocio-config", ocio, "OCIO config (default: the render's)");
+    display_opt = app->add_option("--display", display, "OCIO display (default: the render's)");
+    view_opt = app->add_option("--view", view, "OCIO view (default: the render's)");
+    exposure_opt =
+        app->add_option("--exposure", exposure, "Exposure of the display image (default: the render's)")
+            ->check(ochre::finite_range(-64.0, 64.0));
+  }
+  template <class Command>
+  void apply(Command& command) const {
+    if (*ocio_opt) command.ocio_config = ocio;
+    if (*display_opt) command.display = display;
+    if (*view_opt) command.view = view;
+    if (*exposure_opt) command.exposure = exposure;
+  }
+};
 
 // "WxH" -> width, height.
 bool parse_resolution(const std::string& text, int& width, int& height) {
@@ -55,13 +83,21 @@ int ochre_command(int argc, char** argv) {
       "moved");
   std::vector<std::string> defines;
   render->add_option("-D,--define", defines, "Mitsuba XML scenes: set parameter $NAME to VALUE (NAME=VALUE)");
-  render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)");
-  render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)");
+  render->add_option("-o,--output", cmd.exr, "Output EXR (linear working space)")
+      ->check(ochre::non_empty_path());
+  render->add_option("--png", cmd.png, "Output display PNG (through OpenColorIO)")
+      ->check(ochre::non_empty_path());
   auto* spp_opt = render->add_option("--spp", spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 24));
   auto* threads_opt =
       render->add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 4096));
   auto* seed_opt = render->add_option("--seed", seed, "Random seed")->check(ochre::unsigned_64_check());
   auto* res_opt = render->add_option("--resolution", resolution, "Film size WxH, e.g. 640x480");
+  double noise_threshold = 0.0;
+  auto* noise_opt = render
+                        ->add_option("--noise-threshold", noise_threshold,
+                                     "Sample each pixel until its relative standard error is at most E "
+                                     "(e.g. 0.01), --spp at most; 0 = off (docs/cli.md#noise-threshold)")
+                        ->check(ochre::finite_range(0.0, 1.0));
   auto* preset_opt = render->add_option("--preset", preset,
                                         "Named variant from the scene's \"presets\" (e.g. fast, final); the "
                                         "other options override it");
@@ -85,9 +121,11 @@ int ochre_command(int argc, char** argv) {
   render->add_flag("--stokes", cmd.stokes,
                    "Add Stokes layers S0..S3 (XYZ-weighted; per spectral bin with --spectral-bins), DoLP and "
                    "AoLP to the EXR (polarization mode stokes)");
-  render->add_option("--polarization-png", cmd.polarization_png,
-                     "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
-                     "polarization");
+  render
+      ->add_option("--polarization-png", cmd.polarization_png,
+                   "Write a false-colour PNG of the degree (brightness) and angle (hue) of linear "
+                   "polarization")
+      ->check(ochre::non_empty_path());
   std::string memory_limit;
   auto* memory_opt = render->add_option(
       "--memory-limit", memory_limit,
@@ -100,11 +138,11 @@ int ochre_command(int argc, char** argv) {
                          ->add_option("--frames", frames,
                                       "Render a sequence of N frames in which flames flicker, written as "
                                       "OUT.0001.exr ... (docs/cli.md#frame-sequences)")
-                         ->check(ochre::unsigned_64_check());
+                         ->check(ochre::unsigned_range_check(1, ochre::kMaxFrames));
   auto* first_frame_opt =
       render
           ->add_option("--first-frame", first_frame, "Number of the first frame of the sequence (default 1)")
-          ->check(ochre::unsigned_64_check());
+          ->check(ochre::unsigned_range_check(1, ochre::kMaxFrameNumber));
   auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
 
   std::string sample_range, part, region, tile;
@@ -120,45 +158,75 @@ int ochre_command(int argc, char** argv) {
           ->excludes(region_opt);
 
   std::string checkpoint_interval, time_limit;
-  render->add_option("--checkpoint", cmd.checkpoint,
-                     "Checkpoint file (default: beside the output, NAME.checkpoint.exr)");
+  render
+      ->add_option("--checkpoint", cmd.checkpoint,
+                   "Checkpoint file (default: beside the output, NAME.checkpoint.exr)")
+      ->check(ochre::non_empty_path());
   auto* interval_opt = render->add_option("--checkpoint-interval", checkpoint_interval,
                                           "Write a checkpoint every DURATION (e.g. 600, 10m, 1h30m)");
   auto* time_limit_opt =
       render->add_option("--time-limit", time_limit,
                          "Stop before DURATION has passed: image of the samples done, checkpoint, exit 3");
-  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds");
+  auto* resume_opt = render->add_option("--resume", cmd.resume, "Continue the render a checkpoint holds")
+                         ->check(ochre::non_empty_path());
   render->add_flag("--preview", cmd.preview, "Refresh the display PNG with each checkpoint");
+  auto* check_opt = render->add_flag(
+      "--check-settings", cmd.check_settings,
+      "Check the options against the scene's settings (no geometry, materials or lights are loaded), "
+      "print what would be rendered; render and write nothing");
 
   ochre::MergeCommand merge_cmd;
   CLI::App* merge = app.add_subcommand("merge", "Merge partial-sum files into the image of one render");
   merge->add_option("parts", merge_cmd.parts, "Partial-sum files (ochre render --sample-range/--region)")
       ->required();
-  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)");
-  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)");
-  merge->add_option("--sums", merge_cmd.sums,
-                    "Write the merged partial sums, to merge again with more parts");
+  merge->add_option("-o,--output", merge_cmd.exr, "Output EXR (as ochre render -o)")
+      ->check(ochre::non_empty_path());
+  merge->add_option("--png", merge_cmd.png, "Output display PNG (through OpenColorIO)")
+      ->check(ochre::non_empty_path());
+  merge->add_option("--sums", merge_cmd.sums, "Write the merged partial sums, to merge again with more parts")
+      ->check(ochre::non_empty_path());
   merge->add_flag("--partial", merge_cmd.partial, "Accept missing samples: a lower-sample image");
   merge->add_flag("--check", merge_cmd.check, "Only check the parts; list missing samples (exit 4 if any)");
   merge->add_flag("-q,--quiet", merge_cmd.quiet, "No report");
-  std::string merge_ocio, merge_display, merge_view, merge_memory;
-  float merge_exposure = 0.0f;
-  auto* merge_ocio_opt =
-      merge->add_option("--ocio-config", merge_ocio, "OCIO config (default: the render's)");
-  auto* merge_display_opt =
-      merge->add_option("--display", merge_display, "OCIO display (default: the render's)");
-  auto* merge_view_opt = merge->add_option("--view", merge_view, "OCIO view (default: the render's)");
-  auto* merge_exposure_opt = merge->add_option("--exposure", merge_exposure, "Exposure of the display image")
-                                 ->check(ochre::finite_range(-64.0, 64.0));
+  std::string merge_memory;
+  DisplayOverrides merge_display;
+  merge_display.add_to(merge);
   auto* merge_memory_opt = merge->add_option("--memory-limit", merge_memory, "As for ochre render");
+
+  ochre::RelightCommand relight_cmd;
+  CLI::App* relight = app.add_subcommand(
+      "relight", "Recombine a render's light groups with new intensities (docs/lights.md)");
+  relight->add_option("render", relight_cmd.render, "EXR of a render whose lights name groups")
+      ->required()
+      ->check(ochre::non_empty_path());
+  relight->add_option(
+      "--group", relight_cmd.groups,
+      "NAME:scale=S (times S), NAME:off or NAME:on; repeatable (the other groups: unchanged)");
+  relight->add_option("-o,--output", relight_cmd.exr, "Output EXR (the relit image and groups)")
+      ->check(ochre::non_empty_path());
+  relight->add_option("--png", relight_cmd.png, "Output display PNG (the render's display transform)")
+      ->check(ochre::non_empty_path());
+  relight->add_flag("-q,--quiet", relight_cmd.quiet, "No report");
+  DisplayOverrides relight_display;
+  relight_display.add_to(relight);
+
+  ochre::InfoCommand info_cmd;
+  CLI::App* info = app.add_subcommand(
+      "info",
+      "What partial-sum files and checkpoints hold: frame, pixels, samples, time left (headers only)");
+  info->add_option("parts", info_cmd.parts, "Partial-sum files or checkpoints")->required();
 
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
 
+  if (app.got_subcommand(info)) return ochre::run_info(info_cmd);
+
+  if (app.got_subcommand(relight)) {
+    relight_display.apply(relight_cmd);
+    return ochre::run_relight(relight_cmd);
+  }
+
   if (app.got_subcommand(merge)) {
-    if (*merge_ocio_opt) merge_cmd.ocio_config = merge_ocio;
-    if (*merge_display_opt) merge_cmd.display = merge_display;
-    if (*merge_view_opt) merge_cmd.view = merge_view;
-    if (*merge_exposure_opt) merge_cmd.exposure = merge_exposure;
+    merge_display.apply(merge_cmd);
     if (*merge_memory_opt) merge_cmd.memory_limit = parse_memory_limit(merge_memory);
     return ochre::run_merge(merge_cmd);
   }
@@ -169,6 +237,9 @@ int ochre_command(int argc, char** argv) {
       throw ochre::InputError(
           option->get_name() +
           ": expected a duration such as 90, 90s, 10m, 1h30m or 1.5h (at most a year), got '" + *text + "'");
+  if (*check_opt && *resume_opt)
+    throw ochre::InputError(
+        "--check-settings: not with --resume (a resumed render takes its settings from the checkpoint)");
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed :
@@ -200,6 +271,7 @@ int ochre_command(int argc, char** argv) {
     cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
   }
   if (*spp_opt) cmd.overrides.spp = spp;
+  if (*noise_opt) cmd.overrides.noise_threshold = noise_threshold;
   if (*threads_opt) cmd.overrides.threads = threads;
   if (*seed_opt) cmd.overrides.seed = seed;
   // CLI11 checked the names: the parses succeed.
@@ -221,17 +293,33 @@ int ochre_command(int argc, char** argv) {
       !error.empty())
     throw ochre::InputError(error);
   if (*frames_opt) {
-    // A sequence renders whole frames: each is its own image (split and checkpoint a single frame instead).
-    for (const CLI::Option* single :
-         {range_opt, part_opt, region_opt, tile_opt, interval_opt, time_limit_opt, resume_opt,
-          render->get_option("--checkpoint"), render->get_option("--preview")})
-      if (*single)
-        throw ochre::InputError(single->get_name() +
-                                ": not with --frames (a sequence renders whole frames; render one frame at a "
-                                "time to split or checkpoint it)");
-    cmd.frames = frames;
+    // A sequence renders whole frames; one frame of it may be split and checkpointed like a still.
+    const std::vector<const CLI::Option*> still_options = {range_opt,
+                                                           part_opt,
+                                                           region_opt,
+                                                           tile_opt,
+                                                           interval_opt,
+                                                           time_limit_opt,
+                                                           render->get_option("--checkpoint"),
+                                                           render->get_option("--preview")};
+    const CLI::Option* still = nullptr;
+    for (const CLI::Option* option : still_options)
+      if (*option && !still) still = option;
+    if (*resume_opt)
+      throw ochre::InputError("--frames: not with --resume (the checkpoint records the frame it renders)");
+    if (still && frames != 1)
+      throw ochre::InputError(fmt::format(
+          "{}: not with --frames {} (a sequence renders whole frames; split or checkpoint one frame at a "
+          "time: --frames 1 --first-frame K)",
+          still->get_name(), frames));
     cmd.first_frame = first_frame;
     cmd.fps = fps;
+    if (still) {
+      cmd.still_frame = first_frame;
+      cmd.number_outputs = true;
+    } else {
+      cmd.frames = frames;
+    }
   }
   if (*ocio_opt) cmd.ocio_config = ocio;
   if (*display_opt) cmd.display = display;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <new>
 #include <optional>
 
@@ -44,9 +45,12 @@ void print_summary(const Scene& scene, const RenderJob& job) {
   const std::string branches =
       s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel)", s.branches, s.spp * s.branches)
                      : "";
+  const std::string spp = s.noise_threshold > 0.0
+                              ? fmt::format("noise threshold {}, at most {} spp", s.noise_threshold, s.spp)
+                              : fmt::format("{} spp", s.spp);
   std::cerr << fmt::format(
-      "ochre: {}: {}x{}, {} spp{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
-      scene.file.filename().string(), s.width, s.height, s.spp, branches, s.max_depth, scene.meshes.size(),
+      "ochre: {}: {}x{}, {}{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
+      scene.file.filename().string(), s.width, s.height, spp, branches, s.max_depth, scene.meshes.size(),
       triangles, scene.lights.size(), s.seed, kSamplerKinds.name(s.sampler));
   std::cerr << fmt::format(
       "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
@@ -71,6 +75,43 @@ void print_stats(const RenderStats& stats) {
       stats.rays, stats.shadow_rays, stats.discarded, stats.nonfinite_values);
 }
 
+// Where a noise-threshold render put its samples: the mean per pixel and the share of pixels that stopped at
+// each decision point (the last one: at the maximum, not converged).
+void print_sample_counts(const Film& film, const RenderSettings& s) {
+  if (s.noise_threshold <= 0.0) return;
+  std::map<uint64_t, uint64_t> pixels_at;
+  uint64_t total = 0;
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      ++pixels_at[film.sample_count(x, y)];
+      total += film.sample_count(x, y);
+    }
+  const double pixels = static_cast<double>(film.width()) * film.height();
+  std::string shares;
+  for (const auto& [count, n] : pixels_at)
+    shares += fmt::format("{}{}{}: {:.1f} %", shares.empty() ? "" : ", ", count,
+                          count == s.spp ? " (the maximum)" : "", 100.0 * n / pixels);
+  std::cerr << fmt::format(
+      "ochre: noise threshold {}: {:.1f} samples per pixel on average (at most {}); "
+      "pixels by samples taken: {}\n",
+      s.noise_threshold, total / pixels, s.spp, shares);
+}
+
+// Samples the image does not hold as rendered: said even with -q (the image is not what the scene gives).
+void warn_about_lost_samples(const RenderStats& stats) {
+  if (stats.discarded > 0)
+    std::cerr << fmt::format(
+        "ochre: warning: {} of {} samples were NaN or infinite and count as zero (a radiance or emission "
+        "beyond "
+        "single precision?): the image is darker than the scene\n",
+        stats.discarded, stats.samples);
+  if (stats.clamped > 0)
+    std::cerr << fmt::format(
+        "ochre: warning: {} of {} samples exceeded the film's range and were clamped to {:g}: the image is "
+        "darker than the scene\n",
+        stats.clamped, stats.samples, kMaxSampleMagnitude);
+}
+
 // What the command was doing, for an out-of-memory report.
 struct Phase {
   const char* what = "loading the scene";
@@ -85,6 +126,13 @@ void apply_output_options(const RenderCommand& command, RenderJob& job) {
     // A part's display images are previews, written only when asked for: the scene's own paths are for the
     // final image, which `ochre merge` writes (with the Stokes layers a polarization PNG implies).
     if (!out.polarization_png.empty()) out.stokes = true;
+    out.png.clear();
+    out.polarization_png.clear();
+  }
+  // An output on the command line decides where every output goes (as pbrt's --outfile): the scene's own
+  // output paths apply only when none is given (docs/cli.md, "Output files").
+  if (!command.exr.empty() || !command.png.empty() || !command.polarization_png.empty()) {
+    out.exr.clear();
     out.png.clear();
     out.polarization_png.clear();
   }
@@ -124,7 +172,11 @@ RenderStats render_and_write(const RenderCommand& command, const Scene& scene, c
     if (progress) progress->advance(done);
   });
   if (progress) progress->finish();
-  if (!command.quiet) print_stats(stats);
+  if (!command.quiet) {
+    print_stats(stats);
+    print_sample_counts(film, job.settings);
+  }
+  warn_about_lost_samples(stats);
 
   phase = {"writing the outputs", true};
   for (const std::string& line : write_outputs(film, out, s, stats, scene.file.string()))
@@ -179,14 +231,23 @@ struct Checkpointing {
   std::string content_hash;
   RenderPart part;
   bool split = false;
-  bool preview = false;  // refresh the display PNG with each checkpoint
+  bool preview = false;            // refresh the display PNG with each checkpoint
+  std::optional<double> interval;  // --checkpoint-interval, recorded for --resume
   OutputSettings out;
+  // The rendering seconds of the samples a resumed checkpoint held (0 for a new render; none when it did not
+  // record them): the checkpoints record the total.
+  std::optional<double> earlier_seconds = 0.0;
   uint32_t written_at = UINT32_MAX;  // the sample the last checkpoint written ends at
+
+  // The rendering seconds of the samples held after this run's `stats`.
+  std::optional<double> seconds(const RenderStats& stats) const {
+    return earlier_seconds ? std::optional<double>(*earlier_seconds + stats.seconds) : std::nullopt;
+  }
 
   // Writes the checkpoint of samples [part.samples.begin, next) (and the preview) atomically.
   void write(const Film& film, uint32_t next, const RenderStats& stats) {
     PartialSumsHeader header = partial_header(*scene, *job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, split, out);
+    add_checkpoint_notes(header, part, split, out, interval, seconds(stats));
     OutputTransaction transaction;
     write_partial_sums(transaction.add(path), header, film);
     if (preview && !out.png.empty()) {
@@ -200,7 +261,29 @@ struct Checkpointing {
   }
 };
 
+// --check-settings: what the render would be, from the scene's settings alone (docs/cli.md). The checks are
+// those of a render before its first sample that need no geometry: the options and settings (the split
+// against the resolution and samples, a noise threshold against --part).
+int check_settings_only(const RenderCommand& command) {
+  const RenderJob job = load_render_job(command.scene, command.overrides);
+  const RenderSettings& s = job.settings;
+  const RenderPart part = select_part(command, s);
+  std::string line = fmt::format("{}: {}x{}, {} spp, noise threshold {}", command.scene, s.width, s.height,
+                                 s.spp, s.noise_threshold);
+  if (command.still_frame)
+    line += fmt::format(", frame {} at {} fps", *command.still_frame, command.fps);
+  else if (command.frames)
+    line += fmt::format(", frames {} to {} at {} fps", command.first_frame,
+                        command.first_frame + *command.frames - 1, command.fps);
+  if (command.split())
+    line += fmt::format(", samples {} of region {} (partial sums)", format_sample_range(part.samples),
+                        format_pixel_rect(part.rect));
+  std::cout << line << "\n";
+  return 0;
+}
+
 int render_scene(const RenderCommand& given, Phase& phase) {
+  if (given.check_settings) return check_settings_only(given);
   const auto start = std::chrono::steady_clock::now();
   // A resumed render takes its scene, settings and outputs from the checkpoint.
   std::optional<PartialSumsFile> resumed;
@@ -225,6 +308,13 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     apply_output_options(command, job);
   }
   if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
+  if (command.still_frame) {
+    // One frame of a sequence, rendered like a still (the frame is part of the render's identity).
+    job.settings.frame = *command.still_frame;
+    job.settings.fps = command.fps;
+    scene->set_frame(*command.still_frame - 1, command.fps, job.settings.seed);
+    if (command.number_outputs) job.outputs = frame_outputs(job.outputs, *command.still_frame);
+  }
   if (resumed) check_resumable(*resumed, render_identity(*scene, job, content_hash));
   const RenderPart part = select_part(command, job.settings);
   OutputSettings out = job.outputs;
@@ -236,7 +326,9 @@ int render_scene(const RenderCommand& given, Phase& phase) {
       part,
       command.split(),
       command.preview,
-      out};
+      command.checkpoint_interval,
+      out,
+      resumed ? recorded_seconds(resumed->header()) : std::optional<double>(0.0)};
   std::vector<std::filesystem::path> paths;
   for (const std::string& path : output_paths(out)) paths.emplace_back(path);
   if (command.checkpointing()) {
@@ -320,15 +412,27 @@ int render_scene(const RenderCommand& given, Phase& phase) {
   }
   if (progress && stop == PassStop::finished) progress->finish();
   progress.reset();
-  if (!command.quiet) print_stats(stats);
+  if (!command.quiet) {
+    print_stats(stats);
+    print_sample_counts(film, job.settings);
+  }
+  warn_about_lost_samples(stats);
 
+  if (stop == PassStop::deadline && next == first) {
+    // Not one sample finished: an image of no samples would replace the outputs with black.
+    std::cerr << fmt::format(
+        "ochre: time limit reached before any sample finished; nothing written{}\n",
+        resumed ? " (the checkpoint keeps what it held)" : " (existing outputs are kept)");
+    return kExitTimeLimit;
+  }
   phase = {"writing the outputs", true};
   OutputTransaction transaction;
   std::vector<std::string> written;
   if (stop == PassStop::deadline) {
     // The time limit: the image of the samples done (a split part's partial sums are its checkpoint).
     PartialSumsHeader header = partial_header(*scene, job, content_hash, part, next, stats);
-    add_checkpoint_notes(header, part, command.split(), out);
+    add_checkpoint_notes(header, part, command.split(), out, command.checkpoint_interval,
+                         checkpoints.seconds(stats));
     const auto write_start = std::chrono::steady_clock::now();
     write_partial_sums(transaction.add(checkpoints.path), header, film);
     written.push_back(fmt::format("wrote {} (checkpoint: samples {}:{} of {}, {:.2f} s)",

@@ -50,6 +50,15 @@ struct RenderCommand {
   std::optional<std::uint64_t> frames;
   std::uint64_t first_frame = 1;
   double fps = 24.0;
+  // One frame of a sequence rendered like a still, so that it can be split and checkpointed (`--frames 1
+  // --first-frame K` with a split or checkpoint option; a resumed frame): frame `still_frame` at `fps`.
+  // `number_outputs` inserts the frame number into the output names as a sequence does (a resumed render
+  // has the numbered names from its checkpoint).
+  std::optional<std::uint64_t> still_frame;
+  bool number_outputs = false;
+  // --check-settings: check the command line against the scene's settings (load_render_job: no geometry,
+  // materials or lights), print what would be rendered, render and write nothing (docs/cli.md).
+  bool check_settings = false;
 };
 
 int run_render(const RenderCommand& command);

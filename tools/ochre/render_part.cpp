@@ -13,6 +13,11 @@ namespace ochre {
 
 RenderPart select_part(const RenderCommand& command, const RenderSettings& s) {
   RenderPart part{{0, 0, s.width, s.height}, {0, s.spp}};
+  if (s.noise_threshold > 0.0 && (command.part || command.sample_range))
+    throw InputError(fmt::format(
+        "{}: {} cannot split a noise-threshold render (--noise-threshold or integrator.noise_threshold {}): "
+        "each pixel decides from all of its samples when to stop; split it by pixels with --tile or --region",
+        command.scene, command.part ? "--part" : "--sample-range", s.noise_threshold));
   if (command.part) {
     const auto [index, count] = *command.part;
     if (count > s.spp)

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_ochre, m) {
   ochre::python::register_scene(m);
   ochre::python::register_material(m);
   ochre::python::register_colour(m);
+  ochre::python::register_relight(m);
 }

@@ -345,16 +345,7 @@ void register_colour(py::module_& m) {
       py::arg("view") = py::str(""), py::arg("exposure") = py::float_(0.0),
       "8-bit display RGB (height, width, 3) of linear RGB through OpenColorIO, as ochre render --png");
   m.def(
-      "read_exr",
-      [](const py::object& path) {
-        const ExrImage image = read_exr(path_argument(path, "path"));
-        py::dict channels;
-        for (const auto& [name, values] : image.channels)
-          channels[text(name)] = float_array(values, {image.height, image.width});
-        py::dict attributes;
-        for (const auto& [key, value] : image.string_attributes) attributes[text(key)] = text(value);
-        return py::make_tuple(channels, attributes);
-      },
+      "read_exr", [](const py::object& path) { return exr_to_python(read_exr(path_argument(path, "path"))); },
       py::arg("path"),
       "(channels, attributes): every channel as (height, width) float32, and the string attributes");
 }

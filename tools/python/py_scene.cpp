@@ -159,6 +159,7 @@ class RenderResult {
     d["rays"] = stats_.rays;
     d["shadow_rays"] = stats_.shadow_rays;
     d["discarded"] = stats_.discarded;
+    d["clamped"] = stats_.clamped;
     d["nonfinite_values"] = stats_.nonfinite_values;
     d["threads"] = stats_.threads;
     d["samples_per_second"] = stats_.samples_per_second();
@@ -246,6 +247,7 @@ class PyScene {
     layers.spectral_bins = o.spectral_bins;
     layers.spectral_min = o.spectral_range.first;
     layers.spectral_max = o.spectral_range.second;
+    layers.light_groups = scene.light_groups;  // docs/lights.md, "Light groups"
     // The film and the EXR's channels must fit in memory, as for `ochre render` (docs/cli.md, "Memory").
     OutputSettings estimate = job.outputs;
     estimate.exr = "<RenderResult>";

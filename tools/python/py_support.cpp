@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "materials/graph/graph_error.h"
+#include "renderer/image/exr_writer.h"
 #include "renderer/util/image_error.h"
 #include "spectra/input_error.h"
 
@@ -456,6 +457,15 @@ py::array_t<float> float_array(const std::vector<float>& values, const std::vect
   return a;
 }
 
+py::tuple exr_to_python(const ExrImage& image) {
+  py::dict channels;
+  for (const auto& [name, values] : image.channels)
+    channels[py::str(name)] = float_array(values, {image.height, image.width});
+  py::dict attributes;
+  for (const auto& [key, value] : image.string_attributes) attributes[py::str(key)] = value;
+  return py::make_tuple(channels, attributes);
+}
+
 void register_errors(py::module_& m) {
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   input_error.doc() =
@@ -466,15 +476,16 @@ void register_errors(py::module_& m) {
   m.def(
       "_describe", [](const py::object& value) { return describe(value); }, py::arg("value"),
       "What an error message says a value is (\"str 'x'\", \"int 5\", \"list\")");
+  // Messages are cut like the command line's (message_excerpt): a file's 50 MB value is not quoted whole.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const GraphError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     } catch (const ImageError& e) {
-      input_error(e.what());
+      input_error(message_excerpt(e.what()).c_str());
     }
   });
 }

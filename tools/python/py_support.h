@@ -14,6 +14,10 @@
 #include <string>
 #include <vector>
 
+namespace ochre {
+struct ExrImage;
+}
+
 namespace ochre::python {
 
 namespace py = pybind11;
@@ -77,11 +81,16 @@ py::array_t<double, py::array::c_style | py::array::forcecast> vector_of(const p
 // A new float32 numpy array of `shape` holding `values` (copied).
 py::array_t<float> float_array(const std::vector<float>& values, const std::vector<py::ssize_t>& shape);
 
+// (channels, attributes) of an image as ochre.read_exr returns them: every channel as (height, width)
+// float32, the string attributes as str.
+py::tuple exr_to_python(const ExrImage& image);
+
 // Registers ochre.InputError; ochre's InputError, GraphError and ImageError raise it.
 void register_errors(py::module_& m);
 
 void register_scene(py::module_& m);
 void register_material(py::module_& m);
 void register_colour(py::module_& m);
+void register_relight(py::module_& m);
 
 }  // namespace ochre::python

@@ -298,7 +298,7 @@ int regress_command(int argc, char** argv) {
   app.add_option("dir", cmd.dir, "Folder of *.json scenes with references/<name>.exr")->required();
   app.add_flag("--update", cmd.update,
                "Render the references (16 x the scene's spp, seed 1000 + scene seed)");
-  app.add_option("--junit", cmd.junit, "Write a JUnit XML report");
+  app.add_option("--junit", cmd.junit, "Write a JUnit XML report")->check(ochre::non_empty_path());
   app.add_option("--spp", cmd.spp, "Samples per pixel of the test renders (default: the scene's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--reference-spp", cmd.reference_spp, "Samples per pixel of the references (with --update)")
@@ -307,14 +307,17 @@ int regress_command(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--scene", cmd.only, "Run only this scene (file name without .json; repeatable)");
   app.add_option("--output-dir", cmd.output_dir, "Where failing scenes' renders and p-value images go")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(ochre::non_empty_path());
   auto* html = app.add_option("--html", cmd.html,
                               "Write a static HTML report into this directory (replaced as a whole; "
-                              "only an earlier report or an empty directory is replaced)");
+                              "only an earlier report or an empty directory is replaced)")
+                   ->check(ochre::non_empty_path());
   app.add_option("--history", cmd.history,
                  "Earlier runs for the report's history: JUnit files, report directories or directories of "
                  "JUnit files (oldest first)")
-      ->needs(html);
+      ->needs(html)
+      ->check(ochre::non_empty_path());
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
   ochre::install_signal_cleanup();
   return run(cmd);

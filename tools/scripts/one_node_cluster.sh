@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # one_node_cluster.sh: a throw-away Slurm cluster of one node on 127.0.0.1, started and stopped from a
-# script (no systemd), for the Slurm tests of ochre (tests/slurm) and for trying tools/scripts/ochre-slurm.
+# script (no systemd), for the Slurm tests of ochre (tests/cli/slurm) and for trying tools/scripts/ochre-slurm.
 # Debian 12 packages: slurmctld slurmd slurm-client munge (tools/setup.sh installs them).
 #
 #   one_node_cluster.sh -d DIR start      write DIR/etc/slurm.conf, start munged, slurmctld, slurmd

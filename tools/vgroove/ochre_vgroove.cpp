@@ -81,8 +81,11 @@ int vgroove_command(int argc, char** argv) {
   maps_cmd->add_option("--alpha", maps.alphas, "Dihedral angles (degrees), comma list")->required();
   maps_cmd->add_option("--model", maps.models, "Comma list of models")->capture_default_str();
   maps_cmd->add_option("--size", maps.size, "Map width and height (pixels)")->capture_default_str();
-  maps_cmd->add_option("-o,--output", maps.output, "Colour map PNG")->required();
-  maps_cmd->add_option("--counts", maps.counts, "Also write the reflection-count map (PNG)");
+  maps_cmd->add_option("-o,--output", maps.output, "Colour map PNG")
+      ->required()
+      ->check(ochre::non_empty_path());
+  maps_cmd->add_option("--counts", maps.counts, "Also write the reflection-count map (PNG)")
+      ->check(ochre::non_empty_path());
   maps_cmd->add_flag("--grid", maps.grid, "Labelled figure (implied by several materials, alphas or models)");
 
   ochre::ProfileArgs profile;
@@ -91,8 +94,11 @@ int vgroove_command(int argc, char** argv) {
   profile_cmd->add_option("--alpha", profile.alpha, "Dihedral angle (degrees)")->required();
   profile_cmd->add_option("--model", profile.models, "Comma list of models")->capture_default_str();
   profile_cmd->add_option("--step", profile.step, "Theta step (degrees)")->capture_default_str();
-  profile_cmd->add_option("-o,--output", profile.output, "CSV: phi_deg,theta_deg,model,L")->required();
-  profile_cmd->add_option("--png", profile.png, "Also plot it (PNG, needs matplotlib)");
+  profile_cmd->add_option("-o,--output", profile.output, "CSV: phi_deg,theta_deg,model,L")
+      ->required()
+      ->check(ochre::non_empty_path());
+  profile_cmd->add_option("--png", profile.png, "Also plot it (PNG, needs matplotlib)")
+      ->check(ochre::non_empty_path());
 
   ochre::CompareArgs compare;
   CLI::App* compare_cmd = app.add_subcommand(
@@ -115,7 +121,8 @@ int vgroove_command(int argc, char** argv) {
       ->check(ochre::unsigned_64_check());
   compare_cmd->add_option("--threads", compare.threads, "Render threads (0 = all cores)")
       ->capture_default_str();
-  compare_cmd->add_option("--scene-dir", compare.scene_dir, "Keep the scenes rendered in this directory");
+  compare_cmd->add_option("--scene-dir", compare.scene_dir, "Keep the scenes rendered in this directory")
+      ->check(ochre::non_empty_path());
   compare_cmd->add_flag("--csv", compare.csv, "CSV instead of aligned text (notes and summary on stderr)");
 
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version

@@ -6,7 +6,7 @@
 //   f1 = c p(-wi.wo) / (mu_i + mu_o), p the exact LS phase function               (Eq 17)
 //   f_m^(k) = f^(k) - f1^(k): the three-term half-space mode minus its own single scattering.
 //
-// Errata applied (evidence in docs/materials/lambert_sphere.md and tests/lambert_sphere):
+// Errata applied (evidence in docs/materials/lambert_sphere.md and tests/materials/lobes/lambert_sphere):
 // - Eq 34: f1^(1) = c (45 mu_i mu_o + 64) S / (192 pi (mu_i + mu_o)) (printed: 384 pi);
 // - Eq 27: f^(1) prefactor c H1 H1 / (3 pi (mu_i + mu_o)) (printed: 6 pi);
 // - Eqs 28-30: H1(mu; c) = exp(ln H1(1; c) mu^q(mu)) with Eq 30's ln H1(1; c) and Eq 29's q.

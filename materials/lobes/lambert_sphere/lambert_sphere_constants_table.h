@@ -3,7 +3,7 @@
 // interpolated linearly. A shading point builds them for each hero wavelength; computed directly that is four
 // pow() calls per wavelength, about half the cost of an LS lobe in a render. In s (not c) every constant is
 // smooth up to c = 1, where several behave like sqrt(1 - c); the largest relative error of an interpolated
-// constant is below 1e-4 (tests/lambert_sphere/constants_table_test.cpp).
+// constant is below 1e-4 (tests/materials/lobes/lambert_sphere/constants_table_test.cpp).
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 

@@ -13,7 +13,8 @@ PowderLobe::PowderLobe(const std::array<PowderParams<float>, kSpectrumSamples>& 
     : params_(params), wavelengths_(wavelengths), strategy_(strategy) {}
 
 // noinline: GCC 12 at -O3 miscompiles this loop once inlined into sample() (every weight 0; correct with
-// -fno-tree-pre, at -O2, with clang 14, or out of line); tests/powder checks every sampled weight.
+// -fno-tree-pre, at -O2, with clang 14, or out of line); tests/materials/lobes/powder checks every sampled
+// weight.
 __attribute__((noinline)) SampledSpectrum PowderLobe::eval(const Vec3& wo, const Vec3& wi,
                                                            const SampledWavelengths&) const {
   SampledSpectrum f;

@@ -16,6 +16,11 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 15;  // as Mitsuba 3
 constexpr int kMaxNesting = 100;      // elements within elements: scenes use a handful; bounds the recursion
+// Parameter substitution is bounded: defaults that expand each other ($b = "$a$a$a$a", $c = "$b$b$b$b", ...)
+// grow exponentially (a 673-byte file became 53 MB, one level more 2 GB). An attribute may not grow beyond
+// kMaxSubstitutedAttribute by substitution, nor the document's attributes beyond kMaxSubstitutedTotal in all.
+constexpr size_t kMaxSubstitutedAttribute = size_t(1) << 20;
+constexpr size_t kMaxSubstitutedTotal = size_t(64) << 20;
 
 // One file's text, for line numbers of elements and of syntax errors.
 struct SourceFile {
@@ -163,9 +168,19 @@ class XmlReader {
                         text.substr(i + 1, end - i - 1)));
       }
       match->used = true;
+      if (result.size() + match->value.size() > kMaxSubstitutedAttribute)
+        fail_at_element(element, fmt::format("parameter substitution makes an attribute longer than {} bytes "
+                                             "(\"${}\" and the parameters it names expand each other?)",
+                                             kMaxSubstitutedAttribute, match->name));
       result += match->value;
       i += match->name.size();
     }
+    substituted_bytes_ += result.size();
+    if (substituted_bytes_ > kMaxSubstitutedTotal)
+      fail_at_element(element,
+                      fmt::format("parameter substitution makes the scene's attributes longer than {} "
+                                  "bytes in all",
+                                  kMaxSubstitutedTotal));
     return result;
   }
 
@@ -282,6 +297,7 @@ class XmlReader {
   std::vector<std::unique_ptr<pugi::xml_document>> documents_;
   std::vector<std::filesystem::path> include_stack_;
   int nesting_ = 0;
+  size_t substituted_bytes_ = 0;  // attribute bytes after substitution, for kMaxSubstitutedTotal
 };
 
 void register_ids(const MitsubaElement& element, MitsubaDocument& document) {

@@ -5,6 +5,7 @@ Scenes:    load_scene(path_or_dict, spp=..., resolution=..., ...) -> Scene; Scen
 Materials: material(dict_or_path) -> Material with eval, mueller, sample, albedo over numpy arrays
 Colour:    Spectrum (named, blackbody, from_csv, from_rgb, tables) with to_xyz, to_lab, to_rgb;
            xyz_to_lab, ciede2000, image_metrics, to_display, read_exr
+Lighting:  relight(render_exr, groups={"torch": 0.5, "lamp": "off"}, exr=..., png=...), as ochre relight
 Errors:    InputError (a ValueError) names the argument, or the file and the field, as the command line does;
            a value of the wrong type raises TypeError naming the argument (docs/python.md, "Errors")
 """
@@ -21,6 +22,7 @@ from ._ochre import (  # noqa: F401  (the public API)
     load_scene,
     mitsuba_to_json,
     read_exr,
+    relight,
     to_display,
     xyz_to_lab,
 )

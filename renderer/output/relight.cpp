@@ -1,0 +1,205 @@
+#include "renderer/output/relight.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "renderer/output/output_files.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/image_error.h"
+#include "renderer/util/output_transaction.h"
+#include "spectra/input_error.h"
+#include "spectra/input_file.h"
+
+namespace ochre {
+
+namespace {
+
+std::vector<std::string> split(std::string_view text, char separator) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t end; (end = text.find(separator, start)) != std::string_view::npos; start = end + 1)
+    parts.emplace_back(text.substr(start, end - start));
+  parts.emplace_back(text.substr(start));
+  return parts;
+}
+
+bool kept_without_change(const std::string& channel) {
+  for (const char* prefix : {"albedo.", "normal.", "depth.", "samples."})
+    if (channel.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+double attribute_number(const ExrImage& image, const std::string& file, const char* name, double lo,
+                        double hi, double fallback) {
+  const auto it = image.string_attributes.find(name);
+  if (it == image.string_attributes.end()) return fallback;
+  const std::string& text = it->second;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !(value >= lo && value <= hi))
+    throw InputError(
+        fmt::format("{}: {}: expected a number in [{}, {}], got '{}'", file, name, lo, hi, text));
+  return value;
+}
+
+}  // namespace
+
+GroupChange parse_group_change(std::string_view text) {
+  const size_t colon = text.find(':');
+  GroupChange change;
+  change.group = std::string(text.substr(0, colon));
+  if (change.group.empty() || colon == std::string_view::npos)
+    throw InputError(fmt::format("--group '{}': expected NAME:scale=S, NAME:off or NAME:on", text));
+  for (const std::string& item : split(text.substr(colon + 1), ',')) {
+    if (item == "off") {
+      change.scale = 0.0;
+      continue;
+    }
+    if (item == "on") continue;
+    const size_t equals = item.find('=');
+    const std::string key = item.substr(0, equals);
+    const std::string value = equals == std::string::npos ? "" : item.substr(equals + 1);
+    if (key == "scale") {
+      double scale = -1.0;
+      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), scale);
+      if (error != std::errc() || end != value.data() + value.size() || !std::isfinite(scale) || scale < 0.0)
+        throw InputError(
+            fmt::format("--group '{}': scale must be a finite number >= 0, got '{}'", text, value));
+      change.scale *= scale;
+    } else if (key == "cct" || key == "spectrum" || key == "blackbody") {
+      throw InputError(fmt::format(
+          "--group '{}': {} changes the group's spectrum, which needs the group's spectral layers; light "
+          "groups hold R, G, B only, in which an emission spectrum does not divide out (docs/lights.md, "
+          "\"Relighting\"): change the scene and render again",
+          text, key));
+    } else {
+      throw InputError(
+          fmt::format("--group '{}': unknown change '{}' (known: scale=S, off, on)", text, item));
+    }
+  }
+  return change;
+}
+
+ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes, const std::string& file) {
+  const auto listed = image.string_attributes.find("ochre.lightGroups");
+  if (listed == image.string_attributes.end() || listed->second.empty())
+    throw InputError(
+        fmt::format("{}: has no light groups (attribute ochre.lightGroups): render a scene whose "
+                    "lights name groups (docs/lights.md, \"Light groups\")",
+                    file));
+  const std::vector<std::string> groups = split(listed->second, ',');
+  std::map<std::string, double> scale;
+  for (const std::string& g : groups) scale[g] = 1.0;
+  std::map<std::string, int> named;
+  for (const GroupChange& c : changes) {
+    if (!scale.count(c.group))
+      throw InputError(fmt::format("{}: no light group '{}' (the render has: {})", file, c.group,
+                                   fmt::join(groups, ", ")));
+    if (named[c.group]++) throw InputError(fmt::format("--group {}: given twice", c.group));
+    scale[c.group] = c.scale;
+  }
+  const size_t n = static_cast<size_t>(image.width) * image.height;
+  ExrImage out;
+  out.width = image.width;
+  out.height = image.height;
+  out.chromaticities = image.chromaticities;
+  out.string_attributes = image.string_attributes;
+  std::array<std::vector<float>, 3> rgb{std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f),
+                                        std::vector<float>(n, 0.0f)};
+  for (const std::string& g : groups)
+    for (int c = 0; c < 3; ++c) {
+      const std::string name = fmt::format("group.{}.{}", g, "RGB"[c]);
+      const std::vector<float>* layer = image.find_channel(name);
+      if (!layer || layer->size() != n)
+        throw InputError(
+            fmt::format("{}: channel {} missing (ochre.lightGroups lists group '{}')", file, name, g));
+      std::vector<float> scaled(n);
+      for (size_t i = 0; i < n; ++i) {
+        scaled[i] = static_cast<float>(scale[g] * (*layer)[i]);
+        rgb[c][i] += scaled[i];
+      }
+      out.channels.emplace_back(name, std::move(scaled));
+    }
+  for (int c = 0; c < 3; ++c) out.channels.emplace_back(std::string(1, "RGB"[c]), std::move(rgb[c]));
+  for (const auto& [name, values] : image.channels)
+    if (kept_without_change(name)) out.channels.emplace_back(name, values);
+  std::string applied;
+  for (const std::string& g : groups)
+    applied += fmt::format("{}{}:scale={}", applied.empty() ? "" : " ", g, scale[g]);
+  out.string_attributes["ochre.relight"] = applied;
+  return out;
+}
+
+DisplayOptions recorded_display(const ExrImage& image, const std::string& file) {
+  DisplayOptions d;
+  const auto text = [&](const char* name) {
+    const auto it = image.string_attributes.find(name);
+    return it == image.string_attributes.end() ? std::string() : it->second;
+  };
+  d.ocio_config = text("ochre.display.ocioConfig");
+  d.display = text("ochre.display.display");
+  d.view = text("ochre.display.view");
+  d.working_space = text("ochre.colorspace").empty() ? "rec709" : text("ochre.colorspace");
+  d.exposure_stops =
+      static_cast<float>(attribute_number(image, file, "ochre.display.exposure", -64, 64, 0.0));
+  if (const std::string wb = text("ochre.display.whiteBalance"); !wb.empty()) {
+    const std::vector<std::string> parts = split(wb, ' ');
+    std::array<double, 3> xyz{};
+    bool valid = parts.size() == 3;
+    for (size_t k = 0; valid && k < 3; ++k) {
+      const auto [end, error] = std::from_chars(parts[k].data(), parts[k].data() + parts[k].size(), xyz[k]);
+      valid =
+          error == std::errc() && end == parts[k].data() + parts[k].size() && xyz[k] > 0.0 && xyz[k] < 1e6;
+    }
+    if (!valid)
+      throw InputError(
+          fmt::format("{}: ochre.display.whiteBalance: expected three positive numbers, got '{}'", file, wb));
+    d.white_balance_xyz = xyz;
+  }
+  return d;
+}
+
+std::vector<std::string> write_relit(const ExrImage& relit, const DisplayOptions& display,
+                                     const std::string& exr, const std::string& png,
+                                     const InputFileLog& inputs) {
+  if (exr.empty() && png.empty()) throw InputError("relight: no output: give an EXR and/or a PNG path");
+  std::vector<std::filesystem::path> paths;
+  std::vector<std::uint8_t> pixels;
+  try {
+    for (const std::string& path : {exr, png})
+      if (!path.empty()) {
+        check_output_writable(path);
+        paths.emplace_back(path);
+      }
+    if (!png.empty()) {
+      std::vector<float> rgb(static_cast<size_t>(relit.width) * relit.height * 3);
+      for (int c = 0; c < 3; ++c) {
+        const std::vector<float>& channel = *relit.find_channel(std::string(1, "RGB"[c]));
+        for (size_t i = 0; i < channel.size(); ++i) rgb[i * 3 + c] = channel[i];
+      }
+      pixels = to_display_rgb8(relit.width, relit.height, rgb, display);
+    }
+  } catch (const ImageError& e) {
+    throw InputError(e.what());
+  }
+  check_output_files(paths, inputs);
+  OutputTransaction transaction;
+  std::vector<std::string> written;
+  if (!exr.empty()) {
+    write_exr(transaction.add(exr), relit);
+    written.push_back("wrote " + exr);
+  }
+  if (!png.empty()) {
+    write_rgb8(transaction.add(png), "png", relit.width, relit.height, pixels, "relit display image");
+    written.push_back("wrote " + png);
+  }
+  transaction.commit();
+  return written;
+}
+
+}  // namespace ochre

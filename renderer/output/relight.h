@@ -1,0 +1,46 @@
+#pragma once
+// Relighting a render from its light groups (docs/lights.md, "Relighting"): the image is the sum of its
+// groups' layers, so a new intensity of a group is a new weight in that sum. `ochre relight` and the Python
+// module call this.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "renderer/image/display_image.h"
+#include "renderer/image/exr_writer.h"
+
+namespace ochre {
+
+class InputFileLog;
+
+// One --group of `ochre relight`: the group's layers times `scale` (0: off).
+struct GroupChange {
+  std::string group;
+  double scale = 1.0;
+};
+
+// "NAME:scale=S" (S finite, >= 0), "NAME:off", "NAME:on" (scale 1). A change of spectrum ("cct=",
+// "spectrum=") is refused: the groups hold R, G, B, in which an emission spectrum does not divide out.
+// InputError naming the text otherwise.
+GroupChange parse_group_change(std::string_view text);
+
+// The render `image` (read from `file`, for messages) relit: R, G, B are the sum of the groups' layers, each
+// times its change's scale (1 for a group no change names), and the groups' layers are scaled alike. Layers
+// that do not depend on the light (albedo, normal, depth, samples) are kept; Stokes and spectral layers,
+// which the groups do not split, are left out. InputError naming the file when it has no light groups, a
+// change names a group it does not have (listing those it has) or names one twice.
+ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes, const std::string& file);
+
+// The display transform the render recorded (ochre.display.* attributes; the defaults where absent).
+DisplayOptions recorded_display(const ExrImage& image, const std::string& file);
+
+// Writes the relit image: the EXR `exr` and the display image `png` through `display` (either may be
+// empty), all or nothing. Checks first that each output can be written and replaces none of `inputs`
+// (InputError naming it; the display transform is built before anything is written). Returns the lines
+// that report what was written.
+std::vector<std::string> write_relit(const ExrImage& relit, const DisplayOptions& display,
+                                     const std::string& exr, const std::string& png,
+                                     const InputFileLog& inputs);
+
+}  // namespace ochre

@@ -1,0 +1,68 @@
+"""ochre.relight (docs/python.md, "Relighting"): the call of `ochre relight`, with its checks."""
+
+import os
+import subprocess
+import tempfile
+import unittest
+
+import numpy as np
+
+import ochre
+
+SCENE = """{
+  "camera": {"eye": [0, 1, 4], "target": [0, 1, 0], "fov": 50},
+  "film": {"resolution": [16, 12]}, "integrator": {"spp": 16},
+  "materials": {"rock": {"type": "lambert", "color": [0.6, 0.5, 0.4]}},
+  "lights": [{"type": "flame", "preset": "torch", "position": [0.3, 1.2, 0.5], "group": "torch"},
+             {"type": "point", "position": [-1, 2, 1], "intensity": 3, "group": "lamp"}],
+  "shapes": [{"type": "plane", "size": [6, 4], "material": "rock", "transform": [{"translate": [0, 1, 0]}]}]
+}"""
+
+
+class Relight(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.mkdtemp()
+        with open(os.path.join(cls.dir, "scene.json"), "w") as f:
+            f.write(SCENE)
+        result = ochre.load_scene(os.path.join(cls.dir, "scene.json")).render()
+        cls.render = os.path.join(cls.dir, "render.exr")
+        result.write_exr(cls.render)
+
+    def test_scales_and_off_recombine_the_groups(self):
+        channels, attributes = ochre.relight(self.render, groups={"torch": "off", "lamp": 2})
+        original, _ = ochre.read_exr(self.render)
+        self.assertEqual(attributes["ochre.relight"], "torch:scale=0 lamp:scale=2")
+        for c in "RGB":
+            np.testing.assert_allclose(channels[c], 2 * original["group.lamp." + c], rtol=1e-6, atol=1e-7)
+
+    def test_outputs_are_those_of_the_command_line(self):
+        exr = os.path.join(self.dir, "py.exr")
+        ochre.relight(self.render, groups={"lamp": 0.5}, exr=exr)
+        cli = os.path.join(self.dir, "cli.exr")
+        ochre_bin = os.path.join(os.environ.get("OCHRE_BIN_DIR", ""), "ochre")
+        self.assertTrue(os.path.exists(ochre_bin), "OCHRE_BIN_DIR must name the build's bin/")
+        subprocess.run([ochre_bin, "relight", self.render, "--group", "lamp:scale=0.5", "-o", cli, "-q"], check=True)
+        a, _ = ochre.read_exr(exr)
+        b, _ = ochre.read_exr(cli)
+        self.assertEqual(sorted(a), sorted(b))
+        for name in a:
+            np.testing.assert_array_equal(a[name], b[name])
+
+    def test_bad_changes_raise_naming_them(self):
+        with self.assertRaisesRegex(ochre.InputError, "no light group 'candle'"):
+            ochre.relight(self.render, groups={"candle": 1})
+        with self.assertRaisesRegex(ochre.InputError, "cct changes the group's spectrum"):
+            ochre.relight(self.render, groups={"torch": "cct=1850"})
+        with self.assertRaisesRegex(ochre.InputError, "finite number >= 0"):
+            ochre.relight(self.render, groups={"torch": -1})
+        with self.assertRaises(TypeError):
+            ochre.relight(self.render, groups={"torch": True})
+        before = open(self.render, "rb").read()
+        with self.assertRaises(ochre.InputError):
+            ochre.relight(self.render, groups={"lamp": 0.5}, exr=self.render)
+        self.assertEqual(open(self.render, "rb").read(), before)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,43 @@
+#include "tools/ochre/relight_command.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "renderer/image/exr_reader.h"
+#include "renderer/output/relight.h"
+#include "renderer/util/signal_cleanup.h"
+#include "spectra/input_error.h"
+#include "spectra/input_file.h"
+
+namespace ochre {
+
+int run_relight(const RelightCommand& command) {
+  install_signal_cleanup();
+  if (command.exr.empty() && command.png.empty())
+    throw InputError("relight: no output: give -o OUT.exr and/or --png OUT.png");
+  std::vector<GroupChange> changes;
+  for (const std::string& text : command.groups) changes.push_back(parse_group_change(text));
+  InputFileLog inputs;
+  ExrImage render;
+  {
+    const InputFileLog::Recording recording(inputs);
+    render = read_exr(command.render);
+  }
+  const ExrImage relit = relight(render, changes, command.render);
+  DisplayOptions display = recorded_display(render, command.render);
+  if (command.ocio_config) display.ocio_config = *command.ocio_config;
+  if (command.display) display.display = *command.display;
+  if (command.view) display.view = *command.view;
+  if (command.exposure) display.exposure_stops = *command.exposure;
+
+  const std::vector<std::string> written = write_relit(relit, display, command.exr, command.png, inputs);
+  if (!command.quiet) {
+    std::cerr << fmt::format("ochre: relit {}: {}\n", command.render,
+                             relit.string_attributes.at("ochre.relight"));
+    for (const std::string& line : written) std::cerr << "ochre: " << line << "\n";
+  }
+  return 0;
+}
+
+}  // namespace ochre
