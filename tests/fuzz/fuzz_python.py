@@ -2,13 +2,13 @@
 """Fuzz driver of ochre's Python module (docs/validation.md, "Fuzzing"; docs/python.md, "Errors").
 
 Each iteration calls one entry point of the module (load_scene, Scene.render, RenderResult.write_exr,
-mitsuba_to_json, the Material methods, Spectrum, the colour functions, read_exr) with arguments drawn from
+mitsuba_to_json, the Material methods, Spectrum, the colour functions, read_exr, relight) with arguments drawn from
 a seeded random generator: good values most of the time, and otherwise values of random types, huge,
 negative, NaN or infinite numbers, nested and self-containing containers, scenes and materials with one
 value changed, and paths to FIFOs, devices, links, directories and the call's own input files in a scratch
 directory. Every call must either succeed or raise ochre.InputError, TypeError or ValueError whose message
 is ochre's own (not pybind11's "incompatible function arguments", not a bare numpy conversion error); a
-write_exr that is refused must leave every file as it was, and no call may leave a temporary file.
+write_exr or relight that is refused must leave every file as it was, and no call may leave a temporary file.
 
 The calls run in child processes, so that a crash (SIGSEGV, abort) or a hang is caught and reported with
 the call that caused it and the command that repeats it, instead of ending the driver:
@@ -74,6 +74,19 @@ def small_scene(**changes):
     return scene
 
 
+# The lights of the render that relight recombines: two light groups (docs/lights.md, "Light groups").
+GROUP_LIGHTS = [{"type": "point", "position": [0, 2, 2], "intensity": 3, "group": "lamp"},
+                {"type": "environment", "radiance": 0.5, "group": "sky"}]
+
+
+def make_groups_render(ochre, directory):
+    """groups.exr, a render with light groups, made by the first child (the parent does not import the
+    module); the same file serves every later call."""
+    path = pathlib.Path(directory) / "groups.exr"
+    if not path.exists():
+        ochre.load_scene(small_scene(lights=GROUP_LIGHTS), base_dir=str(directory)).render(spp=1).write_exr(path)
+
+
 def make_scratch(directory):
     d = pathlib.Path(directory)
     shutil.copy(SOURCE_DIR / "tests/data/quad.obj", d / "quad.obj")
@@ -94,12 +107,16 @@ def make_scratch(directory):
     os.symlink("no-such-file", d / "dangling")
 
 
+# The scratch directory's regular files: inputs of the calls that no output may replace.
+PROTECTED_FILES = ("quad.obj", "colours.ply", "red.csv", "scene.json", "material.json", "target.txt",
+                   "mitsuba/elements.xml", "groups.exr")
+
+
 def protected_state(directory):
     """What must never change: the inputs' content and identity, and the kind of every special file."""
     d = pathlib.Path(directory)
     state = {}
-    for name in ("quad.obj", "colours.ply", "red.csv", "scene.json", "material.json", "target.txt",
-                 "mitsuba/elements.xml"):
+    for name in PROTECTED_FILES:
         info = os.stat(d / name)
         state[name] = (info.st_ino, hashlib.sha256((d / name).read_bytes()).hexdigest())
     for name in ("fifo", "dir", "link", "dirlink", "dangling"):
@@ -403,8 +420,8 @@ class Calls:
     def call(self):
         kind = self.rng.choices(
             ["load", "render", "write_exr", "polarization_mode", "mitsuba", "material", "material_method",
-             "spectrum", "spectrum_method", "colour", "read_exr"],
-            weights=[14, 14, 10, 2, 3, 8, 14, 8, 8, 10, 4])[0]
+             "spectrum", "spectrum_method", "colour", "read_exr", "relight"],
+            weights=[14, 14, 10, 2, 3, 8, 14, 8, 8, 10, 4, 5])[0]
         return getattr(self, "call_" + kind)()
 
     def call_load(self):
@@ -450,8 +467,7 @@ class Calls:
             real = os.path.realpath(name)
         except (TypeError, ValueError):
             return None
-        files = [os.path.realpath(self.scratch / n) for n in ("quad.obj", "colours.ply", "red.csv", "scene.json",
-                                                               "material.json", "target.txt", "mitsuba/elements.xml")]
+        files = [os.path.realpath(self.scratch / n) for n in PROTECTED_FILES]
         return real if real in files else None
 
     def call_polarization_mode(self):
@@ -590,6 +606,36 @@ class Calls:
                        bad=0.6)
         return f"read_exr({short(path)})", lambda: self.ochre.read_exr(path)
 
+    def call_relight(self):
+        v, s = self.v, self.scratch
+        groups_exr = str(s / "groups.exr")
+        render = v.maybe(lambda: v.choice([groups_exr, pathlib.Path(groups_exr), str(s / "out-0.exr")]), bad=0.3)
+        groups = v.maybe(lambda: v.choice([None, {}, {"lamp": 0.5}, {"sky": "off", "lamp": 2}, {"lamp": "on"},
+                                           {"lamp": v.anything()}, {"nope": 1}, {"sky": "cct=2000"},
+                                           {"lamp": "scale=3,off"}, {v.choice([1, None, b"lamp", 2.5]): 1}]))
+
+        def output(extension):
+            r = self.rng.random()
+            if r < 0.5:
+                return None
+            if r < 0.8:
+                path = str(s / f"out-{self.rng.randrange(4)}{extension}")
+            elif r < 0.9:
+                path = groups_exr
+            else:
+                path = v.choice([v.anything(), *[str(s / n) for n in ("fifo", "dir", "link", "dangling")],
+                                 "/dev/null", str(s / ("no/such/dir/x" + extension))])
+            # Only the render itself is an input of relight: any other file of the scratch directory may be
+            # replaced, so aim elsewhere.
+            protected = self.protected_file(path)
+            own = isinstance(render, (str, pathlib.Path)) and str(render) == groups_exr and \
+                protected == os.path.realpath(groups_exr)
+            return str(s / f"out-{self.rng.randrange(4)}{extension}") if protected and not own else path
+
+        kwargs = {"groups": groups, "exr": output(".exr"), "png": output(".png")}
+        kwargs = {k: value for k, value in kwargs.items() if value is not None or self.rng.random() < 0.2}
+        return f"relight({short(render)}, **{short(kwargs)})", lambda: self.ochre.relight(render, **kwargs)
+
 
 def short(value, limit=300):
     try:
@@ -655,6 +701,7 @@ def run_child(seed, first, count, seconds, scratch, log_path, only=None):
     import ochre
 
     os.chdir(scratch)
+    make_groups_render(ochre, scratch)
     before = protected_state(scratch)
     deadline = time.monotonic() + seconds
     counts = {}
@@ -682,7 +729,7 @@ def run_child(seed, first, count, seconds, scratch, log_path, only=None):
             counts[outcome] = counts.get(outcome, 0) + 1
             log.write(f"done {seed}:{i} {outcome}\n")
             i += 1
-            for p in pathlib.Path(scratch).glob("out-*.exr"):
+            for p in pathlib.Path(scratch).glob("out-*"):
                 if rng.random() < 0.1:
                     p.unlink()
     print(json.dumps({"iterations": sum(counts.values()), "outcomes": counts}), flush=True)
@@ -753,6 +800,9 @@ def selftest(scratch, log_path):
         status, _ = run_child_process(1, 0, 10, 5, scratch, log_path)
         if status != 1:
             print(f"fuzz_python: selftest: the {fault} was not reported")
+            return 1
+        if "selftest: " not in last_call(log_path):  # a finding of a real call before the injected one
+            print(f"fuzz_python: selftest: a finding before the injected {fault}")
             return 1
     print("fuzz_python: selftest: a crash, a hang, an internal error and a message naming no argument are each "
           "reported")

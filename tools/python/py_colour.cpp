@@ -85,15 +85,15 @@ ColorSpace space_of(const py::object& value, const char* what) {
   }
 }
 
-// A linear RGB image (height, width, 3) of numbers, not empty.
+// A linear RGB image (height, width, 3) of numbers, not empty (each side at most INT_MAX / 4 pixels).
 RgbImage rgb_image(const py::object& image, const std::string& colorspace, const char* what) {
   const auto numbers = number_array(image, what);
   if (numbers.ndim() != 3 || numbers.shape(2) != 3)
     throw InputError(fmt::format("{}: expected shape (height, width, 3)", what));
   if (numbers.shape(0) < 1 || numbers.shape(1) < 1 || numbers.shape(0) > INT_MAX / 4 ||
       numbers.shape(1) > INT_MAX / 4)
-    throw InputError(fmt::format("{}: the image is {}x{} pixels; it must have at least one", what,
-                                 numbers.shape(1), numbers.shape(0)));
+    throw InputError(fmt::format("{}: the image is {}x{} pixels; each side must have 1 to {} pixels", what,
+                                 numbers.shape(1), numbers.shape(0), INT_MAX / 4));
   auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(numbers);
   if (!a) wrong_type(what, "an array of numbers", image);
   RgbImage r;

@@ -389,15 +389,6 @@ SceneOverrides overrides_of(const py::object& spp, const py::object& resolution,
   return o;
 }
 
-// Loads record every file they read (spectra/input_file.h), so that write_exr refuses to replace one. The
-// log being recorded is process-wide, and Python threads may load side by side: loads take turns. (A file
-// another thread reads meanwhile, through read_exr or a material, is recorded too: write_exr then refuses
-// it as well, which errs on the safe side.)
-std::mutex& recording_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
 std::unique_ptr<PyScene> load(const py::object& source, const py::object& spp, const py::object& resolution,
                               const py::object& seed, const py::object& threads,
                               const py::object& polarization, const py::object& sampler,
@@ -408,7 +399,7 @@ std::unique_ptr<PyScene> load(const py::object& source, const py::object& spp, c
     const nlohmann::json root = to_json(source, "scene");
     const std::filesystem::path dir = base_dir_argument(base_dir);
     py::gil_scoped_release release;
-    const std::lock_guard lock(recording_mutex());
+    const std::lock_guard lock(input_recording_mutex());
     const InputFileLog::Recording recording(*inputs);
     return std::make_unique<PyScene>(load_scene_json(root, "<dict>", dir / "<dict>", o), inputs);
   }
@@ -416,7 +407,7 @@ std::unique_ptr<PyScene> load(const py::object& source, const py::object& spp, c
       path_argument(source, "source", "a dict (the scene) or a path (str or os.PathLike)");
   if (!base_dir.is_none()) throw InputError("base_dir: applies to scenes given as a dict only");
   py::gil_scoped_release release;
-  const std::lock_guard lock(recording_mutex());
+  const std::lock_guard lock(input_recording_mutex());
   const InputFileLog::Recording recording(*inputs);
   return std::make_unique<PyScene>(load_scene(path, o), inputs);
 }

@@ -146,9 +146,9 @@ nlohmann::json convert(const py::handle& value, JsonPath& path) {
   const bool numpy = !dict && !sequence && is_numpy_value(value);
   if (!dict && !sequence && !numpy)
     throw py::type_error(
-        fmt::format("{}: cannot be written in a scene (type {}); use dict, list, str, int, "
-                    "float, bool or None",
-                    path.text(), Py_TYPE(o)->tp_name));
+        message_excerpt(fmt::format("{}: cannot be written in a scene (type {}); use dict, list, str, int, "
+                                    "float, bool or None",
+                                    path.text(), Py_TYPE(o)->tp_name)));
   for (const auto& [container, steps] : path.open)
     if (container == o)
       throw InputError(
@@ -165,7 +165,8 @@ nlohmann::json convert(const py::handle& value, JsonPath& path) {
     for (const py::handle item : items) {
       const py::handle key = PyTuple_GET_ITEM(item.ptr(), 0);
       if (!PyUnicode_Check(key.ptr()))
-        throw py::type_error(fmt::format("{}: keys must be strings, got {}", path.text(), describe(key)));
+        throw py::type_error(
+            message_excerpt(fmt::format("{}: keys must be strings, got {}", path.text(), describe(key))));
       std::optional<std::string> k = utf8_of(key.ptr());
       if (!k) throw InputError(path.text() + ": a key is not valid Unicode text (it holds a lone surrogate)");
       const Step step(path, {false, 0, *k});
@@ -278,7 +279,8 @@ std::string describe(const py::handle& value) {
 }
 
 void wrong_type(const std::string& name, const std::string& expected, const py::handle& value) {
-  throw py::type_error(fmt::format("{}: expected {}, got {}", name, expected, describe(value)));
+  throw py::type_error(
+      message_excerpt(fmt::format("{}: expected {}, got {}", name, expected, describe(value))));
 }
 
 namespace {
@@ -460,10 +462,15 @@ py::array_t<float> float_array(const std::vector<float>& values, const std::vect
 py::tuple exr_to_python(const ExrImage& image) {
   py::dict channels;
   for (const auto& [name, values] : image.channels)
-    channels[py::str(name)] = float_array(values, {image.height, image.width});
+    channels[text(name)] = float_array(values, {image.height, image.width});
   py::dict attributes;
-  for (const auto& [key, value] : image.string_attributes) attributes[py::str(key)] = value;
+  for (const auto& [key, value] : image.string_attributes) attributes[text(key)] = text(value);
   return py::make_tuple(channels, attributes);
+}
+
+std::mutex& input_recording_mutex() {
+  static std::mutex mutex;
+  return mutex;
 }
 
 void register_errors(py::module_& m) {

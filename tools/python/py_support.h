@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -40,7 +41,7 @@ py::str text(const std::string& utf8);
 // "str 'abc'", "int 5", "float nan", "list": what an error says the caller gave (short, and never calling
 // the value's own __repr__ but for built-in scalars).
 std::string describe(const py::handle& value);
-// Throws TypeError "NAME: expected EXPECTED, got DESCRIPTION".
+// Throws TypeError "NAME: expected EXPECTED, got DESCRIPTION" (cut as message_excerpt cuts long messages).
 [[noreturn]] void wrong_type(const std::string& name, const std::string& expected, const py::handle& value);
 
 // Arguments. Each throws TypeError naming `name` for a value of the wrong type and InputError naming it
@@ -82,8 +83,15 @@ py::array_t<double, py::array::c_style | py::array::forcecast> vector_of(const p
 py::array_t<float> float_array(const std::vector<float>& values, const std::vector<py::ssize_t>& shape);
 
 // (channels, attributes) of an image as ochre.read_exr returns them: every channel as (height, width)
-// float32, the string attributes as str.
+// float32, the string attributes as str (bytes that are not UTF-8 become U+FFFD).
 py::tuple exr_to_python(const ExrImage& image);
+
+// Loads and ochre.relight record every file they read (spectra/input_file.h), so that their outputs never
+// replace one. The log being recorded is process-wide and Python threads may read side by side, so each
+// Recording is made under this mutex, taken with the GIL released. (A file another thread reads meanwhile,
+// through read_exr or a material, is recorded too: the output then refuses it as well, which errs on the
+// safe side.)
+std::mutex& input_recording_mutex();
 
 // Registers ochre.InputError; ochre's InputError, GraphError and ImageError raise it.
 void register_errors(py::module_& m);
