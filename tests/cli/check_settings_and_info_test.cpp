@@ -11,7 +11,7 @@
 #include "cli/file_test_support.h"
 #include "support/test_paths.h"
 
-namespace ochre::test::test_check_settings_and_info {
+namespace ochre::test::check_settings_and_info_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -93,4 +93,4 @@ TEST(Info, SaysWhatPartsHoldAndNamesAFileItCannotRead) {
 }
 
 }  // namespace
-}  // namespace ochre::test::test_check_settings_and_info
+}  // namespace ochre::test::check_settings_and_info_test
