@@ -36,11 +36,12 @@ double quadrature_albedo(const Closure& closure, const Vec3& wo, const SampledWa
 }  // namespace
 
 AlbedoEstimate directional_albedo(const Closure& closure, const Vec3& wo, const SampledWavelengths& lambda,
-                                  uint64_t samples, uint64_t seed) {
+                                  uint64_t samples, uint64_t seed, const std::function<bool()>& stop) {
   AlbedoEstimate r;
   Pcg32 rng(seed);
   double sum = 0.0, sum_squares = 0.0;
   for (uint64_t k = 0; k < samples; ++k) {
+    if (stop && (k & 0xffff) == 0xffff && stop()) return r;
     const float u_choice = rng.next_float();
     const Vec2 u{rng.next_float(), rng.next_float()};
     const std::optional<LobeSample> s = closure.sample(wo, u_choice, u, lambda);

@@ -5,6 +5,7 @@
 // eval(); delta lobes are invisible to it).
 
 #include <cstdint>
+#include <functional>
 
 #include "materials/lobes/closure.h"
 
@@ -15,8 +16,10 @@ struct AlbedoEstimate {
   double quadrature = 0.0, quadrature_error = 0.0;  // fine rule, |fine - coarse|
 };
 
-// Lane 0 of the wavelengths. `samples` Monte-Carlo samples from `seed`.
+// Lane 0 of the wavelengths. `samples` Monte-Carlo samples from `seed`. `stop`, when given, is asked every
+// 2^16 samples whether to stop (Ctrl-C in Python, docs/python.md): when it returns true the estimate ends
+// early, incomplete, and the caller discards it.
 AlbedoEstimate directional_albedo(const Closure& closure, const Vec3& wo, const SampledWavelengths& lambda,
-                                  uint64_t samples, uint64_t seed);
+                                  uint64_t samples, uint64_t seed, const std::function<bool()>& stop = {});
 
 }  // namespace ochre

@@ -28,7 +28,6 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   }
 }
 
-constexpr uint64_t kMaxSample = UINT32_MAX;
 constexpr uint64_t kMaxCoordinate = 1u << 30;
 
 }  // namespace
@@ -36,7 +35,7 @@ constexpr uint64_t kMaxCoordinate = 1u << 30;
 std::optional<SampleRange> parse_sample_range(std::string_view text) {
   const std::vector<std::string_view> fields = split(text, ':');
   if (fields.size() != 2) return std::nullopt;
-  const auto begin = parse_count(fields[0], kMaxSample), end = parse_count(fields[1], kMaxSample);
+  const auto begin = parse_count(fields[0], kMaxSampleEnd), end = parse_count(fields[1], kMaxSampleEnd);
   if (!begin || !end || *begin >= *end) return std::nullopt;
   return SampleRange{static_cast<uint32_t>(*begin), static_cast<uint32_t>(*end)};
 }
@@ -58,7 +57,7 @@ std::optional<PixelRect> parse_pixel_rect(std::string_view text) {
 std::optional<std::pair<uint32_t, uint32_t>> parse_part(std::string_view text) {
   const std::vector<std::string_view> fields = split(text, '/');
   if (fields.size() != 2) return std::nullopt;
-  const auto index = parse_count(fields[0], kMaxSample), count = parse_count(fields[1], kMaxSample);
+  const auto index = parse_count(fields[0], kMaxSampleEnd), count = parse_count(fields[1], kMaxSampleEnd);
   if (!index || !count || *index >= *count) return std::nullopt;
   return std::pair{static_cast<uint32_t>(*index), static_cast<uint32_t>(*count)};
 }

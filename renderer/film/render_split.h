@@ -28,7 +28,11 @@ struct PixelRect {
   bool operator==(const PixelRect&) const = default;
 };
 
-// "A:B" with 0 <= A < B <= 2^32 - 1 in decimal; nullopt otherwise (the caller names the option or field).
+// The largest end B of a sample range A:B: sample indices are 32-bit (SampleRange).
+inline constexpr uint64_t kMaxSampleEnd = UINT32_MAX;
+
+// "A:B" with 0 <= A < B <= kMaxSampleEnd in decimal; nullopt otherwise (the caller names the option or
+// field).
 std::optional<SampleRange> parse_sample_range(std::string_view text);
 // "x0,y0,x1,y1" with 0 <= x0 < x1 and 0 <= y0 < y1 (integers); nullopt otherwise. Whether the rectangle
 // fits the image is the caller's check.

@@ -3,6 +3,8 @@ as in a scene."""
 
 import math
 import os
+import subprocess
+import time
 import unittest
 
 import numpy as np
@@ -71,6 +73,20 @@ class Conductor(unittest.TestCase):
         self.assertGreater(abs(float(r["matrix"][0, 0, 1])), 1e-4)  # s and p reflect differently at 60 degrees
         self.assertGreater(float(m.eval(wi, wo, 650)), float(m.eval(wi, wo, 450)))  # gold is yellow
         self.assertEqual(r["in_x"].shape, (2, 3))
+
+
+class Interrupt(unittest.TestCase):
+    def test_ctrl_c_stops_a_long_albedo(self):
+        # 2^40 samples: hours of work; SIGINT after 0.3 s must end it in about a second (docs/python.md). The
+        # evaluation holds the GIL, so the signal comes from another process, as from a terminal.
+        m = ochre.material({"type": "lambert", "color": 0.8})
+        killer = subprocess.Popen(["sh", "-c", f"sleep 0.3; kill -INT {os.getpid()}"])
+        start = time.monotonic()
+        with self.assertRaises(KeyboardInterrupt):
+            m.albedo([30], samples=2**40)
+        killer.wait()
+        self.assertLess(time.monotonic() - start, 5.0)
+        self.assertAlmostEqual(float(m.albedo([30], samples=1000)["mc_albedo"][0]), 0.8, places=5)
 
 
 class BadInput(unittest.TestCase):

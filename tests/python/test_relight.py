@@ -63,6 +63,37 @@ class Relight(unittest.TestCase):
             ochre.relight(self.render, groups={"lamp": 0.5}, exr=self.render)
         self.assertEqual(open(self.render, "rb").read(), before)
 
+    def test_arguments_of_the_wrong_type_or_value_name_the_argument(self):
+        # docs/python.md, "Errors": TypeError for a wrong type, InputError for a bad value, each message
+        # starting with the argument's name.
+        def message(error, **kwargs):
+            kwargs.setdefault("render", self.render)
+            with self.assertRaises(error) as raised:
+                ochre.relight(**kwargs)
+            if error is TypeError:
+                self.assertNotIsInstance(raised.exception, ochre.InputError)
+            return str(raised.exception)
+
+        self.assertEqual(message(TypeError, render=3), "render: expected a path (str or os.PathLike), got int 3")
+        self.assertEqual(message(TypeError, groups=[("torch", 1)]),
+                         "groups: expected a dict of group name -> scale, 'off' or 'on', got list")
+        self.assertEqual(message(TypeError, groups={1: 1}), "groups: expected str keys (group names), got int 1")
+        self.assertEqual(message(TypeError, groups={"torch": True}),
+                         "groups['torch']: expected a number (the scale), 'off' or 'on', got bool True")
+        self.assertEqual(message(TypeError, groups={"torch": [1]}), "groups['torch']: expected a number (the scale), 'off' or 'on', got list")
+        self.assertTrue(message(TypeError, exr=3.5).startswith("exr: expected a path"))
+        self.assertTrue(message(TypeError, png=7).startswith("png: expected a path"))
+        self.assertEqual(message(ochre.InputError, groups={"torch": -1}),
+                         "groups['torch']: a scale must be a finite number >= 0 (got -1)")
+        self.assertTrue(message(ochre.InputError, groups={"torch": float("nan")}).startswith("groups['torch']: "))
+        self.assertTrue(message(ochre.InputError, groups={"torch": "cct=1850"}).startswith("groups['torch']: "))
+        self.assertTrue(message(ochre.InputError, groups={"torch": "dim"}).startswith("groups['torch']: "))
+        self.assertEqual(message(ochre.InputError, render=""), "render: the path is empty")
+        self.assertEqual(message(ochre.InputError, exr=""), "exr: the path is empty")
+        # Numbers of numpy and the words are accepted as the command line's NAME:scale=S, NAME:off, NAME:on.
+        _, attributes = ochre.relight(self.render, groups={"torch": np.float32(0.5), "lamp": "on"})
+        self.assertEqual(attributes["ochre.relight"], "torch:scale=0.5 lamp:scale=1")
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -4,6 +4,7 @@ bits as the command line; overrides; progress; Ctrl-C; the GIL released while re
 import os
 import signal
 import subprocess
+import sys
 import tempfile
 import threading
 import time
@@ -65,7 +66,7 @@ class LoadScene(unittest.TestCase):
     def test_dict_values_that_json_cannot_hold(self):
         with self.assertRaises(TypeError) as error:
             ochre.load_scene(sphere_scene(description=object()))
-        self.assertIn("scene['description']", str(error.exception))
+        self.assertIn("scene.description: cannot be written in a scene (type object)", str(error.exception))
         # numpy values are numbers and lists.
         scene = sphere_scene(camera={"eye": np.array([0.0, 0.0, 4.0]), "fov": np.float32(30)})
         self.assertEqual(ochre.load_scene(scene).width, 16)
@@ -163,6 +164,61 @@ class Concurrency(unittest.TestCase):
         self.assertEqual(results[1].stats["samples"], 16 * 16)
         self.assertEqual(results[7].stats["samples"], 16 * 16 * 7)
         self.assertTrue(np.array_equal(results[7].rgb, scene.render(spp=7, seed=3).rgb))
+
+
+class Reentrance(unittest.TestCase):
+    """A progress callback may render the scene it reports on (docs/python.md): renders copy the scene's
+    settings and take no lock, so both finish, with the bits of plain renders, and an exception raised in
+    the nested render propagates out of both. Each case runs in a child process with a timeout, so that a
+    deadlock fails the test instead of hanging the suite."""
+
+    def run_child(self, code):
+        prelude = f"import sys\nimport numpy as np\nimport ochre\nBOX = {BOX!r}\n"
+        result = subprocess.run([sys.executable, "-c", prelude + code], capture_output=True, text=True, timeout=300)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        return result.stdout
+
+    def test_a_render_started_by_the_progress_callback(self):
+        out = self.run_child("""
+scene = ochre.load_scene(BOX, resolution=(64, 64))
+plain_outer, plain_inner = scene.render(spp=128, seed=1), scene.render(spp=3, seed=9)
+calls, inner = [], []
+
+def progress(done, total):
+    calls.append((done, total))
+    if not inner:
+        inner.append(scene.render(spp=3, seed=9))
+
+outer = scene.render(spp=128, seed=1, progress=progress)
+print("started before the end:", calls[0][0] < calls[0][1])
+print("outer same bits:", np.array_equal(outer.rgb, plain_outer.rgb), outer.stats["samples"])
+print("inner same bits:", np.array_equal(inner[0].rgb, plain_inner.rgb), inner[0].stats["samples"])
+print("settings kept:", scene.settings["spp"])
+""")
+        self.assertIn("started before the end: True", out)
+        self.assertIn(f"outer same bits: True {64 * 64 * 128}", out)
+        self.assertIn(f"inner same bits: True {64 * 64 * 3}", out)
+        self.assertIn("settings kept: 128", out)
+
+    def test_an_exception_in_the_nested_render_propagates(self):
+        out = self.run_child("""
+scene = ochre.load_scene(BOX, resolution=(64, 64))
+
+def inner_fails(done, total):
+    raise ValueError("raised in the nested render")
+
+def progress(done, total):
+    scene.render(spp=256, progress=inner_fails)
+
+try:
+    scene.render(spp=1024, progress=progress)
+    print("no exception")
+except ValueError as e:
+    print("propagated:", e)
+print("renders again:", scene.render(spp=1).stats["samples"])
+""")
+        self.assertIn("propagated: raised in the nested render", out)
+        self.assertIn(f"renders again: {64 * 64}", out)
 
 
 class Progress(unittest.TestCase):

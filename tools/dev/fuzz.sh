@@ -10,7 +10,11 @@
 #                                               first finding (exit 1); exit 77 (skip) without clang-14
 #   tools/dev/fuzz.sh --build                       configures and builds the fuzz tree only (exit 77 without
 #                                               clang-14 / libFuzzer)
-#   tools/dev/fuzz.sh --list                        the targets: scene material mesh csv envmap mitsuba
+#   tools/dev/fuzz.sh --list                        the targets: scene material mesh csv envmap mitsuba python
+#
+# The target python is the Python module's driver tests/fuzz/fuzz_python.py (random arguments to every entry
+# point, calls in child processes; no clang needed): it runs on the module of the normal build
+# ($OCHRE_PYTHON_DIR, default build/python) with /usr/bin/python3, and logs to FINDINGS_DIR/fuzz.log.
 #
 # The fuzz tree (clang-14, -fsanitize=fuzzer,address,undefined, -O1) is build/fuzz, or
 # $OCHRE_FUZZ_BUILD_DIR. A long run grows its corpus in build/fuzz/corpus/TARGET (kept between runs) from
@@ -22,12 +26,32 @@ set -euo pipefail
 SOURCE_DIR="$(cd "$(dirname "$0")/../.." && pwd)"
 BUILD_DIR="${OCHRE_FUZZ_BUILD_DIR:-$SOURCE_DIR/build/fuzz}"
 CXX_FUZZ="${OCHRE_FUZZ_CXX:-clang++-14}"
-TARGETS="scene material mesh csv envmap mitsuba"
+TARGETS="scene material mesh csv envmap mitsuba python"
 SKIP=77
 
 usage() {
-  sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
+}
+
+# The Python module's driver for SECONDS (docs/validation.md, "Fuzzing"); its report on stdout, or in LOG.
+python_run() {
+  local seconds="$1" log="${2:-}"
+  local python_dir="${OCHRE_PYTHON_DIR:-$SOURCE_DIR/build/python}" status=0
+  if [ ! -d "$python_dir/ochre" ]; then
+    echo "tools/dev/fuzz.sh: no Python module in $python_dir (build it: cmake --build build --target ochre_python)" >&2
+    exit 2
+  fi
+  if [ -z "$log" ]; then
+    PYTHONPATH="$python_dir" /usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_python.py" --seconds "$seconds"
+    return
+  fi
+  mkdir -p "$(dirname "$log")"
+  echo "tools/dev/fuzz.sh: fuzzing the Python module for $seconds s; log in $log"
+  PYTHONPATH="$python_dir" nice -n 10 /usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_python.py" \
+    --seconds "$seconds" >"$log" 2>&1 || status=$?
+  tail -n 20 "$log"
+  return $status
 }
 
 check_target() {
@@ -87,6 +111,10 @@ common_options() {
 short_run() {
   local target="$1" seconds="$2"
   check_target "$target"
+  if [ "$target" = python ]; then
+    python_run "$seconds"
+    return
+  fi
   local fuzzer="$BUILD_DIR/bin/fuzz_$target"
   if [ ! -x "$fuzzer" ]; then
     require_toolchain
@@ -112,6 +140,10 @@ long_run() {
     echo "tools/dev/fuzz.sh: HOURS must be a positive number (got '$hours')" >&2
     exit 2
   }
+  if [ "$target" = python ]; then
+    python_run "$seconds" "${3:-$BUILD_DIR/findings/python}/fuzz.log"
+    return
+  fi
   build
   local findings="${3:-$BUILD_DIR/findings/$target}" corpus="$BUILD_DIR/corpus/$target"
   mkdir -p "$findings" "$corpus"

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <cfloat>
+#include <climits>
 #include <cmath>
 
 #include "materials/nodes/resource_resolver.h"
@@ -32,7 +34,7 @@ class CurrentDirectory final : public ResourceResolver {
     return std::filesystem::absolute(std::filesystem::path(path));
   }
   int texture(const std::filesystem::path& file, const std::string&, int&) override {
-    throw std::runtime_error("textures are not spectra: " + file.string());
+    throw InputError("textures are not spectra: " + file.string());
   }
 };
 
@@ -52,7 +54,9 @@ struct PySpectrum {
 
 PySpectrum illuminant_of(const py::object& illuminant) {
   if (py::isinstance<PySpectrum>(illuminant)) return illuminant.cast<PySpectrum>();
-  return {from_object({{"name", illuminant.cast<std::string>()}}, "illuminant")};
+  if (!PyUnicode_Check(illuminant.ptr()))
+    wrong_type("illuminant", "a Spectrum or the name of one (str)", illuminant);
+  return {from_object({{"name", string_argument(illuminant, "illuminant")}}, "illuminant")};
 }
 
 // XYZ of a reflectance under `illuminant`, Y = 1 for a perfect white (CIE 15:2004, section 7).
@@ -72,18 +76,26 @@ py::array_t<double> triple(double a, double b, double c) {
   return r;
 }
 
-ColorSpace space_of(const std::string& name) {
+// A working space named by the argument `what` (rec709, acescg).
+ColorSpace space_of(const py::object& value, const char* what) {
   try {
-    return parse_color_space(name);
+    return parse_color_space(string_argument(value, what));
   } catch (const std::invalid_argument& e) {
-    throw InputError(std::string("space: ") + e.what());
+    throw InputError(std::string(what) + ": " + e.what());
   }
 }
 
+// A linear RGB image (height, width, 3) of numbers, not empty (each side at most INT_MAX / 4 pixels).
 RgbImage rgb_image(const py::object& image, const std::string& colorspace, const char* what) {
-  auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(image);
-  if (!a || a.ndim() != 3 || a.shape(2) != 3)
-    throw py::value_error(fmt::format("{}: expected shape (height, width, 3)", what));
+  const auto numbers = number_array(image, what);
+  if (numbers.ndim() != 3 || numbers.shape(2) != 3)
+    throw InputError(fmt::format("{}: expected shape (height, width, 3)", what));
+  if (numbers.shape(0) < 1 || numbers.shape(1) < 1 || numbers.shape(0) > INT_MAX / 4 ||
+      numbers.shape(1) > INT_MAX / 4)
+    throw InputError(fmt::format("{}: the image is {}x{} pixels; each side must have 1 to {} pixels", what,
+                                 numbers.shape(1), numbers.shape(0), INT_MAX / 4));
+  auto a = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(numbers);
+  if (!a) wrong_type(what, "an array of numbers", image);
   RgbImage r;
   r.height = static_cast<int>(a.shape(0));
   r.width = static_cast<int>(a.shape(1));
@@ -92,50 +104,86 @@ RgbImage rgb_image(const py::object& image, const std::string& colorspace, const
   return r;
 }
 
+// Three finite numbers (a list, tuple or array), named `what` in errors.
+std::array<double, 3> triple_argument(const py::object& value, const char* what, const char* expected) {
+  const std::vector<py::object> items = items_argument(value, what, 3, expected);
+  std::array<double, 3> c{};
+  for (int i = 0; i < 3; ++i) c[i] = number_argument(items[i], fmt::format("{}[{}]", what, i));
+  return c;
+}
+
+// A CIEDE2000 weighting factor: finite and > 0.
+double weight_argument(const py::object& value, const char* what) {
+  const double k = number_argument(value, what);
+  if (!(k > 0.0)) throw InputError(fmt::format("{}: must be > 0 (got {})", what, k));
+  return k;
+}
+
+// A wavelength at which a spectrum is evaluated: a finite number of nm (outside 360-830 nm spectra
+// extrapolate as they were made to).
+float finite_wavelength(double nm, const std::string& what) {
+  if (!std::isfinite(nm) || std::abs(nm) > 1e30)
+    throw InputError(fmt::format("{}: must be a finite wavelength in nm (got {})", what, nm));
+  return static_cast<float>(nm);
+}
+
+// --ocio-config: "builtin", "none", "" or the path of a config (a regular file: docs/cli.md, "Input files").
+std::string ocio_config_argument(const py::object& value) {
+  const std::string config = string_argument(value, "ocio_config");  // "": $OCIO, else the built-in one
+  if (!config.empty() && config != "builtin" && config != "none") (void)path_argument(value, "ocio_config");
+  return config;
+}
+
 }  // namespace
 
 void register_colour(py::module_& m) {
   py::class_<PySpectrum>(
       m, "Spectrum", "A spectrum: a function of wavelength in nm over 360-830 nm (docs/python.md, colour).")
       .def(py::init(
-               [](const py::object& wavelengths, const py::object& values, const std::string& extrapolate) {
+               [](const py::object& wavelengths, const py::object& values, const py::object& extrapolate) {
                  return PySpectrum{from_object({{"wavelengths", to_json(wavelengths, "wavelengths")},
                                                 {"values", to_json(values, "values")},
-                                                {"extrapolate", extrapolate}},
+                                                {"extrapolate", string_argument(extrapolate, "extrapolate")}},
                                                "spectrum")};
                }),
-           py::arg("wavelengths"), py::arg("values"), py::arg("extrapolate") = "clamp",
+           py::arg("wavelengths"), py::arg("values"), py::arg("extrapolate") = py::str("clamp"),
            "A table: values at increasing wavelengths (nm), linear in between; outside the table \"clamp\" "
            "holds the end values, \"zero\" gives 0")
       .def_static(
           "named",
-          [](const std::string& name, double scale) {
-            return PySpectrum{from_object({{"name", name}, {"scale", scale}}, "spectrum")};
+          [](const py::object& name, const py::object& scale) {
+            return PySpectrum{from_object(
+                {{"name", string_argument(name, "name")}, {"scale", number_argument(scale, "scale")}},
+                "spectrum")};
           },
-          py::arg("name"), py::arg("scale") = 1.0,
+          py::arg("name"), py::arg("scale") = py::float_(1.0),
           "A named spectrum: D65, A, E (luminance 1 before scale), cie_x, cie_y, cie_z, metal-Au-eta, ...")
       .def_static(
           "blackbody",
-          [](double kelvin, double scale) {
-            return PySpectrum{from_object({{"blackbody", kelvin}, {"scale", scale}}, "spectrum")};
+          [](const py::object& kelvin, const py::object& scale) {
+            return PySpectrum{from_object({{"blackbody", number_argument(kelvin, "kelvin")},
+                                           {"scale", number_argument(scale, "scale")}},
+                                          "spectrum")};
           },
-          py::arg("kelvin"), py::arg("scale") = 1.0,
+          py::arg("kelvin"), py::arg("scale") = py::float_(1.0),
           "Planck's law at `kelvin`, normalised to luminance 1, times scale")
       .def_static(
           "from_csv",
-          [](const py::object& path, const py::object& column, const std::string& extrapolate) {
-            nlohmann::json j = {{"file", to_path(path).string()}, {"extrapolate", extrapolate}};
-            if (!column.is_none()) j["column"] = column.cast<std::string>();
+          [](const py::object& path, const py::object& column, const py::object& extrapolate) {
+            nlohmann::json j = {{"file", path_argument(path, "path").string()},
+                                {"extrapolate", string_argument(extrapolate, "extrapolate")}};
+            if (!column.is_none()) j["column"] = string_argument(column, "column");
             return PySpectrum{from_object(j, "spectrum")};
           },
-          py::arg("path"), py::arg("column") = py::none(), py::arg("extrapolate") = "clamp",
+          py::arg("path"), py::arg("column") = py::none(), py::arg("extrapolate") = py::str("clamp"),
           "A CSV file: a header, wavelength (nm) then value columns (docs/scene-format.md, spectra)")
       .def_static(
           "from_rgb",
-          [](const std::array<double, 3>& c, const std::string& kind) -> PySpectrum {
+          [](const py::object& rgb_, const py::object& kind_) -> PySpectrum {
+            const std::array<double, 3> c = triple_argument(rgb_, "rgb", "(r, g, b)");
+            const std::string kind = string_argument(kind_, "kind");
             for (double v : c)
-              if (!(v >= 0.0) || !std::isfinite(v))
-                throw InputError("rgb: components must be finite and >= 0");
+              if (!(v >= 0.0) || v > FLT_MAX) throw InputError("rgb: components must be finite and >= 0");
             const RGB rgb{static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])};
             if (kind == "reflectance") {
               if (c[0] > 1 || c[1] > 1 || c[2] > 1)
@@ -147,26 +195,30 @@ void register_colour(py::module_& m) {
             throw InputError(
                 fmt::format("kind: unknown '{}' (known: reflectance, illuminant, unbounded)", kind));
           },
-          py::arg("rgb"), py::arg("kind") = "reflectance",
+          py::arg("rgb"), py::arg("kind") = py::str("reflectance"),
           "Linear Rec.709 RGB upsampled as ochre does (Jakob & Hanika 2019): a reflectance in [0, 1], an "
           "illuminant (D65 times an unbounded spectrum) or unbounded")
       .def_static(
           "constant",
-          [](double v) {
-            if (!std::isfinite(v)) throw InputError("constant: must be finite");
+          [](const py::object& value) {
+            const double v = number_argument(value, "value");
+            if (std::abs(v) > FLT_MAX)
+              throw InputError(fmt::format("value: {} overflows single precision", v));
             return PySpectrum{std::make_shared<ConstantSpectrum>(static_cast<float>(v))};
           },
           py::arg("value"))
       .def(
           "__call__",
           [](const PySpectrum& s, const py::object& wavelengths) -> py::object {
-            if (py::isinstance<py::float_>(wavelengths) || py::isinstance<py::int_>(wavelengths))
-              return py::float_(s.s->eval(wavelengths.cast<float>()));
-            auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(wavelengths);
-            if (!a) throw py::type_error("wavelengths: expected numbers");
+            if (PyFloat_Check(wavelengths.ptr()) ||
+                (PyLong_Check(wavelengths.ptr()) && !PyBool_Check(wavelengths.ptr())))
+              return py::float_(
+                  s.s->eval(finite_wavelength(number_argument(wavelengths, "wavelengths"), "wavelengths")));
+            const auto a = number_array(wavelengths, "wavelengths");
             py::array_t<double> out(a.request().shape);
             for (py::ssize_t i = 0; i < a.size(); ++i)
-              out.mutable_data()[i] = s.s->eval(static_cast<float>(a.data()[i]));
+              out.mutable_data()[i] =
+                  s.s->eval(finite_wavelength(a.data()[i], fmt::format("wavelengths[{}]", i)));
             return out;
           },
           py::arg("wavelengths"), "The values at the given wavelengths (nm)")
@@ -191,17 +243,18 @@ void register_colour(py::module_& m) {
             const Lab lab = xyz_to_lab({xyz.x, xyz.y, xyz.z}, {white.x, white.y, white.z});
             return triple(lab.L, lab.a, lab.b);
           },
-          py::arg("illuminant") = "D65",
+          py::arg("illuminant") = py::str("D65"),
           "CIELAB of the spectrum as a reflectance under the illuminant, white = its white")
       .def(
           "to_rgb",
-          [](const PySpectrum& s, const std::string& space, const py::object& illuminant) {
+          [](const PySpectrum& s, const py::object& space, const py::object& illuminant) {
+            const ColorSpace working = space_of(space, "space");
             const XYZ xyz = illuminant.is_none() ? spectrum_to_xyz(*s.s)
                                                  : reflected_xyz(*s.s, illuminant_of(illuminant).s);
-            const RGB rgb = xyz_to_rgb(xyz, space_of(space));
+            const RGB rgb = xyz_to_rgb(xyz, working);
             return triple(rgb.r, rgb.g, rgb.b);
           },
-          py::arg("space") = "rec709", py::arg("illuminant") = py::none(),
+          py::arg("space") = py::str("rec709"), py::arg("illuminant") = py::none(),
           "Linear RGB in ochre's working space (rec709 or acescg) of to_xyz(illuminant); no chromatic "
           "adaptation "
           "(a white under illuminant A is not (1, 1, 1))")
@@ -210,16 +263,23 @@ void register_colour(py::module_& m) {
 
   m.def(
       "xyz_to_lab",
-      [](const std::array<double, 3>& xyz, const std::array<double, 3>& white) {
+      [](const py::object& xyz_, const py::object& white_) {
+        const std::array<double, 3> xyz = triple_argument(xyz_, "xyz", "(X, Y, Z)"),
+                                    white = triple_argument(white_, "white", "(X, Y, Z)");
+        for (double v : white)
+          if (!(v > 0.0)) throw InputError("white: its X, Y and Z must be > 0");
         const Lab lab = xyz_to_lab({xyz[0], xyz[1], xyz[2]}, {white[0], white[1], white[2]});
         return triple(lab.L, lab.a, lab.b);
       },
       py::arg("xyz"), py::arg("white"), "CIE 1976 L*a*b* of xyz relative to the white (CIE 15:2004)");
   m.def(
       "_ciede2000",
-      [](const py::object& first, const py::object& second, double kl, double kc, double kh) {
+      [](const py::object& first, const py::object& second, const py::object& kl_, const py::object& kc_,
+         const py::object& kh_) {
+        const double kl = weight_argument(kl_, "kl"), kc = weight_argument(kc_, "kc"),
+                     kh = weight_argument(kh_, "kh");
         const auto a = rows_of_3(first, "lab1"), b = rows_of_3(second, "lab2");
-        if (a.shape(0) != b.shape(0)) throw py::value_error("lab1, lab2: need the same number of colours");
+        if (a.shape(0) != b.shape(0)) throw InputError("lab1, lab2: need the same number of colours");
         py::array_t<double> de(a.shape(0));
         for (py::ssize_t i = 0; i < a.shape(0); ++i)
           de.mutable_data()[i] =
@@ -227,11 +287,15 @@ void register_colour(py::module_& m) {
                         {b.data()[3 * i], b.data()[3 * i + 1], b.data()[3 * i + 2]}, kl, kc, kh);
         return de;
       },
-      py::arg("lab1"), py::arg("lab2"), py::arg("kl") = 1.0, py::arg("kc") = 1.0, py::arg("kh") = 1.0);
+      py::arg("lab1"), py::arg("lab2"), py::arg("kl") = py::float_(1.0), py::arg("kc") = py::float_(1.0),
+      py::arg("kh") = py::float_(1.0));
   m.def(
       "image_metrics",
-      [](const py::object& test, const py::object& reference, const std::string& colorspace,
-         const std::string& ocio_config) {
+      [](const py::object& test, const py::object& reference, const py::object& colorspace_,
+         const py::object& ocio_config_) {
+        (void)space_of(colorspace_, "colorspace");
+        const std::string colorspace = string_argument(colorspace_, "colorspace"),
+                          ocio_config = ocio_config_argument(ocio_config_);
         const RgbImage a = rgb_image(test, colorspace, "test"),
                        b = rgb_image(reference, colorspace, "reference");
         check_comparable(a, b, "test", "reference");
@@ -250,31 +314,38 @@ void register_colour(py::module_& m) {
         d["de00_map"] = float_array(c.maps.de00, {b.height, b.width});
         return d;
       },
-      py::arg("test"), py::arg("reference"), py::arg("colorspace") = "rec709",
-      py::arg("ocio_config") = "none",
+      py::arg("test"), py::arg("reference"), py::arg("colorspace") = py::str("rec709"),
+      py::arg("ocio_config") = py::str("none"),
       "ochre-diff's metrics of two linear RGB images (height, width, 3); the second is the reference "
       "(docs/tools.md, ochre-diff)");
   m.def(
       "to_display",
-      [](const py::object& image, const std::string& colorspace, const std::string& ocio_config,
-         const std::string& display, const std::string& view, float exposure) {
-        const RgbImage a = rgb_image(image, colorspace, "image");
+      [](const py::object& image, const py::object& colorspace_, const py::object& ocio_config,
+         const py::object& display, const py::object& view, const py::object& exposure_) {
+        (void)space_of(colorspace_, "colorspace");
+        const std::string colorspace = string_argument(colorspace_, "colorspace");
+        // As --exposure and output.exposure (docs/cli.md).
+        const double exposure = number_argument(exposure_, "exposure");
+        if (exposure < -64.0 || exposure > 64.0)
+          throw InputError(fmt::format("exposure: must be in [-64, 64] stops (got {})", exposure));
         DisplayOptions o;
-        o.ocio_config = ocio_config;
-        o.display = display;
-        o.view = view;
+        o.ocio_config = ocio_config_argument(ocio_config);
+        o.display = string_argument(display, "display");
+        o.view = string_argument(view, "view");
+        const RgbImage a = rgb_image(image, colorspace, "rgb");
         o.working_space = colorspace;
-        o.exposure_stops = exposure;
+        o.exposure_stops = static_cast<float>(exposure);
         const std::vector<std::uint8_t> rgb8 = to_display_rgb8(a.width, a.height, a.rgb, o);
         py::array_t<std::uint8_t> out({py::ssize_t(a.height), py::ssize_t(a.width), py::ssize_t(3)});
         std::copy(rgb8.begin(), rgb8.end(), out.mutable_data());
         return out;
       },
-      py::arg("rgb"), py::kw_only(), py::arg("colorspace") = "rec709", py::arg("ocio_config") = "builtin",
-      py::arg("display") = "", py::arg("view") = "", py::arg("exposure") = 0.0f,
+      py::arg("rgb"), py::kw_only(), py::arg("colorspace") = py::str("rec709"),
+      py::arg("ocio_config") = py::str("builtin"), py::arg("display") = py::str(""),
+      py::arg("view") = py::str(""), py::arg("exposure") = py::float_(0.0),
       "8-bit display RGB (height, width, 3) of linear RGB through OpenColorIO, as ochre render --png");
   m.def(
-      "read_exr", [](const py::object& path) { return exr_to_python(read_exr(to_path(path))); },
+      "read_exr", [](const py::object& path) { return exr_to_python(read_exr(path_argument(path, "path"))); },
       py::arg("path"),
       "(channels, attributes): every channel as (height, width) float32, and the string attributes");
 }

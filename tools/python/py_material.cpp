@@ -9,7 +9,9 @@
 
 #include "materials/core/pcg32.h"
 #include "materials/lobes/directional_albedo.h"
+#include "renderer/util/memory_budget.h"
 #include "spectra/input_error.h"
+#include "spectra/sampled_wavelengths.h"
 #include "tools/brdf/material_probe.h"
 #include "tools/python/py_support.h"
 
@@ -39,8 +41,20 @@ std::vector<py::ssize_t> by_wavelength(const Array& lambda) {
 }
 
 void same_length(py::ssize_t n, const Array& a, const char* what) {
-  if (a.shape(0) != n)
-    throw py::value_error(fmt::format("{}: expected {} rows, got {}", what, n, a.shape(0)));
+  if (a.shape(0) != n) throw InputError(fmt::format("{}: expected {} rows, got {}", what, n, a.shape(0)));
+}
+
+// Lets Ctrl-C stop a long evaluation (KeyboardInterrupt) every 4096 rows.
+void check_signals(py::ssize_t row) {
+  if (row % 4096 == 4095 && PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+// A wavelength in nm inside the spectral range, named in the error as `what` (e.g. "wavelengths[3]").
+float wavelength_at(double lambda_nm, const std::string& what) {
+  if (!(lambda_nm >= kLambdaMin && lambda_nm <= kLambdaMax))
+    throw InputError(fmt::format("{}: {} nm is outside the spectral range [{}, {}] nm", what, lambda_nm,
+                                 kLambdaMin, kLambdaMax));
+  return static_cast<float>(lambda_nm);
 }
 
 class PyMaterial {
@@ -57,8 +71,9 @@ class PyMaterial {
     py::array_t<double> f(n);
     double* out = f.mutable_data();
     for (py::ssize_t i : by_wavelength(lambda)) {
-      const Closure& c = probe_->closure(static_cast<float>(lambda.data()[i]));
+      const Closure& c = closure_at(lambda, i);
       out[i] = c.eval(direction(wo, i, "wo"), direction(wi, i, "wi"), probe_->wavelengths())[0];
+      check_signals(i);
     }
     return f;
   }
@@ -74,7 +89,8 @@ class PyMaterial {
     py::array_t<double> m({n, py::ssize_t{4}, py::ssize_t{4}}), in_x({n, py::ssize_t{3}}),
         out_x({n, py::ssize_t{3}});
     for (py::ssize_t i : by_wavelength(lambda)) {
-      const Closure& c = probe_->closure(static_cast<float>(lambda.data()[i]));
+      check_signals(i);
+      const Closure& c = closure_at(lambda, i);
       const MuellerResponse r =
           c.eval_mueller(direction(wo, i, "wo"), direction(wi, i, "wi"), probe_->wavelengths());
       for (int row = 0; row < 4; ++row)
@@ -92,8 +108,10 @@ class PyMaterial {
 
   // One sample of the closure's own sampler per row of wo: random numbers from `seed` (row i uses the
   // i-th triple of the stream), or given as u (n, 3): (u_choice, u1, u2).
-  py::dict sample(const py::object& wo_, const py::object& lambda_, const py::object& u_, uint64_t seed) {
+  py::dict sample(const py::object& wo_, const py::object& lambda_, const py::object& u_,
+                  const py::object& seed_) {
     const Array wo = rows_of_3(wo_, "wo"), lambda = vector_of(lambda_, "wavelengths");
+    const uint64_t seed = unsigned_argument(seed_, "seed");
     const py::ssize_t n = wo.shape(0);
     same_length(n, lambda, "wavelengths");
     Array u;
@@ -113,7 +131,8 @@ class PyMaterial {
           throw InputError(fmt::format("u[{}]: random numbers must lie in [0, 1)", i));
       }
     for (py::ssize_t i : by_wavelength(lambda)) {
-      const Closure& c = probe_->closure(static_cast<float>(lambda.data()[i]));
+      check_signals(i);
+      const Closure& c = closure_at(lambda, i);
       const auto s = c.sample(direction(wo, i, "wo"), numbers[i][0], {numbers[i][1], numbers[i][2]},
                               probe_->wavelengths());
       valid.mutable_data()[i] = s.has_value();
@@ -133,18 +152,30 @@ class PyMaterial {
   }
 
   // The directional albedo at each polar angle of wo (degrees, azimuth 0), two ways (ochre-brdf albedo).
-  py::dict albedo(const py::object& angles_, double lambda_nm, uint64_t samples, uint64_t seed) {
+  // As ochre-brdf albedo (docs/tools.md): at least one angle, each in [0, 90); samples >= 1.
+  py::dict albedo(const py::object& angles_, const py::object& lambda_, const py::object& samples_,
+                  const py::object& seed_) {
     const Array angles = vector_of(angles_, "angles");
+    const float lambda_nm = wavelength_at(number_argument(lambda_, "wavelength"), "wavelength");
+    const uint64_t samples = unsigned_argument(samples_, "samples", 1);
+    const uint64_t seed = unsigned_argument(seed_, "seed");
     const py::ssize_t n = angles.shape(0);
-    py::array_t<double> mc(n), se(n), quad(n), quad_error(n);
-    const Closure& c = probe_->closure(static_cast<float>(lambda_nm));
-    for (py::ssize_t i = 0; i < n; ++i) {
-      const double a = angles.data()[i];
-      if (!(a >= 0.0 && a < 90.0))
+    if (n == 0) throw InputError("angles: give at least one angle");
+    for (py::ssize_t i = 0; i < n; ++i)
+      if (const double a = angles.data()[i]; !(a >= 0.0 && a < 90.0))
         throw InputError(fmt::format("angles[{}]: must be in [0, 90) degrees (got {})", i, a));
+    py::array_t<double> mc(n), se(n), quad(n), quad_error(n);
+    const Closure& c = probe_->closure(lambda_nm);
+    for (py::ssize_t i = 0; i < n; ++i) {
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      const double a = angles.data()[i];
       const double t = a * M_PI / 180.0;
       const Vec3 wo{static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t))};
-      const AlbedoEstimate e = directional_albedo(c, wo, probe_->wavelengths(), samples, seed);
+      // Ctrl-C stops a long estimate (KeyboardInterrupt).
+      bool interrupted = false;
+      const AlbedoEstimate e = directional_albedo(c, wo, probe_->wavelengths(), samples, seed,
+                                                  [&] { return interrupted = PyErr_CheckSignals() != 0; });
+      if (interrupted) throw py::error_already_set();
       mc.mutable_data()[i] = e.monte_carlo;
       se.mutable_data()[i] = e.monte_carlo_se;
       quad.mutable_data()[i] = e.quadrature;
@@ -158,24 +189,33 @@ class PyMaterial {
     return d;
   }
 
-  bool polarizes(double lambda_nm) { return probe_->closure(static_cast<float>(lambda_nm)).polarizes(); }
-  const std::string& name() const { return probe_->name(); }
+  bool polarizes(const py::object& lambda_nm) {
+    return probe_->closure(wavelength_at(number_argument(lambda_nm, "wavelength"), "wavelength")).polarizes();
+  }
+  py::str name() const { return text(probe_->name()); }
 
  private:
+  // The closure at row i's wavelength.
+  const Closure& closure_at(const Array& lambda, py::ssize_t i) {
+    return probe_->closure(wavelength_at(lambda.data()[i], fmt::format("wavelengths[{}]", i)));
+  }
+
   std::unique_ptr<MaterialProbe> probe_;
 };
 
-std::unique_ptr<PyMaterial> make_material(const py::object& source, const std::string& name,
+std::unique_ptr<PyMaterial> make_material(const py::object& source, const py::object& name_,
                                           const py::object& base_dir) {
-  if (py::isinstance<py::dict>(source)) {
+  const std::string name = string_argument(name_, "name");
+  if (PyDict_Check(source.ptr())) {
     const nlohmann::json json = to_json(source, "material");
-    const std::filesystem::path dir =
-        base_dir.is_none() ? std::filesystem::current_path() : to_path(base_dir);
+    const std::filesystem::path dir = base_dir_argument(base_dir);
     return std::make_unique<PyMaterial>(
         std::make_unique<MaterialProbe>(json, name.empty() ? "<dict>" : name, dir));
   }
-  if (!base_dir.is_none()) throw py::value_error("base_dir applies to materials given as a dict");
-  return std::make_unique<PyMaterial>(std::make_unique<MaterialProbe>(to_path(source), name));
+  const std::filesystem::path path =
+      path_argument(source, "source", "a dict (the material) or a path (str or os.PathLike)");
+  if (!base_dir.is_none()) throw InputError("base_dir: applies to materials given as a dict only");
+  return std::make_unique<PyMaterial>(std::make_unique<MaterialProbe>(path, name));
 }
 
 }  // namespace
@@ -186,12 +226,16 @@ void register_material(py::module_& m) {
       .def("eval", &PyMaterial::eval, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
       .def("mueller", &PyMaterial::mueller, py::arg("wi"), py::arg("wo"), py::arg("wavelengths"))
       .def("sample", &PyMaterial::sample, py::arg("wo"), py::arg("wavelengths"), py::arg("u") = py::none(),
-           py::arg("seed") = 1)
-      .def("albedo", &PyMaterial::albedo, py::arg("angles"), py::arg("wavelength") = 550.0,
-           py::arg("samples") = 200000, py::arg("seed") = 1)
-      .def("polarizes", &PyMaterial::polarizes, py::arg("wavelength") = 550.0);
-  m.def("_material", &make_material, py::arg("source"), py::arg("name") = "",
+           py::arg("seed") = py::int_(1))
+      .def("albedo", &PyMaterial::albedo, py::arg("angles"), py::arg("wavelength") = py::float_(550.0),
+           py::arg("samples") = py::int_(200000), py::arg("seed") = py::int_(1))
+      .def("polarizes", &PyMaterial::polarizes, py::arg("wavelength") = py::float_(550.0));
+  m.def("_material", &make_material, py::arg("source"), py::arg("name") = py::str(""),
         py::arg("base_dir") = py::none());
+  // The memory check of large requests (docs/cli.md, "Memory"), for the arrays the package broadcasts.
+  m.def(
+      "_check_memory", [](double bytes, const std::string& what) { check_memory_estimate(bytes, what); },
+      py::arg("bytes"), py::arg("what"));
 }
 
 }  // namespace ochre::python

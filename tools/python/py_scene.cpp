@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <climits>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -14,8 +15,10 @@
 #include "renderer/integrator/render.h"
 #include "renderer/loader/mitsuba/mitsuba_import.h"
 #include "renderer/loader/scene_loader.h"
+#include "renderer/output/output_files.h"
 #include "renderer/output/render_output.h"
 #include "spectra/input_error.h"
+#include "spectra/input_file.h"
 #include "tools/python/py_support.h"
 
 namespace ochre::python {
@@ -27,7 +30,7 @@ struct RenderOptions {
   std::optional<uint32_t> spp;
   std::optional<uint64_t> seed;
   std::optional<int> threads;
-  uint32_t sample_begin = 0;
+  uint64_t sample_begin = 0;
   bool aovs = false;
   bool stokes = false;
   int spectral_bins = 0;
@@ -39,14 +42,16 @@ struct RenderOptions {
 // write (render_exr_image), so they hold the same bits.
 class RenderResult {
  public:
-  // `outputs`: the working space and the camera sensor (film_to_rgb) of the render.
+  // `outputs`: the working space and the camera sensor (film_to_rgb) of the render; `inputs`: the files
+  // the scene was loaded from, which write_exr never replaces.
   RenderResult(std::unique_ptr<Film> film, RenderSettings settings, RenderStats stats, OutputSettings outputs,
-               std::string scene_file)
+               std::string scene_file, std::shared_ptr<const InputFileLog> inputs)
       : film_(std::move(film)),
         settings_(settings),
         stats_(stats),
         outputs_(std::move(outputs)),
-        scene_file_(std::move(scene_file)) {}
+        scene_file_(std::move(scene_file)),
+        inputs_(std::move(inputs)) {}
 
   const ExrImage& exr() {
     if (!exr_) {
@@ -169,7 +174,13 @@ class RenderResult {
     return d;
   }
 
-  void write_exr(const py::handle& path) { ochre::write_exr(to_path(path), exr()); }
+  // The checks of `ochre render -o` before writing (docs/cli.md, "Output files": no link, device, FIFO,
+  // directory or input of the scene is replaced), then the file written under a temporary name and renamed.
+  void write_exr(const py::handle& path_) {
+    const std::filesystem::path path = path_argument(path_, "path");
+    check_output_files({path}, *inputs_);
+    ochre::write_exr(path, exr());
+  }
 
   const char* colorspace() const { return kWorkingSpaces.name(outputs_.colorspace); }
   const RenderSettings& settings() const { return settings_; }
@@ -186,12 +197,14 @@ class RenderResult {
   RenderStats stats_;
   OutputSettings outputs_;
   std::string scene_file_;
+  std::shared_ptr<const InputFileLog> inputs_;
   std::unique_ptr<ExrImage> exr_;
 };
 
 class PyScene {
  public:
-  explicit PyScene(LoadedScene loaded) : loaded_(std::move(loaded)) {}
+  PyScene(LoadedScene loaded, std::shared_ptr<const InputFileLog> inputs)
+      : loaded_(std::move(loaded)), inputs_(std::move(inputs)) {}
 
   const Scene& scene() const { return *loaded_.scene; }
   const RenderJob& job() const { return loaded_.job; }
@@ -204,25 +217,25 @@ class PyScene {
     const Scene& scene = *loaded_.scene;
     RenderJob job = loaded_.job;
     RenderSettings& s = job.settings;
-    if (o.spp) {
-      if (*o.spp < 1 || *o.spp > (1u << 24))
-        throw InputError(fmt::format("spp: must be in [1, {}]", 1 << 24));
-      s.spp = *o.spp;
-    }
+    if (o.spp) s.spp = *o.spp;
     if (o.seed) s.seed = *o.seed;
-    if (o.threads) {
-      if (*o.threads < 0 || *o.threads > 4096) throw InputError("threads: must be in [0, 4096]");
-      s.threads = *o.threads;
-    }
-    s.sample_begin = o.sample_begin;
+    if (o.threads) s.threads = *o.threads;
+    // Sample indices are 32-bit: the range ends at 2^32 - 1 at most, as --sample-range A:B (docs/cli.md).
+    if (o.sample_begin + s.spp > kMaxSampleEnd)
+      throw InputError(
+          fmt::format("sample_begin, spp: samples [{}, {}) end past {} (2^32 - 1), where sample "
+                      "indices end (as --sample-range A:B with B < 2^32)",
+                      o.sample_begin, o.sample_begin + s.spp, kMaxSampleEnd));
+    s.sample_begin = static_cast<uint32_t>(o.sample_begin);
     const std::optional<ColorSpace> colorspace = kWorkingSpaces.parse(o.colorspace);
     if (!colorspace)
       throw InputError(
           fmt::format("colorspace: unknown '{}' (known: {})", o.colorspace, kWorkingSpaces.list()));
-    if (o.spectral_bins < 0 || o.spectral_bins > 471) throw InputError("spectral_bins: must be in [0, 471]");
     if (!(o.spectral_range.first >= 360.0f && o.spectral_range.second <= 830.0f &&
           o.spectral_range.first < o.spectral_range.second))
-      throw InputError("spectral_range: must be (min, max) with 360 <= min < max <= 830");
+      throw InputError(
+          fmt::format("spectral_range: must be (min, max) with 360 <= min < max <= 830 (got ({}, {}))",
+                      o.spectral_range.first, o.spectral_range.second));
     job.outputs.stokes = o.stokes;
     const PolarizationSetting mode = s.polarization;
     if (o.stokes && mode != PolarizationSetting::kAuto && mode != PolarizationSetting::kStokes)
@@ -235,6 +248,15 @@ class PyScene {
     layers.spectral_min = o.spectral_range.first;
     layers.spectral_max = o.spectral_range.second;
     layers.light_groups = scene.light_groups;  // docs/lights.md, "Light groups"
+    // The film and the EXR's channels must fit in memory, as for `ochre render` (docs/cli.md, "Memory").
+    OutputSettings estimate = job.outputs;
+    estimate.exr = "<RenderResult>";
+    estimate.png.clear();
+    estimate.polarization_png.clear();
+    estimate.aovs = o.aovs;
+    estimate.stokes = o.stokes;
+    estimate.spectral_bins = o.spectral_bins;
+    check_render_memory(s.width, s.height, estimate);
     auto film = std::make_unique<Film>(s.width, s.height, layers);
 
     const uint64_t total = uint64_t(s.width) * s.height * s.spp;
@@ -279,55 +301,87 @@ class PyScene {
     if (!progress.is_none()) progress(total, total);
     OutputSettings outputs = job.outputs;
     outputs.colorspace = *colorspace;
-    return std::make_unique<RenderResult>(std::move(film), s, stats, outputs, scene.file.string());
+    return std::make_unique<RenderResult>(std::move(film), s, stats, outputs, scene.file.string(), inputs_);
   }
 
  private:
   LoadedScene loaded_;
+  std::shared_ptr<const InputFileLog> inputs_;
 };
 
-// {"spp": 64, ...}: the values of Mitsuba $parameters, written as str() writes them.
+// {"spp": 64, ...}: the values of Mitsuba $parameters (-D NAME=VALUE), str, int or float, written as str()
+// writes them.
 std::vector<std::pair<std::string, std::string>> mitsuba_parameters(const py::object& parameters) {
   std::vector<std::pair<std::string, std::string>> p;
-  if (!parameters.is_none())
-    for (const auto& [key, value] : parameters.cast<py::dict>())
-      p.emplace_back(key.cast<std::string>(), py::str(value).cast<std::string>());
+  if (parameters.is_none()) return p;
+  if (!PyDict_Check(parameters.ptr()))
+    wrong_type("parameters", "a dict of str to str, int or float", parameters);
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(parameters)) {
+    if (!PyUnicode_Check(key.ptr())) wrong_type("parameters", "str keys (parameter names)", key);
+    const std::string name = string_argument(key, "parameters");
+    const std::string where = fmt::format("parameters['{}']", name);
+    if (name.empty() || name.find('=') != std::string::npos)
+      throw InputError(fmt::format("{}: a parameter name is not empty and has no '='", where));
+    std::string text;
+    if (PyUnicode_Check(value.ptr()))
+      text = string_argument(value, where);
+    else if (PyLong_Check(value.ptr()) && !PyBool_Check(value.ptr()))
+      text = std::to_string(integer_argument(value, where, LLONG_MIN, LLONG_MAX));
+    else if (PyFloat_Check(value.ptr()))
+      text = py::repr(py::float_(number_argument(value, where))).cast<std::string>();
+    else
+      wrong_type(where, "a str, int or float", value);
+    p.emplace_back(name, text);
+  }
   return p;
 }
 
-// A choice argument (polarization, sampler): its enum value; a ValueError naming the argument and the known
+// A choice argument (polarization, sampler): its enum value; InputError naming the argument and the known
 // values for any other string.
 template <class Enum, size_t N>
 Enum parsed_choice(const py::object& value, const char* argument, const NamedChoices<Enum, N>& choices) {
-  const std::string text = value.cast<std::string>();
+  const std::string text = string_argument(value, argument);
   const std::optional<Enum> parsed = choices.parse(text);
   if (!parsed) throw InputError(fmt::format("{}: unknown '{}' (known: {})", argument, text, choices.list()));
   return *parsed;
+}
+
+constexpr long long kMaxSpp = 1 << 24;       // as --spp
+constexpr long long kMaxThreads = 4096;      // as --threads
+constexpr long long kMaxResolution = 65536;  // pixels per side
+
+std::optional<uint32_t> spp_argument(const py::object& spp) {
+  if (spp.is_none()) return std::nullopt;
+  return static_cast<uint32_t>(integer_argument(spp, "spp", 1, kMaxSpp));
+}
+
+std::optional<int> threads_argument(const py::object& threads) {
+  if (threads.is_none()) return std::nullopt;
+  return static_cast<int>(integer_argument(threads, "threads", 0, kMaxThreads));
+}
+
+std::optional<uint64_t> seed_argument(const py::object& seed) {
+  if (seed.is_none()) return std::nullopt;
+  return unsigned_argument(seed, "seed");
 }
 
 SceneOverrides overrides_of(const py::object& spp, const py::object& resolution, const py::object& seed,
                             const py::object& threads, const py::object& polarization,
                             const py::object& sampler, const py::object& parameters) {
   SceneOverrides o;
-  if (!spp.is_none()) {
-    const long long v = spp.cast<long long>();
-    if (v < 1 || v > (1 << 24)) throw InputError(fmt::format("spp: must be in [1, {}] (got {})", 1 << 24, v));
-    o.spp = static_cast<uint32_t>(v);
-  }
+  o.spp = spp_argument(spp);
   if (!resolution.is_none()) {
-    const auto r = resolution.cast<std::pair<long long, long long>>();
-    if (r.first < 1 || r.second < 1 || r.first > 65536 || r.second > 65536)
+    const std::vector<py::object> r = items_argument(resolution, "resolution", 2, "(width, height)");
+    const long long w = integer_argument(r[0], "resolution[0]", LLONG_MIN, LLONG_MAX),
+                    h = integer_argument(r[1], "resolution[1]", LLONG_MIN, LLONG_MAX);
+    if (w < 1 || h < 1 || w > kMaxResolution || h > kMaxResolution)
       throw InputError(
-          fmt::format("resolution: must be (width, height) in [1, 65536] (got ({}, {}))", r.first, r.second));
-    o.width = static_cast<int>(r.first);
-    o.height = static_cast<int>(r.second);
+          fmt::format("resolution: must be (width, height) in [1, {}] (got ({}, {}))", kMaxResolution, w, h));
+    o.width = static_cast<int>(w);
+    o.height = static_cast<int>(h);
   }
-  if (!seed.is_none()) {
-    const long long v = seed.cast<long long>();
-    if (v < 0) throw InputError(fmt::format("seed: must be >= 0 (got {})", v));
-    o.seed = static_cast<uint64_t>(v);
-  }
-  if (!threads.is_none()) o.threads = threads.cast<int>();
+  o.seed = seed_argument(seed);
+  o.threads = threads_argument(threads);
   if (!polarization.is_none())
     o.polarization = parsed_choice(polarization, "polarization", kPolarizationSettings);
   if (!sampler.is_none()) o.sampler = parsed_choice(sampler, "sampler", kSamplerKinds);
@@ -340,17 +394,29 @@ std::unique_ptr<PyScene> load(const py::object& source, const py::object& spp, c
                               const py::object& polarization, const py::object& sampler,
                               const py::object& parameters, const py::object& base_dir) {
   const SceneOverrides o = overrides_of(spp, resolution, seed, threads, polarization, sampler, parameters);
-  if (py::isinstance<py::dict>(source)) {
+  auto inputs = std::make_shared<InputFileLog>();
+  if (PyDict_Check(source.ptr())) {
     const nlohmann::json root = to_json(source, "scene");
-    const std::filesystem::path dir =
-        base_dir.is_none() ? std::filesystem::current_path() : to_path(base_dir);
+    const std::filesystem::path dir = base_dir_argument(base_dir);
     py::gil_scoped_release release;
-    return std::make_unique<PyScene>(load_scene_json(root, "<dict>", dir / "<dict>", o));
+    const std::lock_guard lock(input_recording_mutex());
+    const InputFileLog::Recording recording(*inputs);
+    return std::make_unique<PyScene>(load_scene_json(root, "<dict>", dir / "<dict>", o), inputs);
   }
-  const std::filesystem::path path = to_path(source);
-  if (!base_dir.is_none()) throw py::value_error("base_dir applies to scenes given as a dict");
+  const std::filesystem::path path =
+      path_argument(source, "source", "a dict (the scene) or a path (str or os.PathLike)");
+  if (!base_dir.is_none()) throw InputError("base_dir: applies to scenes given as a dict only");
   py::gil_scoped_release release;
-  return std::make_unique<PyScene>(load_scene(path, o));
+  const std::lock_guard lock(input_recording_mutex());
+  const InputFileLog::Recording recording(*inputs);
+  return std::make_unique<PyScene>(load_scene(path, o), inputs);
+}
+
+// Names and messages from the scene's files as a list of str (bytes that are not UTF-8 become U+FFFD).
+py::list texts(const std::vector<std::string>& lines) {
+  py::list list;
+  for (const std::string& line : lines) list.append(text(line));
+  return list;
 }
 
 py::dict settings_of(const PyScene& p) {
@@ -411,51 +477,58 @@ void register_scene(py::module_& m) {
       .def_property_readonly("stats", &RenderResult::stats)
       .def_property_readonly("channels", &RenderResult::channels, "every EXR channel by name, (h, w) each")
       .def("write_exr", &RenderResult::write_exr, py::arg("path"),
-           "Writes the EXR `ochre render -o` would write for the same settings");
+           "Writes the EXR `ochre render -o` would write for the same settings, with its checks: a link, a "
+           "device, a FIFO, a directory or an input of the scene raises ochre.InputError and is left as it "
+           "was "
+           "(docs/cli.md, \"Output files\")");
 
   py::class_<PyScene>(m, "Scene", "A loaded scene (docs/python.md).")
       .def_property_readonly("settings", [](const PyScene& p) { return settings_of(p); })
-      .def_property_readonly("file", [](const PyScene& p) { return p.scene().file.string(); })
+      .def_property_readonly("file", [](const PyScene& p) { return text(p.scene().file.string()); })
       .def_property_readonly("width", [](const PyScene& p) { return p.job().settings.width; })
       .def_property_readonly("height", [](const PyScene& p) { return p.job().settings.height; })
       .def_property_readonly("mesh_count", [](const PyScene& p) { return p.scene().meshes.size(); })
       .def_property_readonly("light_count", [](const PyScene& p) { return p.scene().lights.size(); })
-      .def_property_readonly("material_names", [](const PyScene& p) { return p.scene().material_names; })
+      .def_property_readonly("material_names",
+                             [](const PyScene& p) { return texts(p.scene().material_names); })
       .def_property_readonly(
-          "warnings", [](const PyScene& p) { return p.scene().warnings; },
+          "warnings", [](const PyScene& p) { return texts(p.scene().warnings); },
           "What the scene loads but a user should know (docs/scene-format.md)")
       .def(
           "polarization_mode",
-          [](const PyScene& p, bool stokes) {
+          [](const PyScene& p, const py::object& stokes) {
             RenderJob job = p.job();
-            job.outputs.stokes = stokes;
+            job.outputs.stokes = bool_argument(stokes, "stokes");
             const PolarizationChoice c = polarization_for(p.scene(), job);
             return py::make_tuple(polarization_mode_name(c.mode), c.reason);
           },
-          py::arg("stokes") = false, "(mode, reason) the render would use")
+          py::arg("stokes") = py::bool_(false), "(mode, reason) the render would use")
       .def(
           "render",
-          [](PyScene& p, std::optional<uint32_t> spp, std::optional<uint64_t> seed,
-             std::optional<int> threads, uint32_t sample_begin, bool aovs, bool stokes, int spectral_bins,
-             std::pair<float, float> spectral_range, const std::string& colorspace,
+          [](PyScene& p, const py::object& spp, const py::object& seed, const py::object& threads,
+             const py::object& sample_begin, const py::object& aovs, const py::object& stokes,
+             const py::object& spectral_bins, const py::object& spectral_range, const py::object& colorspace,
              const py::object& progress) {
             RenderOptions o;
-            o.spp = spp;
-            o.seed = seed;
-            o.threads = threads;
-            o.sample_begin = sample_begin;
-            o.aovs = aovs;
-            o.stokes = stokes;
-            o.spectral_bins = spectral_bins;
-            o.spectral_range = spectral_range;
-            o.colorspace = colorspace;
-            return p.render(o, progress);
+            o.spp = spp_argument(spp);
+            o.seed = seed_argument(seed);
+            o.threads = threads_argument(threads);
+            o.sample_begin = unsigned_argument(sample_begin, "sample_begin", 0, kMaxSampleEnd);
+            o.aovs = bool_argument(aovs, "aovs");
+            o.stokes = bool_argument(stokes, "stokes");
+            o.spectral_bins = static_cast<int>(integer_argument(spectral_bins, "spectral_bins", 0, 471));
+            const std::vector<py::object> range =
+                items_argument(spectral_range, "spectral_range", 2, "(min, max)");
+            o.spectral_range = {static_cast<float>(number_argument(range[0], "spectral_range[0]")),
+                                static_cast<float>(number_argument(range[1], "spectral_range[1]"))};
+            o.colorspace = string_argument(colorspace, "colorspace");
+            return p.render(o, callable_argument(progress, "progress"));
           },
           py::kw_only(), py::arg("spp") = py::none(), py::arg("seed") = py::none(),
-          py::arg("threads") = py::none(), py::arg("sample_begin") = 0, py::arg("aovs") = false,
-          py::arg("stokes") = false, py::arg("spectral_bins") = 0,
-          py::arg("spectral_range") = std::pair<float, float>(360.0f, 830.0f),
-          py::arg("colorspace") = "rec709", py::arg("progress") = py::none(),
+          py::arg("threads") = py::none(), py::arg("sample_begin") = py::int_(0),
+          py::arg("aovs") = py::bool_(false), py::arg("stokes") = py::bool_(false),
+          py::arg("spectral_bins") = py::int_(0), py::arg("spectral_range") = py::make_tuple(360.0, 830.0),
+          py::arg("colorspace") = py::str("rec709"), py::arg("progress") = py::none(),
           "Renders the scene; the GIL is released meanwhile. progress(done, total) is called about every 0.1 "
           "s "
           "with the pixel-samples done; Ctrl-C stops the render and raises KeyboardInterrupt.");
@@ -472,7 +545,8 @@ void register_scene(py::module_& m) {
   m.def(
       "mitsuba_to_json",
       [](const py::object& path, const py::object& parameters) {
-        return from_json(translate_mitsuba_scene(to_path(path), mitsuba_parameters(parameters)).scene);
+        return from_json(
+            translate_mitsuba_scene(path_argument(path, "path"), mitsuba_parameters(parameters)).scene);
       },
       py::arg("path"), py::arg("parameters") = py::none(),
       "The ochre scene (a dict) a Mitsuba 3 XML scene translates into (docs/mitsuba-import.md)");
