@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -58,6 +59,12 @@ Film::Film(int width, int height, const FilmLayers& layers) : width_(width), hei
   if (layers.spectral_bins > 0)
     enable_spectral(layers.spectral_bins, layers.spectral_min, layers.spectral_max);
   if (!layers.light_groups.empty()) enable_light_groups(layers.light_groups);
+}
+
+bool is_light_group_name(std::string_view name) {
+  return !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
 }
 
 void Film::enable_light_groups(const std::vector<std::string>& names) {

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "spectra/color_types.h"
@@ -34,6 +35,11 @@ struct FilmLayers {
   bool stokes = false;
   std::vector<std::string> light_groups;  // XYZ per light group (docs/lights.md, "Light groups")
 };
+
+// A light group's name: 1 to 64 letters, digits, '_' or '-' (it names EXR channels, group.<name>.X), and
+// at most kMaxLightGroups groups in a film (docs/lights.md, "Light groups").
+inline constexpr size_t kMaxLightGroups = 16;
+bool is_light_group_name(std::string_view name);
 
 // "film 640x480 (XYZ, AOVs, Stokes, 16 spectral bins)", for messages.
 std::string film_description(int width, int height, const FilmLayers& layers);

@@ -97,7 +97,7 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
   const double threshold = s.noise_threshold;
   // Light groups: the S0 of each group's lights, per sample (docs/lights.md, "Light groups").
   const size_t group_count = film.light_groups().size();
-  std::array<SampledSpectrum, Scene::kMaxLightGroups> groups;
+  std::array<SampledSpectrum, kMaxLightGroups> groups;
   SampledSpectrum* const group_sums = group_count > 0 ? groups.data() : nullptr;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {

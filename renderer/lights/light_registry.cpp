@@ -9,6 +9,7 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "renderer/film/film.h"
 #include "renderer/lights/light_type.h"
 
 namespace ochre {
@@ -55,10 +56,8 @@ FieldSpec light_group_field(const char* name) {
 std::string parse_light_group(const JsonFields& f, const char* key) {
   if (!f.has(key)) return "";
   const std::string name = f.required_string(key);
-  const bool valid = !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-  });
-  if (!valid) f.fail(key, fmt::format("'{}' is not a group name: 1 to 64 letters, digits, '_' or '-'", name));
+  if (!is_light_group_name(name))
+    f.fail(key, fmt::format("'{}' is not a group name: 1 to 64 letters, digits, '_' or '-'", name));
   if (name == kOtherLightGroup)
     f.fail(key, fmt::format("'{}' is the group of the emitters that name none; choose another name", name));
   return name;

@@ -502,10 +502,10 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
   scene->build_lights(job.settings.mirror_lights);
   job.outputs.light_groups = scene->light_groups;
   check_area_light_power(*scene, top);
-  if (scene->light_groups.size() > Scene::kMaxLightGroups)
+  if (scene->light_groups.size() > kMaxLightGroups)
     top.fail("lights",
              fmt::format("{} light groups (with \"other\", the emitters that name none); at most {}",
-                         scene->light_groups.size(), Scene::kMaxLightGroups));
+                         scene->light_groups.size(), kMaxLightGroups));
   return loaded;
 }
 

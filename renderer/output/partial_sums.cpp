@@ -166,19 +166,16 @@ void parse_identity_fields(const std::string& file, PartialSumsHeader& header) {
   if (error != std::errc() || end != threshold.data() + threshold.size() || !(value >= 0.0 && value <= 1.0))
     fail_field(file, "ochre.noiseThreshold", fmt::format("expected a number in [0, 1], got '{}'", threshold));
   header.noise_threshold = value;
-  // Light groups: names of letters, digits, '_' and '-', comma-separated (renderer/lights/light_type.h).
+  // Light groups: comma-separated names (is_light_group_name, renderer/film/film.h).
   const std::string_view groups = field("ochre.lightGroups");
   header.layers.light_groups.clear();
   for (size_t start = 0; start < groups.size();) {
     const size_t comma = std::min(groups.find(',', start), groups.size());
     const std::string_view name = groups.substr(start, comma - start);
-    const bool valid =
-        !name.empty() && name.size() <= 64 && std::all_of(name.begin(), name.end(), [](char c) {
-          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-        });
-    if (!valid || header.layers.light_groups.size() >= 16)
+    if (!is_light_group_name(name) || header.layers.light_groups.size() >= kMaxLightGroups)
       fail_field(file, "ochre.lightGroups",
-                 fmt::format("expected up to 16 group names separated by commas, got '{}'", groups));
+                 fmt::format("expected up to {} group names separated by commas, got '{}'", kMaxLightGroups,
+                             groups));
     header.layers.light_groups.emplace_back(name);
     start = comma + 1;
     if (comma + 1 == groups.size())

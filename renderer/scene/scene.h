@@ -15,6 +15,7 @@
 #include "materials/core/mueller.h"
 #include "materials/graph/compiled_material.h"
 #include "renderer/camera/camera.h"
+#include "renderer/film/film.h"
 #include "renderer/film/pixel_filter.h"
 #include "renderer/geometry/accel.h"
 #include "renderer/geometry/mesh.h"
@@ -73,7 +74,6 @@ struct Scene {
   std::vector<std::string> light_groups;
   std::vector<int> light_group_of;
   int other_light_group = -1;
-  static constexpr size_t kMaxLightGroups = 16;
   // Fills light_groups, light_group_of and other_light_group from the lights' groups.
   void build_light_groups();
 

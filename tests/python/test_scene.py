@@ -143,6 +143,35 @@ class SameBitsAsTheCommandLine(unittest.TestCase):
             for name in cli:
                 self.assertTrue(np.array_equal(written[name], cli[name]), name)
 
+    def test_noise_threshold_equals_the_command_line(self):
+        # The same bits as `ochre render --noise-threshold`; pixels stop at a power of two from 16 up.
+        with tempfile.TemporaryDirectory() as d:
+            exr = os.path.join(d, "cli.exr")
+            subprocess.run([os.path.join(BIN, "ochre"), "render", BOX, "-o", exr, "-q", "--spp", "64",
+                            "--resolution", "16x12", "--seed", "3", "--noise-threshold", "0.2"], check=True)
+            cli, attributes = ochre.read_exr(exr)
+            result = ochre.load_scene(BOX, resolution=(16, 12), seed=3).render(spp=64, noise_threshold=0.2)
+            self.assertEqual(sorted(result.channels), sorted(cli))
+            for name in cli:
+                self.assertTrue(np.array_equal(result.channels[name], cli[name]), name)
+            counts = set(np.unique(result.channels["samples.Y"]).tolist())
+            self.assertLessEqual(counts, {16.0, 32.0, 64.0})
+            self.assertIn(16.0, counts)  # a threshold of 20 % stops some pixels early
+            self.assertEqual(attributes["ochre.noiseThreshold"], "0.2")
+
+    def test_noise_threshold_refusals(self):
+        scene = ochre.load_scene(BOX, resolution=(8, 8), spp=16)
+        for bad in (-0.1, 1.5, float("nan")):
+            with self.assertRaises(ochre.InputError) as error:
+                scene.render(noise_threshold=bad)
+            self.assertIn("noise_threshold", str(error.exception))
+        with self.assertRaises(TypeError) as error:
+            scene.render(noise_threshold="low")
+        self.assertIn("noise_threshold", str(error.exception))
+        with self.assertRaises(ochre.InputError) as error:
+            scene.render(noise_threshold=0.1, sample_begin=16)
+        self.assertIn("starts at sample 0", str(error.exception))
+
     def test_threads_do_not_change_the_image(self):
         scene = ochre.load_scene(BOX, resolution=(16, 16), spp=2)
         self.assertTrue(np.array_equal(scene.render(threads=1).rgb, scene.render(threads=2).rgb))

@@ -11,10 +11,13 @@
 #   tools/dev/fuzz.sh --build                       configures and builds the fuzz tree only (exit 77 without
 #                                               clang-14 / libFuzzer)
 #   tools/dev/fuzz.sh --list                        the targets: scene material mesh csv envmap mitsuba python
+#                                               arguments
 #
 # The target python is the Python module's driver tests/fuzz/fuzz_python.py (random arguments to every entry
 # point, calls in child processes; no clang needed): it runs on the module of the normal build
 # ($OCHRE_PYTHON_DIR, default build/python) with /usr/bin/python3, and logs to FINDINGS_DIR/fuzz.log.
+# The target arguments is the programs' command-line driver tests/fuzz/fuzz_arguments.py (valid command lines
+# of every program, mutated): it runs the programs of the normal build ($OCHRE_BIN_DIR, default build/bin).
 #
 # The fuzz tree (clang-14, -fsanitize=fuzzer,address,undefined, -O1) is build/fuzz, or
 # $OCHRE_FUZZ_BUILD_DIR. A long run grows its corpus in build/fuzz/corpus/TARGET (kept between runs) from
@@ -26,30 +29,41 @@ set -euo pipefail
 SOURCE_DIR="$(cd "$(dirname "$0")/../.." && pwd)"
 BUILD_DIR="${OCHRE_FUZZ_BUILD_DIR:-$SOURCE_DIR/build/fuzz}"
 CXX_FUZZ="${OCHRE_FUZZ_CXX:-clang++-14}"
-TARGETS="scene material mesh csv envmap mitsuba python"
+TARGETS="scene material mesh csv envmap mitsuba python arguments"
 SKIP=77
 
 usage() {
-  sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
-# The Python module's driver for SECONDS (docs/validation.md, "Fuzzing"); its report on stdout, or in LOG.
-python_run() {
-  local seconds="$1" log="${2:-}"
-  local python_dir="${OCHRE_PYTHON_DIR:-$SOURCE_DIR/build/python}" status=0
-  if [ ! -d "$python_dir/ochre" ]; then
-    echo "tools/dev/fuzz.sh: no Python module in $python_dir (build it: cmake --build build --target ochre_python)" >&2
-    exit 2
+# A Python driver (python: the module's, arguments: the programs' command lines; docs/validation.md,
+# "Fuzzing") for SECONDS; its report on stdout, or in LOG.
+driver_run() {
+  local target="$1" seconds="$2" log="${3:-}" status=0
+  local -a command
+  if [ "$target" = python ]; then
+    local python_dir="${OCHRE_PYTHON_DIR:-$SOURCE_DIR/build/python}"
+    if [ ! -d "$python_dir/ochre" ]; then
+      echo "tools/dev/fuzz.sh: no Python module in $python_dir (build it: cmake --build build --target ochre_python)" >&2
+      exit 2
+    fi
+    command=(env PYTHONPATH="$python_dir" /usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_python.py")
+  else
+    local bin_dir="${OCHRE_BIN_DIR:-$SOURCE_DIR/build/bin}"
+    if [ ! -x "$bin_dir/ochre" ]; then
+      echo "tools/dev/fuzz.sh: no programs in $bin_dir (build them: cmake --build build)" >&2
+      exit 2
+    fi
+    command=(/usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_arguments.py" --bin "$bin_dir")
   fi
   if [ -z "$log" ]; then
-    PYTHONPATH="$python_dir" /usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_python.py" --seconds "$seconds"
+    "${command[@]}" --seconds "$seconds"
     return
   fi
   mkdir -p "$(dirname "$log")"
-  echo "tools/dev/fuzz.sh: fuzzing the Python module for $seconds s; log in $log"
-  PYTHONPATH="$python_dir" nice -n 10 /usr/bin/python3 "$SOURCE_DIR/tests/fuzz/fuzz_python.py" \
-    --seconds "$seconds" >"$log" 2>&1 || status=$?
+  echo "tools/dev/fuzz.sh: fuzzing $target for $seconds s; log in $log"
+  nice -n 10 "${command[@]}" --seconds "$seconds" >"$log" 2>&1 || status=$?
   tail -n 20 "$log"
   return $status
 }
@@ -111,10 +125,10 @@ common_options() {
 short_run() {
   local target="$1" seconds="$2"
   check_target "$target"
-  if [ "$target" = python ]; then
-    python_run "$seconds"
-    return
-  fi
+  case "$target" in python | arguments)
+    driver_run "$target" "$seconds"
+    return ;;
+  esac
   local fuzzer="$BUILD_DIR/bin/fuzz_$target"
   if [ ! -x "$fuzzer" ]; then
     require_toolchain
@@ -140,10 +154,10 @@ long_run() {
     echo "tools/dev/fuzz.sh: HOURS must be a positive number (got '$hours')" >&2
     exit 2
   }
-  if [ "$target" = python ]; then
-    python_run "$seconds" "${3:-$BUILD_DIR/findings/python}/fuzz.log"
-    return
-  fi
+  case "$target" in python | arguments)
+    driver_run "$target" "$seconds" "${3:-$BUILD_DIR/findings/$target}/fuzz.log"
+    return ;;
+  esac
   build
   local findings="${3:-$BUILD_DIR/findings/$target}" corpus="$BUILD_DIR/corpus/$target"
   mkdir -p "$findings" "$corpus"

@@ -36,6 +36,7 @@ struct RenderOptions {
   int spectral_bins = 0;
   std::pair<float, float> spectral_range{360.0f, 830.0f};
   std::string colorspace = "rec709";
+  std::optional<double> noise_threshold;  // None: the scene's integrator.noise_threshold
 };
 
 // A finished render: the film and how it was made. Arrays are made from the EXR the command line would
@@ -220,6 +221,14 @@ class PyScene {
     if (o.spp) s.spp = *o.spp;
     if (o.seed) s.seed = *o.seed;
     if (o.threads) s.threads = *o.threads;
+    if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
+    // A pixel of a noise-threshold render decides from all its samples so far, so it starts at sample 0,
+    // as `ochre render --noise-threshold` refuses --sample-range (docs/cli.md, "Noise threshold").
+    if (s.noise_threshold > 0.0 && o.sample_begin != 0)
+      throw InputError(
+          fmt::format("noise_threshold, sample_begin: a noise-threshold render ({}) starts at "
+                      "sample 0, not {}; split it by pixels, not by samples",
+                      s.noise_threshold, o.sample_begin));
     // Sample indices are 32-bit: the range ends at 2^32 - 1 at most, as --sample-range A:B (docs/cli.md).
     if (o.sample_begin + s.spp > kMaxSampleEnd)
       throw InputError(
@@ -508,7 +517,7 @@ void register_scene(py::module_& m) {
           [](PyScene& p, const py::object& spp, const py::object& seed, const py::object& threads,
              const py::object& sample_begin, const py::object& aovs, const py::object& stokes,
              const py::object& spectral_bins, const py::object& spectral_range, const py::object& colorspace,
-             const py::object& progress) {
+             const py::object& noise_threshold, const py::object& progress) {
             RenderOptions o;
             o.spp = spp_argument(spp);
             o.seed = seed_argument(seed);
@@ -522,13 +531,21 @@ void register_scene(py::module_& m) {
             o.spectral_range = {static_cast<float>(number_argument(range[0], "spectral_range[0]")),
                                 static_cast<float>(number_argument(range[1], "spectral_range[1]"))};
             o.colorspace = string_argument(colorspace, "colorspace");
+            if (!noise_threshold.is_none()) {
+              o.noise_threshold = number_argument(noise_threshold, "noise_threshold");
+              if (!(*o.noise_threshold >= 0.0 && *o.noise_threshold <= 1.0))
+                throw InputError(
+                    fmt::format("noise_threshold: must be a number in [0, 1] (0 turns it off), not {}",
+                                *o.noise_threshold));
+            }
             return p.render(o, callable_argument(progress, "progress"));
           },
           py::kw_only(), py::arg("spp") = py::none(), py::arg("seed") = py::none(),
           py::arg("threads") = py::none(), py::arg("sample_begin") = py::int_(0),
           py::arg("aovs") = py::bool_(false), py::arg("stokes") = py::bool_(false),
           py::arg("spectral_bins") = py::int_(0), py::arg("spectral_range") = py::make_tuple(360.0, 830.0),
-          py::arg("colorspace") = py::str("rec709"), py::arg("progress") = py::none(),
+          py::arg("colorspace") = py::str("rec709"), py::arg("noise_threshold") = py::none(),
+          py::arg("progress") = py::none(),
           "Renders the scene; the GIL is released meanwhile. progress(done, total) is called about every 0.1 "
           "s "
           "with the pixel-samples done; Ctrl-C stops the render and raises KeyboardInterrupt.");
