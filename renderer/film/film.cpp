@@ -47,7 +47,8 @@ std::size_t Film::bytes_per_pixel(const FilmLayers& layers) {
   const std::size_t components = layers.stokes ? 4 : 1;
   return sizeof(Pixel) + (layers.aovs ? sizeof(AovPixel) : 0) + (layers.stokes ? 9 * sizeof(__int128) : 0) +
          static_cast<std::size_t>(std::max(layers.spectral_bins, 0)) * components * sizeof(__int128) +
-         layers.light_groups.size() * 3 * sizeof(__int128);
+         layers.light_groups.size() * static_cast<std::size_t>(std::max(layers.spectral_bins, 1)) * 3 *
+             sizeof(__int128);
 }
 
 Film::Film(int width, int height, const FilmLayers& layers) : width_(width), height_(height) {
@@ -69,22 +70,41 @@ bool is_light_group_name(std::string_view name) {
 
 void Film::enable_light_groups(const std::vector<std::string>& names) {
   light_groups_ = names;
-  groups_.assign(pixels_.size() * names.size() * 3, 0);
+  group_bins_ = std::max(spectral_bins_, 1);
+  groups_.assign(pixels_.size() * names.size() * static_cast<size_t>(group_bins_) * 3, 0);
 }
 
-void Film::add_group_sample(int x, int y, size_t group, const XYZ& xyz) {
-  __int128* g = &groups_[(index(x, y) * light_groups_.size() + group) * 3];
+int Film::group_bin(float lambda_nm) const {
+  if (group_bins_ == 1) return 0;
+  const int bin = static_cast<int>(std::floor((lambda_nm - lambda_min_) / bin_width_));
+  return std::clamp(bin, 0, group_bins_ - 1);
+}
+
+void Film::add_group_sample(int x, int y, size_t group, int bin, const XYZ& xyz) {
+  __int128* g = &groups_[((index(x, y) * light_groups_.size() + group) * group_bins_ + bin) * 3];
   g[0] += to_fixed(xyz.x);
   g[1] += to_fixed(xyz.y);
   g[2] += to_fixed(xyz.z);
 }
 
+XYZ Film::mean_group(int x, int y, size_t group, int bin) const {
+  const size_t i = index(x, y);
+  const double n = std::max<double>(1.0, static_cast<double>(pixels_[i].count));
+  const __int128* g = &groups_[((i * light_groups_.size() + group) * group_bins_ + bin) * 3];
+  return {static_cast<float>(from_fixed(g[0]) / n), static_cast<float>(from_fixed(g[1]) / n),
+          static_cast<float>(from_fixed(g[2]) / n)};
+}
+
 XYZ Film::mean_group(int x, int y, size_t group) const {
   const size_t i = index(x, y);
   const double n = std::max<double>(1.0, static_cast<double>(pixels_[i].count));
-  const __int128* g = &groups_[(i * light_groups_.size() + group) * 3];
-  return {static_cast<float>(from_fixed(g[0]) / n), static_cast<float>(from_fixed(g[1]) / n),
-          static_cast<float>(from_fixed(g[2]) / n)};
+  // The exact sum over the bins (integers), then one rounding.
+  const __int128* g = &groups_[(i * light_groups_.size() + group) * group_bins_ * 3];
+  __int128 sum[3] = {0, 0, 0};
+  for (int b = 0; b < group_bins_; ++b)
+    for (int c = 0; c < 3; ++c) sum[c] += g[b * 3 + c];
+  return {static_cast<float>(from_fixed(sum[0]) / n), static_cast<float>(from_fixed(sum[1]) / n),
+          static_cast<float>(from_fixed(sum[2]) / n)};
 }
 
 void Film::add_sample(int x, int y, const XYZ& xyz) {
@@ -138,6 +158,7 @@ void Film::enable_spectral(int bins, float lambda_min, float lambda_max) {
   lambda_min_ = lambda_min;
   bin_width_ = (lambda_max - lambda_min) / static_cast<float>(bins);
   allocate_spectral();
+  if (!light_groups_.empty()) enable_light_groups(light_groups_);  // now per bin
 }
 
 void Film::allocate_spectral() {
@@ -225,7 +246,10 @@ std::vector<std::string> Film::accumulator_names() const {
   for (int c = 0; c < stokes_components_ && spectral_bins_ > 0; ++c)
     for (int b = 0; b < spectral_bins_; ++b) names.push_back(fmt::format("S{}.bin{}", c, b));
   for (const std::string& group : light_groups_)
-    for (const char* xyz : {"X", "Y", "Z"}) names.push_back(fmt::format("group.{}.{}", group, xyz));
+    for (int b = 0; b < group_bins_; ++b)
+      for (const char* xyz : {"X", "Y", "Z"})
+        names.push_back(group_bins_ == 1 ? fmt::format("group.{}.{}", group, xyz)
+                                         : fmt::format("group.{}.bin{}.{}", group, b, xyz));
   return names;
 }
 
@@ -250,7 +274,7 @@ Film::AccumulatorRef Film::accumulator_ref(size_t index, size_t pixel) {
   const size_t per_pixel = static_cast<size_t>(spectral_bins_) * stokes_components_;
   if (index < per_pixel) return {&spectral_[pixel * per_pixel + index], nullptr};
   index -= per_pixel;
-  const size_t group_sums = light_groups_.size() * 3;
+  const size_t group_sums = light_groups_.size() * static_cast<size_t>(group_bins_) * 3;
   if (index < group_sums) return {&groups_[pixel * group_sums + index], nullptr};
   throw std::out_of_range("Film: no accumulator " + std::to_string(index));
 }

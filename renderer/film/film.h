@@ -87,13 +87,21 @@ class Film {
   // Mean XYZ-weighted Stokes component c in 1..3.
   XYZ mean_stokes(int x, int y, int c) const;
 
-  // Light groups: XYZ per group (S0 only), whose sum over the groups is the pixel's XYZ up to rounding.
+  // Light groups: XYZ per group (S0 only), whose sum over the groups is the pixel's XYZ up to rounding. With
+  // spectral bins (enable_spectral first), each group's XYZ is kept per bin of the sample's wavelength, so
+  // that a new emission spectrum can weigh each bin (docs/lights.md, "Relighting").
   void enable_light_groups(const std::vector<std::string>& names);
   const std::vector<std::string>& light_groups() const { return light_groups_; }
-  // Adds one sample's XYZ of group `group` (the sample's total is added with add_sample).
-  void add_group_sample(int x, int y, size_t group, const XYZ& xyz);
-  // Mean XYZ of group `group` over the pixel's samples.
+  // 1, or the spectral bins when the groups are kept per bin.
+  int group_bins() const { return group_bins_; }
+  // The group bin of a wavelength: its spectral bin, wavelengths outside the range in the first or last.
+  int group_bin(float lambda_nm) const;
+  // Adds one sample's XYZ of group `group` from wavelengths of bin `bin` (the sample's total is added with
+  // add_sample).
+  void add_group_sample(int x, int y, size_t group, int bin, const XYZ& xyz);
+  // Mean XYZ of group `group` over the pixel's samples: of every bin, or of bin `bin`.
   XYZ mean_group(int x, int y, size_t group) const;
+  XYZ mean_group(int x, int y, size_t group, int bin) const;
 
   // Adds the sums of another film with the same layers over the same pixels (a disjoint sample range),
   // or, with an offset, over the pixels [x0, x0 + other.width()) x [y0, y0 + other.height()) of this
@@ -144,7 +152,8 @@ class Film {
   int stokes_components_ = 1;     // 4 with Stokes output
   std::vector<__int128> stokes_;  // per pixel: S1..S3 x XYZ
   std::vector<std::string> light_groups_;
-  std::vector<__int128> groups_;  // per pixel: groups x XYZ
+  std::vector<__int128> groups_;  // per pixel: groups x group bins x XYZ
+  int group_bins_ = 1;
   float lambda_min_ = 0.0f, bin_width_ = 0.0f;
 };
 

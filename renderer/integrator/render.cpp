@@ -49,6 +49,24 @@ XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const S
   return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
 }
 
+// The groups' S0 of one sample (docs/lights.md, "Light groups"): per group, or per group and bin of each
+// wavelength's share (the shares sum to the group's value: sensor_value is linear in the lanes).
+void add_group_samples(Film& film, int x, int y, const SampledSpectrum* groups,
+                       const SampledWavelengths& lambda, const SensorResponse* sensor) {
+  const size_t count = film.light_groups().size();
+  if (film.group_bins() == 1) {
+    for (size_t g = 0; g < count; ++g)
+      film.add_group_sample(x, y, g, 0, sensor_value(sensor, groups[g], lambda));
+    return;
+  }
+  for (size_t g = 0; g < count; ++g)
+    for (int i = 0; i < kSpectrumSamples; ++i) {
+      SampledSpectrum lane(0.0f);
+      lane[i] = groups[g][i];
+      film.add_group_sample(x, y, g, film.group_bin(lambda[i]), sensor_value(sensor, lane, lambda));
+    }
+}
+
 SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const SampledWavelengths& lambda,
                       const SensorResponse* sensor, const SampledSpectrum* groups) {
   XYZ xyz = sensor_value(sensor, S[0], lambda);
@@ -67,9 +85,7 @@ SampleFate add_sample(Film& film, int x, int y, const SensorStokes& S, const Sam
   bool clamped = beyond_film_range(xyz);
   for (const XYZ& s : s123) clamped = clamped || beyond_film_range(s);
   film.add_sample(x, y, xyz);
-  if (groups)
-    for (size_t g = 0; g < film.light_groups().size(); ++g)
-      film.add_group_sample(x, y, g, sensor_value(sensor, groups[g], lambda));
+  if (groups) add_group_samples(film, x, y, groups, lambda, sensor);
   if (film.has_stokes()) film.add_stokes_sample(x, y, s123);
   if (film.spectral_bins() > 0)
     for (int c = 0; c < (film.has_stokes() ? 4 : 1); ++c) film.add_spectral_sample(x, y, S[c], lambda, c);

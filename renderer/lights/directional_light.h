@@ -21,6 +21,7 @@ class DirectionalLight final : public Light {
   float power() const override;
   float importance(const Vec3& p) const override;
   bool is_delta() const override { return true; }
+  const Spectrum* emission_spectrum() const override { return irradiance_.spectrum().get(); }
 
  private:
   Vec3 to_light_;  // unit, opposite to the direction of travel

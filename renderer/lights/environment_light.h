@@ -38,6 +38,7 @@ class EnvironmentLight final : public Light {
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
   float importance(const Vec3& p) const override;
+  const Spectrum* emission_spectrum() const override { return radiance_.get(); }  // null for a map
 
   // Radiance arriving along -direction (a ray escaping the scene along `direction`, any length > 0).
   SampledSpectrum radiance(const Vec3& direction, const SampledWavelengths& lambda) const;

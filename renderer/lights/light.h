@@ -7,6 +7,7 @@
 
 #include "materials/core/vec3.h"
 #include "spectra/sampled_wavelengths.h"
+#include "spectra/spectrum.h"
 
 namespace ochre {
 
@@ -38,6 +39,9 @@ class Light {
   // cone). Chooses among a scene's few lights at each shading point (scene.h, light_pmfs).
   virtual float importance(const Vec3& p) const = 0;
   virtual bool is_delta() const { return false; }
+  // The spectrum the light emits, up to a factor that does not depend on the wavelength, when it has one
+  // (a map or a textured surface has none: null). `ochre relight` changes it (docs/lights.md, "Relighting").
+  virtual const Spectrum* emission_spectrum() const { return nullptr; }
 
   // Transmission axis (world) of a linear polarizer in front of the light (light_polarizer.h), if any.
   std::optional<Vec3> polarizer_axis;

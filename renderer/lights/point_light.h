@@ -18,6 +18,7 @@ class PointLight final : public Light {
   float power() const override;
   float importance(const Vec3& p) const override;
   bool is_delta() const override { return true; }
+  const Spectrum* emission_spectrum() const override { return intensity_.spectrum().get(); }
 
  private:
   Vec3 position_;

@@ -22,6 +22,7 @@ class SphereLight final : public Light {
                                     const SampledWavelengths& lambda) const override;
   float power() const override;
   float importance(const Vec3& p) const override;
+  const Spectrum* emission_spectrum() const override { return intensity_.spectrum().get(); }
 
   // A flickering flame moves and changes its intensity between frames (renderer/flame_flicker.h).
   void set_state(const Vec3& center, SpectrumPtr intensity);

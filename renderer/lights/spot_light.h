@@ -21,6 +21,7 @@ class SpotLight final : public Light {
   float power() const override;
   float importance(const Vec3& p) const override;
   bool is_delta() const override { return true; }
+  const Spectrum* emission_spectrum() const override { return intensity_.spectrum().get(); }
 
   // Angular profile in [0, 1] for a direction leaving the light.
   float profile(const Vec3& direction) const;

@@ -501,6 +501,7 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
   scene->accel = std::make_unique<Accel>(scene->meshes);
   scene->build_lights(job.settings.mirror_lights);
   job.outputs.light_groups = scene->light_groups;
+  job.outputs.light_group_emission = scene->light_group_emission();
   check_area_light_power(*scene, top);
   if (scene->light_groups.size() > kMaxLightGroups)
     top.fail("lights",

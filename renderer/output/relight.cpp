@@ -8,10 +8,13 @@
 #include <cmath>
 #include <map>
 
+#include "renderer/json/spectrum_json.h"
 #include "renderer/output/output_files.h"
+#include "renderer/output/render_output.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/image_error.h"
 #include "renderer/util/output_transaction.h"
+#include "spectra/emission_shape.h"
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 
@@ -47,6 +50,79 @@ double attribute_number(const ExrImage& image, const std::string& file, const ch
   return value;
 }
 
+// The spectrum of "cct=T" or "spectrum=NAME|FILE.csv", parsed as a scene's light spectrum is.
+SpectrumPtr new_emission(std::string_view text, const std::string& key, const std::string& value) {
+  const std::string where = fmt::format("--group '{}': {}", text, key);
+  nlohmann::json spec;
+  if (key == "cct") {
+    double kelvin = 0.0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), kelvin);
+    if (error != std::errc() || end != value.data() + value.size() || !(kelvin >= 500.0 && kelvin <= 1e5))
+      throw InputError(fmt::format(
+          "{}: expected a temperature in kelvin in [500, 100000], as a flame's cct, got '{}'", where, value));
+    spec = {{"blackbody", kelvin}};
+  } else if (value.empty()) {
+    throw InputError(fmt::format("{}: expected a spectrum name or a CSV file", where));
+  } else if (value.find('/') != std::string::npos ||
+             (value.size() > 4 && value.substr(value.size() - 4) == ".csv")) {
+    spec = {{"file", value}};
+  } else {
+    spec = {{"name", value}};
+  }
+  return parse_spectrum(spec, SpectrumRole::Illuminant, where, std::filesystem::current_path());
+}
+
+// The bin layers of `group` (group.<group>.<centre>nm), by centre.
+std::map<float, std::string> group_bin_layers(const ExrImage& image, const std::string& group) {
+  std::map<float, std::string> layers;
+  const std::string prefix = "group." + group + ".";
+  for (const auto& [name, values] : image.channels) {
+    if (name.size() < prefix.size() + 5 || name.rfind(prefix, 0) != 0 ||
+        name.substr(name.size() - 4) != "nm.R")
+      continue;
+    std::string centre = name.substr(prefix.size(), name.size() - prefix.size() - 4);
+    std::replace(centre.begin(), centre.end(), ',', '.');
+    float nm = 0.0f;
+    const auto [end, error] = std::from_chars(centre.data(), centre.data() + centre.size(), nm);
+    if (error == std::errc() && end == centre.data() + centre.size())
+      layers[nm] = name.substr(0, name.size() - 2);
+  }
+  return layers;
+}
+
+// The weight of each bin layer of `group` for `change`: scale x the ratio of the new emission to the old.
+std::vector<double> bin_weights(const ExrImage& image, const std::string& file, const GroupChange& change,
+                                const std::map<float, std::string>& bins) {
+  const auto recorded = image.string_attributes.find(light_group_emission_attribute(change.group));
+  if (bins.empty())
+    throw InputError(fmt::format(
+        "{}: light group '{}' has no spectral bins, in which a change of spectrum ({}) divides out: render "
+        "with --spectral-bins N (docs/lights.md, \"Relighting\")",
+        file, change.group, change.spectrum_text));
+  if (recorded == image.string_attributes.end())
+    throw InputError(fmt::format(
+        "{}: light group '{}' has no one emission spectrum to change ({}): its lights emit different "
+        "spectra, "
+        "one is a map or an emissive surface, or it is \"other\" (docs/lights.md, \"Relighting\")",
+        file, change.group, change.spectrum_text));
+  const std::optional<std::vector<double>> from = parse_emission_shape(recorded->second);
+  if (!from)
+    throw InputError(
+        fmt::format("{}: {}: expected {} numbers >= 0", file, recorded->first, kEmissionShapeCount));
+  const std::optional<std::vector<double>> to = emission_shape(*change.spectrum);
+  if (!to)
+    throw InputError(
+        fmt::format("--group {}:{}: the spectrum has no luminance", change.group, change.spectrum_text));
+  const float first = bins.begin()->first, last = bins.rbegin()->first;
+  const int count = static_cast<int>(bins.size());
+  const double width = count > 1 ? (static_cast<double>(last) - first) / (count - 1) : 470.0;
+  const double lambda_min = count > 1 ? first - width / 2 : 360.0;
+  std::vector<double> weights =
+      emission_bin_ratios(*from, *to, count, lambda_min, lambda_min + width * count);
+  for (double& w : weights) w *= change.scale;
+  return weights;
+}
+
 }  // namespace
 
 GroupChange parse_group_change(std::string_view text) {
@@ -71,15 +147,16 @@ GroupChange parse_group_change(std::string_view text) {
         throw InputError(
             fmt::format("--group '{}': scale must be a finite number >= 0, got '{}'", text, value));
       change.scale *= scale;
-    } else if (key == "cct" || key == "spectrum" || key == "blackbody") {
-      throw InputError(fmt::format(
-          "--group '{}': {} changes the group's spectrum, which needs the group's spectral layers; light "
-          "groups hold R, G, B only, in which an emission spectrum does not divide out (docs/lights.md, "
-          "\"Relighting\"): change the scene and render again",
-          text, key));
+    } else if (key == "cct" || key == "spectrum") {
+      if (change.spectrum)
+        throw InputError(
+            fmt::format("--group '{}': one change of spectrum per group (cct= or spectrum=)", text));
+      change.spectrum = new_emission(text, key, value);
+      change.spectrum_text = item;
     } else {
-      throw InputError(
-          fmt::format("--group '{}': unknown change '{}' (known: scale=S, off, on)", text, item));
+      throw InputError(fmt::format(
+          "--group '{}': unknown change '{}' (known: scale=S, off, on, cct=T, spectrum=NAME|FILE.csv)", text,
+          item));
     }
   }
   return change;
@@ -93,15 +170,15 @@ ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes,
                     "lights name groups (docs/lights.md, \"Light groups\")",
                     file));
   const std::vector<std::string> groups = split(listed->second, ',');
-  std::map<std::string, double> scale;
-  for (const std::string& g : groups) scale[g] = 1.0;
+  std::map<std::string, GroupChange> change;
+  for (const std::string& g : groups) change[g].group = g;
   std::map<std::string, int> named;
   for (const GroupChange& c : changes) {
-    if (!scale.count(c.group))
+    if (!change.count(c.group))
       throw InputError(fmt::format("{}: no light group '{}' (the render has: {})", file, c.group,
                                    fmt::join(groups, ", ")));
     if (named[c.group]++) throw InputError(fmt::format("--group {}: given twice", c.group));
-    scale[c.group] = c.scale;
+    change[c.group] = c;
   }
   const size_t n = static_cast<size_t>(image.width) * image.height;
   ExrImage out;
@@ -111,26 +188,55 @@ ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes,
   out.string_attributes = image.string_attributes;
   std::array<std::vector<float>, 3> rgb{std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f),
                                         std::vector<float>(n, 0.0f)};
-  for (const std::string& g : groups)
-    for (int c = 0; c < 3; ++c) {
-      const std::string name = fmt::format("group.{}.{}", g, "RGB"[c]);
-      const std::vector<float>* layer = image.find_channel(name);
-      if (!layer || layer->size() != n)
-        throw InputError(
-            fmt::format("{}: channel {} missing (ochre.lightGroups lists group '{}')", file, name, g));
-      std::vector<float> scaled(n);
-      for (size_t i = 0; i < n; ++i) {
-        scaled[i] = static_cast<float>(scale[g] * (*layer)[i]);
-        rgb[c][i] += scaled[i];
+  const auto channel = [&](const std::string& name, const std::string& g) {
+    const std::vector<float>* layer = image.find_channel(name);
+    if (!layer || layer->size() != n)
+      throw InputError(
+          fmt::format("{}: channel {} missing (ochre.lightGroups lists group '{}')", file, name, g));
+    return layer;
+  };
+  for (const std::string& g : groups) {
+    const GroupChange& c = change[g];
+    const std::map<float, std::string> bins = group_bin_layers(image, g);
+    // A change of spectrum weighs the bins; a change of scale scales the group's sum as it is.
+    const std::vector<double> weights =
+        c.spectrum ? bin_weights(image, file, c, bins) : std::vector<double>(bins.size(), c.scale);
+    for (int k = 0; k < 3; ++k) {
+      const std::string name = fmt::format("group.{}.{}", g, "RGB"[k]);
+      const std::vector<float>* layer = channel(name, g);
+      std::vector<double> sum(n, 0.0);
+      if (!c.spectrum)
+        for (size_t i = 0; i < n; ++i) sum[i] = c.scale * (*layer)[i];
+      size_t b = 0;
+      for (const auto& [centre, bin_layer] : bins) {
+        const std::string bin_name = fmt::format("{}.{}", bin_layer, "RGB"[k]);
+        const std::vector<float>* values = channel(bin_name, g);
+        std::vector<float> scaled(n);
+        for (size_t i = 0; i < n; ++i) {
+          scaled[i] = static_cast<float>(weights[b] * (*values)[i]);
+          if (c.spectrum) sum[i] += weights[b] * (*values)[i];
+        }
+        out.channels.emplace_back(bin_name, std::move(scaled));
+        ++b;
       }
-      out.channels.emplace_back(name, std::move(scaled));
+      std::vector<float> relit(n);
+      for (size_t i = 0; i < n; ++i) {
+        relit[i] = static_cast<float>(sum[i]);
+        rgb[k][i] += relit[i];
+      }
+      out.channels.emplace_back(name, std::move(relit));
     }
+    if (c.spectrum)
+      out.string_attributes[light_group_emission_attribute(g)] =
+          format_emission_shape(*emission_shape(*c.spectrum));
+  }
   for (int c = 0; c < 3; ++c) out.channels.emplace_back(std::string(1, "RGB"[c]), std::move(rgb[c]));
   for (const auto& [name, values] : image.channels)
     if (kept_without_change(name)) out.channels.emplace_back(name, values);
   std::string applied;
   for (const std::string& g : groups)
-    applied += fmt::format("{}{}:scale={}", applied.empty() ? "" : " ", g, scale[g]);
+    applied += fmt::format("{}{}:scale={}{}{}", applied.empty() ? "" : " ", g, change[g].scale,
+                           change[g].spectrum ? "," : "", change[g].spectrum_text);
   out.string_attributes["ochre.relight"] = applied;
   return out;
 }

@@ -9,27 +9,35 @@
 
 #include "renderer/image/display_image.h"
 #include "renderer/image/exr_writer.h"
+#include "spectra/spectrum.h"
 
 namespace ochre {
 
 class InputFileLog;
 
-// One --group of `ochre relight`: the group's layers times `scale` (0: off).
+// One --group of `ochre relight`: the group's layers times `scale` (0: off), with a new emission spectrum
+// when `spectrum` is set.
 struct GroupChange {
   std::string group;
   double scale = 1.0;
+  SpectrumPtr spectrum;       // null: the group's own
+  std::string spectrum_text;  // "cct=1850", "spectrum=LED-4100K-model", for messages and ochre.relight
 };
 
-// "NAME:scale=S" (S finite, >= 0), "NAME:off", "NAME:on" (scale 1). A change of spectrum ("cct=",
-// "spectrum=") is refused: the groups hold R, G, B, in which an emission spectrum does not divide out.
-// InputError naming the text otherwise.
+// "NAME:scale=S" (S finite, >= 0), "NAME:off", "NAME:on" (scale 1), and a new spectrum: "cct=T" (a blackbody
+// at T kelvin), "spectrum=NAME" (a named spectrum) or "spectrum=FILE.csv" (a table, as a scene's {"file":
+// ...}; relative to the working directory), joined by commas ("torch:scale=0.5,cct=1850"). InputError naming
+// the text otherwise (the CSV file read is recorded by an InputFileLog that is recording).
 GroupChange parse_group_change(std::string_view text);
 
 // The render `image` (read from `file`, for messages) relit: R, G, B are the sum of the groups' layers, each
-// times its change's scale (1 for a group no change names), and the groups' layers are scaled alike. Layers
-// that do not depend on the light (albedo, normal, depth, samples) are kept; Stokes and spectral layers,
-// which the groups do not split, are left out. InputError naming the file when it has no light groups, a
-// change names a group it does not have (listing those it has) or names one twice.
+// times its change's scale (1 for a group no change names), and the groups' layers are scaled alike. A change
+// of spectrum keeps the group's luminance and weighs each of the group's spectral bins by the ratio of the
+// new emission to the old over the bin (spectra/emission_shape.h). Layers that do not depend on the light
+// (albedo, normal, depth, samples) are kept; Stokes and spectral layers, which the groups do not split, are
+// left out. InputError naming the file when it has no light groups, a change names a group it does not have
+// (listing those it has) or names one twice, or changes the spectrum of a group without spectral bins or
+// without one emission spectrum.
 ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes, const std::string& file);
 
 // The display transform the render recorded (ochre.display.* attributes; the defaults where absent).

@@ -87,6 +87,16 @@ void add_spectral_channels(const Film& film, ExrImage& image) {
   image.string_attributes["emissiveUnits"] = "W.m^-2.sr^-1";
 }
 
+std::string group_bin_layer(const std::string& group, float centre_nm) {
+  std::string value = fmt::format("{:.6f}", centre_nm);
+  std::replace(value.begin(), value.end(), '.', ',');
+  return fmt::format("group.{}.{}nm", group, value);
+}
+
+std::string light_group_emission_attribute(const std::string& group) {
+  return fmt::format("ochre.lightGroup.{}.emission", group);
+}
+
 std::optional<float> spectral_channel_wavelength(std::string_view name, int component) {
   const std::string prefix = fmt::format("S{}.", component);
   if (name.size() <= prefix.size() + 2 || name.substr(0, prefix.size()) != prefix ||
@@ -111,22 +121,34 @@ RGB output_rgb(const XYZ& m, const OutputSettings& outputs) {
                     outputs.colorspace);
 }
 
-void add_light_group_channels(const Film& film, const OutputSettings& outputs, ExrImage& image) {
+// The layer `layer` (group.<name> or group.<name>.<centre>nm): R, G, B of a group, or of one of its bins.
+void add_group_layer(const Film& film, const OutputSettings& outputs, size_t group, std::optional<int> bin,
+                     const std::string& layer, ExrImage& image) {
   const size_t n = static_cast<size_t>(film.width()) * film.height();
+  std::array<std::vector<float>, 3> c{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
+  for (int y = 0; y < film.height(); ++y)
+    for (int x = 0; x < film.width(); ++x) {
+      const XYZ m = bin ? film.mean_group(x, y, group, *bin) : film.mean_group(x, y, group);
+      const RGB rgb = output_rgb(m, outputs);
+      const size_t i = static_cast<size_t>(y) * film.width() + x;
+      c[0][i] = rgb.r;
+      c[1][i] = rgb.g;
+      c[2][i] = rgb.b;
+    }
+  for (int k = 0; k < 3; ++k)
+    image.channels.emplace_back(fmt::format("{}.{}", layer, "RGB"[k]), std::move(c[k]));
+}
+
+void add_light_group_channels(const Film& film, const OutputSettings& outputs, ExrImage& image) {
   std::string names;
   for (size_t g = 0; g < film.light_groups().size(); ++g) {
-    std::array<std::vector<float>, 3> c{std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
-    for (int y = 0; y < film.height(); ++y)
-      for (int x = 0; x < film.width(); ++x) {
-        const RGB rgb = output_rgb(film.mean_group(x, y, g), outputs);
-        const size_t i = static_cast<size_t>(y) * film.width() + x;
-        c[0][i] = rgb.r;
-        c[1][i] = rgb.g;
-        c[2][i] = rgb.b;
-      }
     const std::string& group = film.light_groups()[g];
-    for (int k = 0; k < 3; ++k)
-      image.channels.emplace_back(fmt::format("group.{}.{}", group, "RGB"[k]), std::move(c[k]));
+    add_group_layer(film, outputs, g, std::nullopt, "group." + group, image);
+    if (film.group_bins() > 1)
+      for (int b = 0; b < film.group_bins(); ++b)
+        add_group_layer(film, outputs, g, b, group_bin_layer(group, film.spectral_bin_centre(b)), image);
+    if (g < outputs.light_group_emission.size() && !outputs.light_group_emission[g].empty())
+      image.string_attributes[light_group_emission_attribute(group)] = outputs.light_group_emission[g];
     names += (names.empty() ? "" : ",") + group;
   }
   image.string_attributes["ochre.lightGroups"] = names;
@@ -262,6 +284,8 @@ void check_render_memory(int width, int height, const OutputSettings& outputs) {
   if (!outputs.exr.empty()) {
     exr_channels = 3 + (layers.aovs ? 8 : 0) + (layers.stokes ? 14 : 0);
     exr_channels += static_cast<size_t>(layers.spectral_bins) * (layers.stokes ? 4 : 1);
+    // A light group's R, G, B, and per spectral bin.
+    exr_channels += layers.light_groups.size() * 3 * (1 + static_cast<size_t>(layers.spectral_bins));
   }
   const size_t png_bytes = outputs.png.empty() ? 0 : 3 * sizeof(float) + 3;
   const size_t polarization_bytes = outputs.polarization_png.empty() ? 0 : 3;

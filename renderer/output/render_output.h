@@ -32,6 +32,11 @@ DisplayOptions display_options(const OutputSettings& outputs);
 std::string spectral_channel_name(int component, float centre_nm);
 // The bin centre of a channel so named for that Stokes component, or nothing for any other channel.
 std::optional<float> spectral_channel_wavelength(std::string_view name, int component = 0);
+// "group.torch.550,000000nm": the layer of a light group's bin (its channels .R, .G, .B), named like the
+// spectral layers (docs/lights.md, "Light groups").
+std::string group_bin_layer(const std::string& group, float centre_nm);
+// "ochre.lightGroup.torch.emission": the attribute that holds the shape of a group's emission spectrum.
+std::string light_group_emission_attribute(const std::string& group);
 // Adds the film's spectral layers (S0.<nm>, and S1..S3.<nm> with Stokes) and the spectral layout's header
 // attributes to image (film.spectral_bins() > 0).
 void add_spectral_channels(const Film& film, ExrImage& image);

@@ -110,6 +110,9 @@ struct OutputSettings {
   int spectral_bins = 0;  // > 0: EXR layers S0.<centre>nm of spectral radiance (Fichet et al. 2021 layout)
   // The scene's light groups (Scene::light_groups): EXR layers group.<name>.R/G/B (docs/lights.md).
   std::vector<std::string> light_groups;
+  // Per group, the shape of its emission spectrum (spectra/emission_shape.h) as text, or empty when its
+  // emitters have none in common (Scene::light_group_emission): attributes ochre.lightGroup.<name>.emission.
+  std::vector<std::string> light_group_emission;
   float spectral_min = 360.0f,
         spectral_max = 830.0f;  // EXR layers albedo.RGB, normal.XYZ, depth.Z, samples.Y
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "spectra/emission_shape.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
@@ -52,6 +53,28 @@ void Scene::build_light_groups() {
     for (int& g : light_group_of)
       if (g < 0) g = other_light_group;
   }
+}
+
+std::vector<std::string> Scene::light_group_emission() const {
+  std::vector<std::optional<std::vector<double>>> shapes(light_groups.size());
+  std::vector<bool> none(light_groups.size(), false);
+  if (other_light_group >= 0) none[static_cast<size_t>(other_light_group)] = true;
+  for (size_t i = 0; i < lights.size() && i < light_group_of.size(); ++i) {
+    if (light_group_of[i] < 0) continue;  // no groups
+    const size_t g = static_cast<size_t>(light_group_of[i]);
+    if (none[g]) continue;
+    const Spectrum* spectrum = lights[i]->emission_spectrum();
+    std::optional<std::vector<double>> shape;
+    if (spectrum) shape = emission_shape(*spectrum);
+    if (!shape || (shapes[g] && !same_emission_shape(*shapes[g], *shape)))
+      none[g] = true;
+    else
+      shapes[g] = std::move(shape);
+  }
+  std::vector<std::string> texts(light_groups.size());
+  for (size_t g = 0; g < texts.size(); ++g)
+    if (!none[g] && shapes[g]) texts[g] = format_emission_shape(*shapes[g]);
+  return texts;
 }
 
 void Scene::set_frame(uint64_t frame, double fps, uint64_t seed) {

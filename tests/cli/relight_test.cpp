@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/cli_runner.h"
@@ -80,12 +81,16 @@ TEST(Relight, BadChangesAreRefusedAndNothingIsWritten) {
   const struct {
     std::string args, expected;
   } cases[] = {
-      {"--group torch:cct=1850", "cct changes the group's spectrum, which needs the group's spectral layers"},
+      {"--group torch:cct=1850", "light group 'torch' has no spectral bins"},
+      {"--group torch:cct=hot", "expected a temperature in kelvin in [500, 100000]"},
+      {"--group torch:cct=1800,cct=1900", "one change of spectrum per group"},
+      {"--group torch:spectrum=starlight", "starlight"},
+      {"--group torch:spectrum=missing.csv", "missing.csv"},
       {"--group candle:off", "no light group 'candle' (the render has: torch, lamp, other)"},
       {"--group torch:off --group torch:on", "--group torch: given twice"},
       {"--group torch:scale=-1", "scale must be a finite number >= 0, got '-1'"},
       {"--group torch:scale=nan", "scale must be a finite number >= 0, got 'nan'"},
-      {"--group torch:dim", "unknown change 'dim'"},
+      {"--group torch:dim", "unknown change 'dim' (known: scale=S, off, on, cct=T, spectrum=NAME|FILE.csv)"},
       {"--group torch", "expected NAME:scale=S, NAME:off or NAME:on"},
       {"--group lamp:off --view nowhere --png out.png", "nowhere"},
   };
@@ -108,6 +113,94 @@ TEST(Relight, BadChangesAreRefusedAndNothingIsWritten) {
   const CommandResult plain = run_ochre("relight plain.exr -o out.exr", dir);
   EXPECT_EQ(plain.exit_code, 2);
   EXPECT_TRUE(contains(plain.output, "plain.exr: has no light groups")) << plain.output;
+}
+
+// The wall under a torch at `cct` kelvin and a lamp of a 3000 K blackbody, rendered with `bins` spectral bins
+// into `name`.exr at a fixed seed.
+void render_spectral(const fs::path& dir, const std::string& name, double cct, int bins) {
+  const std::string torch = fmt::format(
+      R"({{"type": "flame", "preset": "torch", "position": [0.3, 1.2, 0.5], "cct": {}, "group": "torch"}},)",
+      cct);
+  std::string scene = wall(torch, 3);
+  const std::string lamp = R"("intensity": 3, "group": "lamp")";
+  scene.replace(scene.find(lamp), lamp.size(),
+                R"("intensity": {"blackbody": 3000, "scale": 3}, "group": "lamp")");
+  write_text(dir / (name + ".json"), scene);
+  const CommandResult r = run_ochre(fmt::format("render {0}.json -o {0}.exr -q --spp 64 --seed 4{1}", name,
+                                                bins > 0 ? fmt::format(" --spectral-bins {}", bins) : ""),
+                                    dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
+// The largest difference between two images' R, G, B relative to the brightest pixel of `b`.
+double largest_difference(const ExrImage& a, const ExrImage& b) {
+  double largest = 0, brightest = 0;
+  for (const char* c : {"R", "G", "B"})
+    for (size_t i = 0; i < exr_channel(a, c).size(); ++i) {
+      largest = std::max(largest, std::fabs(double(exr_channel(a, c)[i]) - exr_channel(b, c)[i]));
+      brightest = std::max(brightest, double(exr_channel(b, c)[i]));
+    }
+  return largest / brightest;
+}
+
+TEST(Relight, SpectralBinsSumToTheGroupAndRecordTheEmission) {
+  const fs::path dir = scratch_dir();
+  render_spectral(dir, "render", 1700, 8);
+  const ExrImage image = read_exr(dir / "render.exr");
+  EXPECT_EQ(image.string_attributes.count("ochre.lightGroup.torch.emission"), 1u);
+  EXPECT_EQ(image.string_attributes.count("ochre.lightGroup.lamp.emission"), 1u);
+  EXPECT_EQ(image.string_attributes.count("ochre.lightGroup.other.emission"), 0u) << "\"other\" has none";
+  for (const char* group : {"torch", "lamp", "other"})
+    for (const char* c : {"R", "G", "B"}) {
+      const std::vector<float>& whole = exr_channel(image, fmt::format("group.{}.{}", group, c));
+      std::vector<double> sum(whole.size(), 0.0);
+      for (int b = 0; b < 8; ++b) {
+        std::string centre = fmt::format("{:.6f}", 360.0f + (b + 0.5f) * 470.0f / 8);
+        std::replace(centre.begin(), centre.end(), '.', ',');  // the decimal comma of the spectral layout
+        const std::string name = fmt::format("group.{}.{}nm.{}", group, centre, c);
+        const std::vector<float>& bin = exr_channel(image, name);
+        for (size_t i = 0; i < bin.size(); ++i) sum[i] += bin[i];
+      }
+      for (size_t i = 0; i < whole.size(); ++i)
+        EXPECT_NEAR(sum[i], whole[i], 1e-6 * (1 + whole[i])) << group << c;
+    }
+}
+
+TEST(Relight, AChangeOfColourTemperatureIsTheSceneSoChanged) {
+  const fs::path dir = scratch_dir();
+  // The same paths (one seed, lights of the same luminance): the difference is the bins' alone.
+  render_spectral(dir, "changed", 2600, 0);
+  const ExrImage changed = read_exr(dir / "changed.exr");
+  double previous_bias = 1.0;
+  for (const int bins : {4, 16, 64}) {
+    render_spectral(dir, fmt::format("bins{}", bins), 1700, bins);
+    const CommandResult r =
+        run_ochre(fmt::format("relight bins{0}.exr --group torch:cct=2600 -o relit{0}.exr -q", bins), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const ExrImage relit = read_exr(dir / fmt::format("relit{}.exr", bins));
+    // The bias, over the image: the ratio of the new emission to the old varies within a bin, which weighs
+    // each sample by the bin's mean ratio; per pixel that adds a noise that falls with the samples.
+    double bias = 0;
+    for (const char* c : {"R", "G", "B"})
+      bias = std::max(bias, std::fabs(mean_of(exr_channel(relit, c)) / mean_of(exr_channel(changed, c)) - 1));
+    EXPECT_LT(bias, previous_bias) << bins << " bins: the error falls as the bins narrow";
+    previous_bias = bias;
+    if (bins == 64) {
+      EXPECT_LT(largest_difference(relit, changed), 5e-3) << "64 bins, per pixel";
+    }
+    // Relit back, it is the render again.
+    const CommandResult back =
+        run_ochre(fmt::format("relight relit{0}.exr --group torch:cct=1700 -o back{0}.exr -q", bins), dir);
+    ASSERT_EQ(back.exit_code, 0) << back.output;
+    EXPECT_LT(largest_difference(read_exr(dir / fmt::format("back{}.exr", bins)),
+                                 read_exr(dir / fmt::format("bins{}.exr", bins))),
+              1e-5);
+  }
+  EXPECT_LT(previous_bias, 2e-3) << "64 bins";
+  // Without bins the change is refused; "other" has no one emission spectrum.
+  const CommandResult other = run_ochre("relight bins4.exr --group other:cct=2000 -o x.exr", dir);
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_TRUE(contains(other.output, "light group 'other' has no one emission spectrum")) << other.output;
 }
 
 }  // namespace

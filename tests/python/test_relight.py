@@ -52,8 +52,10 @@ class Relight(unittest.TestCase):
     def test_bad_changes_raise_naming_them(self):
         with self.assertRaisesRegex(ochre.InputError, "no light group 'candle'"):
             ochre.relight(self.render, groups={"candle": 1})
-        with self.assertRaisesRegex(ochre.InputError, "cct changes the group's spectrum"):
-            ochre.relight(self.render, groups={"torch": "cct=1850"})
+        with self.assertRaisesRegex(ochre.InputError, r"groups\['torch'\]: --group 'torch:cct=hot'"):
+            ochre.relight(self.render, groups={"torch": "cct=hot"})
+        with self.assertRaisesRegex(ochre.InputError, "light group 'torch' has no spectral bins"):
+            ochre.relight(self.render, groups={"torch": "scale=0.5,cct=1850"})
         with self.assertRaisesRegex(ochre.InputError, "finite number >= 0"):
             ochre.relight(self.render, groups={"torch": -1})
         with self.assertRaises(TypeError):
@@ -76,17 +78,17 @@ class Relight(unittest.TestCase):
 
         self.assertEqual(message(TypeError, render=3), "render: expected a path (str or os.PathLike), got int 3")
         self.assertEqual(message(TypeError, groups=[("torch", 1)]),
-                         "groups: expected a dict of group name -> scale, 'off' or 'on', got list")
+                         "groups: expected a dict of group name -> scale, 'off', 'on' or changes ('scale=S,cct=T'), got list")
         self.assertEqual(message(TypeError, groups={1: 1}), "groups: expected str keys (group names), got int 1")
         self.assertEqual(message(TypeError, groups={"torch": True}),
-                         "groups['torch']: expected a number (the scale), 'off' or 'on', got bool True")
-        self.assertEqual(message(TypeError, groups={"torch": [1]}), "groups['torch']: expected a number (the scale), 'off' or 'on', got list")
+                         "groups['torch']: expected a number (the scale), 'off', 'on' or changes ('scale=S,cct=T'), got bool True")
+        self.assertEqual(message(TypeError, groups={"torch": [1]}), "groups['torch']: expected a number (the scale), 'off', 'on' or changes ('scale=S,cct=T'), got list")
         self.assertTrue(message(TypeError, exr=3.5).startswith("exr: expected a path"))
         self.assertTrue(message(TypeError, png=7).startswith("png: expected a path"))
         self.assertEqual(message(ochre.InputError, groups={"torch": -1}),
                          "groups['torch']: a scale must be a finite number >= 0 (got -1)")
         self.assertTrue(message(ochre.InputError, groups={"torch": float("nan")}).startswith("groups['torch']: "))
-        self.assertTrue(message(ochre.InputError, groups={"torch": "cct=1850"}).startswith("groups['torch']: "))
+        self.assertTrue(message(ochre.InputError, groups={"torch": "cct=hot"}).startswith("groups['torch']: "))
         self.assertTrue(message(ochre.InputError, groups={"torch": "dim"}).startswith("groups['torch']: "))
         self.assertEqual(message(ochre.InputError, render=""), "render: the path is empty")
         self.assertEqual(message(ochre.InputError, exr=""), "exr: the path is empty")

@@ -162,6 +162,9 @@ OutputSettings merged_outputs(const MergeCommand& command, const PartFields& par
   out.spectral_bins = h.layers.spectral_bins;
   out.spectral_min = h.layers.spectral_min;
   out.spectral_max = h.layers.spectral_max;
+  out.light_groups = h.layers.light_groups;
+  for (const std::string& group : out.light_groups)
+    out.light_group_emission.push_back(part.note(light_group_emission_attribute(group)));
   out.ocio_config = command.ocio_config.value_or(part.note("ochre.display.ocioConfig"));
   out.display = command.display.value_or(part.note("ochre.display.display"));
   out.view = command.view.value_or(part.note("ochre.display.view"));

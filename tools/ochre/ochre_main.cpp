@@ -195,13 +195,14 @@ int ochre_command(int argc, char** argv) {
 
   ochre::RelightCommand relight_cmd;
   CLI::App* relight = app.add_subcommand(
-      "relight", "Recombine a render's light groups with new intensities (docs/lights.md)");
+      "relight", "Recombine a render's light groups with new intensities and spectra (docs/lights.md)");
   relight->add_option("render", relight_cmd.render, "EXR of a render whose lights name groups")
       ->required()
       ->check(ochre::non_empty_path());
   relight->add_option(
       "--group", relight_cmd.groups,
-      "NAME:scale=S (times S), NAME:off or NAME:on; repeatable (the other groups: unchanged)");
+      "NAME:scale=S (times S), NAME:off, NAME:on, NAME:cct=T (a blackbody at T K) or "
+      "NAME:spectrum=NAME|FILE.csv, joined by commas; repeatable (the other groups: unchanged)");
   relight->add_option("-o,--output", relight_cmd.exr, "Output EXR (the relit image and groups)")
       ->check(ochre::non_empty_path());
   relight->add_option("--png", relight_cmd.png, "Output display PNG (the render's display transform)")

@@ -16,12 +16,12 @@ int run_relight(const RelightCommand& command) {
   install_signal_cleanup();
   if (command.exr.empty() && command.png.empty())
     throw InputError("relight: no output: give -o OUT.exr and/or --png OUT.png");
-  std::vector<GroupChange> changes;
-  for (const std::string& text : command.groups) changes.push_back(parse_group_change(text));
   InputFileLog inputs;
   ExrImage render;
+  std::vector<GroupChange> changes;
   {
-    const InputFileLog::Recording recording(inputs);
+    const InputFileLog::Recording recording(inputs);  // the render and the CSV spectra, never replaced
+    for (const std::string& text : command.groups) changes.push_back(parse_group_change(text));
     render = read_exr(command.render);
   }
   const ExrImage relit = relight(render, changes, command.render);

@@ -217,8 +217,9 @@ int render_frames(const RenderCommand& command, Scene& scene, const RenderJob& j
     if (!command.quiet)
       std::cerr << fmt::format("ochre: frame {} of {} (t = {:.4f} s)\n", frame, last,
                                static_cast<double>(frame - 1) / command.fps);
-    render_and_write(command, scene, job, frame_outputs(out, frame),
-                     fmt::format("frame {} of {}", frame, last), phase);
+    OutputSettings frame_out = frame_outputs(out, frame);
+    frame_out.light_group_emission = scene.light_group_emission();  // the frame's flame colours
+    render_and_write(command, scene, job, frame_out, fmt::format("frame {} of {}", frame, last), phase);
   }
   return 0;
 }
@@ -313,6 +314,7 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     job.settings.frame = *command.still_frame;
     job.settings.fps = command.fps;
     scene->set_frame(*command.still_frame - 1, command.fps, job.settings.seed);
+    job.outputs.light_group_emission = scene->light_group_emission();  // the frame's flame colours
     if (command.number_outputs) job.outputs = frame_outputs(job.outputs, *command.still_frame);
   }
   if (resumed) check_resumable(*resumed, render_identity(*scene, job, content_hash));

@@ -81,6 +81,9 @@ PartialSumsHeader partial_header(const Scene& scene, const RenderJob& job, const
     h.notes["ochre.sensorToXYZ"] = fmt::format("{}", fmt::join(out.sensor_to_xyz->m, " "));
   if (out.white_balance_xyz)
     h.notes["ochre.display.whiteBalance"] = fmt::format("{}", fmt::join(*out.white_balance_xyz, " "));
+  for (size_t g = 0; g < out.light_groups.size() && g < out.light_group_emission.size(); ++g)
+    if (!out.light_group_emission[g].empty())
+      h.notes[light_group_emission_attribute(out.light_groups[g])] = out.light_group_emission[g];
   return h;
 }
 

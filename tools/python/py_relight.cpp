@@ -13,43 +13,44 @@ namespace ochre::python {
 
 namespace {
 
-// {"torch": 0.5, "lamp": "off"}: a scale (a finite number >= 0: int, float or numpy number, never bool) or
-// "off" / "on" per group; TypeError naming the argument for a value of another type, InputError naming the
-// group for a bad value (docs/python.md, "Errors").
-std::vector<GroupChange> group_changes(const py::handle& groups) {
-  std::vector<GroupChange> changes;
-  if (groups.is_none()) return changes;
+// {"torch": 0.5, "lamp": "off", "fire": "scale=2,cct=1500"}: per group a scale (a finite number >= 0: int,
+// float or numpy number, never bool) or the changes of `ochre relight --group NAME:...` as a str. TypeError
+// naming the argument for a value of another type (docs/python.md, "Errors"). Returns (where, --group text)
+// pairs, parsed by parse_group_text while the input files are recorded (a CSV spectrum is an input).
+std::vector<std::pair<std::string, std::string>> group_texts(const py::handle& groups) {
+  std::vector<std::pair<std::string, std::string>> texts;
+  if (groups.is_none()) return texts;
   if (!PyDict_Check(groups.ptr()))
-    wrong_type("groups", "a dict of group name -> scale, 'off' or 'on'", groups);
+    wrong_type("groups", "a dict of group name -> scale, 'off', 'on' or changes ('scale=S,cct=T')", groups);
   for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(groups)) {
     if (!PyUnicode_Check(key.ptr())) wrong_type("groups", "str keys (group names)", key);
     const std::string name = string_argument(key, "groups");
     const std::string where = fmt::format("groups['{}']", name);
     if (PyUnicode_Check(value.ptr())) {
-      // The words of NAME:off and NAME:on; anything else (a change of spectrum, "scale=2") is parsed as
-      // ochre relight parses --group, for its message.
-      const std::string word = string_argument(value, where);
-      if (word == "off" || word == "on") {
-        changes.push_back({name, word == "off" ? 0.0 : 1.0});
-        continue;
-      }
-      try {
-        changes.push_back(parse_group_change(name + ":" + word));
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: {}", where, e.what()));
-      }
+      texts.emplace_back(where, name + ":" + string_argument(value, where));
       continue;
     }
     double scale = 0.0;
     try {
       scale = number_argument(value, where);
     } catch (const py::type_error&) {
-      wrong_type(where, "a number (the scale), 'off' or 'on'", value);
+      wrong_type(where, "a number (the scale), 'off', 'on' or changes ('scale=S,cct=T')", value);
     }
     if (scale < 0.0)
       throw InputError(fmt::format("{}: a scale must be a finite number >= 0 (got {})", where, scale));
-    changes.push_back({name, scale});
+    texts.emplace_back(where, fmt::format("{}:scale={}", name, scale));  // shortest exact decimal
   }
+  return texts;
+}
+
+// The changes of group_texts, each InputError naming the dict entry.
+std::vector<GroupChange> group_changes(const std::vector<std::pair<std::string, std::string>>& texts) {
+  std::vector<GroupChange> changes;
+  for (const auto& [where, text] : texts) try {
+      changes.push_back(parse_group_change(text));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", where, e.what()));
+    }
   return changes;
 }
 
@@ -59,16 +60,18 @@ void register_relight(py::module_& m) {
   m.def(
       "relight",
       [](const py::object& render, const py::object& groups, const py::object& exr, const py::object& png) {
-        const std::vector<GroupChange> changes = group_changes(groups);
+        const std::vector<std::pair<std::string, std::string>> texts = group_texts(groups);
         const std::filesystem::path file = path_argument(render, "render");
         const std::string exr_path = exr.is_none() ? "" : path_argument(exr, "exr").string();
         const std::string png_path = png.is_none() ? "" : path_argument(png, "png").string();
         InputFileLog inputs;
         ExrImage image;
+        std::vector<GroupChange> changes;
         {
           py::gil_scoped_release release;
           const std::lock_guard lock(input_recording_mutex());
           const InputFileLog::Recording recording(inputs);
+          changes = group_changes(texts);
           image = read_exr(file);
         }
         const ExrImage relit = relight(image, changes, file.string());
@@ -78,7 +81,8 @@ void register_relight(py::module_& m) {
       },
       py::arg("render"), py::kw_only(), py::arg("groups") = py::none(), py::arg("exr") = py::none(),
       py::arg("png") = py::none(),
-      "(channels, attributes) of a render with light groups recombined with new scales, as ochre relight; "
+      "(channels, attributes) of a render with light groups recombined with new scales and spectra, as ochre "
+      "relight; "
       "writes exr / png when given");
 }
 
