@@ -144,6 +144,10 @@ int ochre_command(int argc, char** argv) {
           ->add_option("--first-frame", first_frame, "Number of the first frame of the sequence (default 1)")
           ->check(ochre::unsigned_range_check(1, ochre::kMaxFrameNumber));
   auto* fps_opt = render->add_option("--fps", fps, "Frames per second of the sequence (default 24)");
+  bool relight_frames = false;
+  auto* relight_opt = render->add_flag(
+      "--relight", relight_frames,
+      "With --frames: render once, a light group per flame, and relight each frame from it (docs/lights.md)");
 
   std::string sample_range, part, region, tile;
   auto* range_opt = render->add_option(
@@ -293,6 +297,8 @@ int ochre_command(int argc, char** argv) {
                                      *fps_opt ? std::optional<double>(fps) : std::nullopt);
       !error.empty())
     throw ochre::InputError(error);
+  if (*relight_opt && !*frames_opt)
+    throw ochre::InputError("--relight: only with --frames N (it relights the frames of a flicker sequence)");
   if (*frames_opt) {
     // A sequence renders whole frames; one frame of it may be split and checkpointed like a still.
     const std::vector<const CLI::Option*> still_options = {range_opt,
@@ -308,6 +314,11 @@ int ochre_command(int argc, char** argv) {
       if (*option && !still) still = option;
     if (*resume_opt)
       throw ochre::InputError("--frames: not with --resume (the checkpoint records the frame it renders)");
+    if (still && *relight_opt)
+      throw ochre::InputError(fmt::format(
+          "{}: not with --relight (a relit sequence is one render: split or checkpoint frames rendered "
+          "without --relight)",
+          still->get_name()));
     if (still && frames != 1)
       throw ochre::InputError(fmt::format(
           "{}: not with --frames {} (a sequence renders whole frames; split or checkpoint one frame at a "
@@ -320,6 +331,7 @@ int ochre_command(int argc, char** argv) {
       cmd.number_outputs = true;
     } else {
       cmd.frames = frames;
+      cmd.relight = relight_frames;
     }
   }
   if (*ocio_opt) cmd.ocio_config = ocio;

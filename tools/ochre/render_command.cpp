@@ -1,6 +1,7 @@
 #include "tools/ochre/render_command.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "renderer/integrator/render_passes.h"
 #include "renderer/output/output_files.h"
 #include "renderer/output/partial_sums.h"
+#include "renderer/output/relight.h"
 #include "renderer/output/render_identity.h"
 #include "renderer/output/render_output.h"
 #include "renderer/util/image_error.h"
@@ -26,6 +28,7 @@
 #include "tools/cli/frame_names.h"
 #include "tools/cli/program.h"
 #include "tools/ochre/checkpoint_resume.h"
+#include "tools/ochre/relit_frames.h"
 #include "tools/ochre/render_part.h"
 
 namespace ochre {
@@ -152,12 +155,10 @@ void apply_output_options(const RenderCommand& command, RenderJob& job) {
   check_outputs(out);
 }
 
-// Renders the scene's current state (one frame of a sequence) into a film and writes `out`.
-RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const RenderJob& job,
-                             const OutputSettings& out, const std::string& label, Phase& phase) {
+// Renders the scene's current state into `film`, with progress and the report.
+RenderStats render_film(const RenderCommand& command, const Scene& scene, const RenderJob& job, Film& film,
+                        const std::string& label, Phase& phase) {
   const RenderSettings& s = job.settings;
-  phase = {"allocating the film", true};
-  Film film(s.width, s.height, film_layers(out));
   const uint64_t total = static_cast<uint64_t>(s.width) * s.height * s.spp;
   std::optional<ProgressReporter> progress;
   if (!command.quiet) {
@@ -177,7 +178,16 @@ RenderStats render_and_write(const RenderCommand& command, const Scene& scene, c
     print_sample_counts(film, job.settings);
   }
   warn_about_lost_samples(stats);
+  return stats;
+}
 
+// Renders the scene's current state (one frame of a sequence) into a film and writes `out`.
+RenderStats render_and_write(const RenderCommand& command, const Scene& scene, const RenderJob& job,
+                             const OutputSettings& out, const std::string& label, Phase& phase) {
+  const RenderSettings& s = job.settings;
+  phase = {"allocating the film", true};
+  Film film(s.width, s.height, film_layers(out));
+  const RenderStats stats = render_film(command, scene, job, film, label, phase);
   phase = {"writing the outputs", true};
   for (const std::string& line : write_outputs(film, out, s, stats, scene.file.string()))
     if (!command.quiet) std::cerr << "ochre: " << line << "\n";
@@ -190,6 +200,43 @@ OutputSettings frame_outputs(const OutputSettings& out, uint64_t frame) {
   for (std::string* path : {&f.exr, &f.png, &f.polarization_png})
     if (!path->empty()) *path = frame_output_name(*path, frame);
   return f;
+}
+
+// --frames N --relight (tools/ochre/relit_frames.h): one render of the flames at their mean, each frame that
+// render relit and written as its own all-or-nothing set of files (names checked by the caller).
+void render_relit_frames(const RenderCommand& command, Scene& scene, const RenderJob& given,
+                         const InputFileLog& inputs, Phase& phase) {
+  RenderJob job = given;
+  if (!job.outputs.polarization_png.empty())
+    throw InputError("--relight: no polarization image: relit frames hold no Stokes layers");
+  for (const std::string& warning : prepare_relit_flames(scene, job))
+    std::cerr << "ochre: warning: " << warning << "\n";
+  OutputSettings base = job.outputs;
+  base.exr = "<the render relit per frame>";  // the layers of an EXR (groups, bins); not written
+  check_render_memory(job.settings.width, job.settings.height, base);
+  const uint64_t last = command.first_frame + *command.frames - 1;
+  if (!command.quiet)
+    std::cerr << fmt::format(
+        "ochre: --relight: one render of the flames at their mean, relit for frames {} to {} "
+        "(groups {})\n",
+        command.first_frame, last, fmt::join(job.outputs.light_groups, ", "));
+  phase = {"allocating the film", true};
+  Film film(job.settings.width, job.settings.height, film_layers(base));
+  const RenderStats stats =
+      render_film(command, scene, job, film, "the flames at their mean (relit per frame)", phase);
+  phase = {"writing the outputs", true};
+  const ExrImage image =
+      render_exr_image(film, film_to_rgb(film, base), base, job.settings, stats, scene.file.string());
+  const DisplayOptions display = display_options(job.outputs);
+  for (uint64_t frame = command.first_frame; frame <= last; ++frame) {
+    const std::vector<GroupChange> changes =
+        flame_frame_changes(scene, frame - 1, command.fps, job.settings.seed);
+    ExrImage relit = relight(image, changes, scene.file.string());
+    relit.string_attributes["ochre.frame"] = std::to_string(frame);
+    const OutputSettings f = frame_outputs(job.outputs, frame);
+    for (const std::string& line : write_relit(relit, display, f.exr, f.png, inputs))
+      if (!command.quiet) std::cerr << fmt::format("ochre: frame {}: {}\n", frame, line);
+  }
 }
 
 // A frame sequence (docs/cli.md#frame-sequences): each frame is its own render and its own all-or-nothing
@@ -209,6 +256,10 @@ int render_frames(const RenderCommand& command, Scene& scene, const RenderJob& j
     std::cerr << fmt::format("ochre: scene loaded in {:.2f} s\n", load_seconds);
     std::cerr << fmt::format("ochre: frames {} to {} at {} fps, {} flickering flame(s)\n",
                              command.first_frame, last, command.fps, scene.flames.size());
+  }
+  if (command.relight) {
+    render_relit_frames(command, scene, job, inputs, phase);
+    return 0;
   }
   phase = {"allocating the film", true};
   check_render_memory(job.settings.width, job.settings.height, out);

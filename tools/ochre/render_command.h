@@ -50,6 +50,8 @@ struct RenderCommand {
   std::optional<std::uint64_t> frames;
   std::uint64_t first_frame = 1;
   double fps = 24.0;
+  // --relight: the sequence from one render, relit per frame (tools/ochre/relit_frames.h).
+  bool relight = false;
   // One frame of a sequence rendered like a still, so that it can be split and checkpointed (`--frames 1
   // --first-frame K` with a split or checkpoint option; a resumed frame): frame `still_frame` at `fps`.
   // `number_outputs` inserts the frame number into the output names as a sequence does (a resumed render
