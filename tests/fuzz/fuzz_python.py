@@ -255,9 +255,11 @@ class Values:
                             np.ones((1, 1, 3), dtype=np.float32), np.full((2, 2, 3), np.nan),
                             np.array([True, False, True])])
 
-    def others(self):
+    def others(self, cost="cheap"):
         np = self.np
-        return self.choice([None, True, False, np.bool_(True), np.int64(3), np.uint64(2**64 - 1),
+        # A valid count of work beyond 10^6 is a long computation, not a hang (ints, cost "work").
+        big = np.uint64(2**64 - 1) if cost != "work" else np.uint64(7)
+        return self.choice([None, True, False, np.bool_(True), np.int64(3), big,
                             np.float32(math.nan), np.float64(2.5), np.array(3), np.array(2.5), object(),
                             lambda *a: None, complex(1, 2), decimal.Decimal("nan"), decimal.Decimal("2.5"),
                             fractions.Fraction(1, 3), Index(3), Index(2**70), BadIndex(), FloatLike(2.0),
@@ -266,7 +268,7 @@ class Values:
     def anything(self, cost="cheap"):
         kind = self.rng.randrange(6)
         return [lambda: self.ints(cost), self.floats, self.strings, self.paths, self.containers,
-                self.others][kind]()
+                lambda: self.others(cost)][kind]()
 
     def maybe(self, good, cost="cheap", bad=0.3):
         """good() most of the time; a random value of any type otherwise."""
