@@ -10,9 +10,18 @@
 
 namespace ochre {
 
+// A message with every NUL character written as the two characters \0: messages are read as C strings
+// (what()), so a NUL that a name from a file or an argument brought in would cut them short.
+inline std::string visible_nul(std::string message) {
+  for (size_t at = message.find('\0'); at != std::string::npos; at = message.find('\0', at + 2))
+    message.replace(at, 1, "\\0");
+  return message;
+}
+
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message) : std::runtime_error(visible_nul(message)) {}
+  explicit InputError(const char* message) : std::runtime_error(message) {}
 };
 
 // A message as a person reads it: at most `limit` characters, the middle of a longer one (a 50 MB value a

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "spectra/input_error.h"
+
 namespace ochre {
 
 namespace {
@@ -28,7 +30,7 @@ std::string format_message(const std::string& file, const std::string& material,
 
 GraphError::GraphError(std::string file, std::string material, std::string node, std::string parameter,
                        const std::string& what)
-    : std::runtime_error(format_message(file, material, node, parameter, what)),
+    : std::runtime_error(visible_nul(format_message(file, material, node, parameter, what))),
       file_(std::move(file)),
       material_(std::move(material)),
       node_(std::move(node)),

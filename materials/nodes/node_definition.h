@@ -21,6 +21,7 @@
 #include "materials/nodes/node_args.h"
 #include "materials/nodes/node_value.h"
 #include "materials/nodes/socket_type.h"
+#include "spectra/input_error.h"
 
 namespace ochre {
 
@@ -75,7 +76,7 @@ struct ParamDef {
 class NodeError : public std::runtime_error {
  public:
   NodeError(std::string parameter, const std::string& what)
-      : std::runtime_error(what), parameter_(std::move(parameter)) {}
+      : std::runtime_error(visible_nul(what)), parameter_(std::move(parameter)) {}
   const std::string& parameter() const { return parameter_; }
 
  private:

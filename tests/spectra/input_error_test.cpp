@@ -26,5 +26,13 @@ TEST(MessageExcerpt, LongMessagesKeepTheirEndsAndCountWhatWasLeftOut) {
             std::string::npos);
 }
 
+TEST(InputError, ANulCharacterIsWrittenOutNotCutShort) {
+  // A name from a scene or an argument may hold a NUL; what() is read as a C string.
+  const InputError e(std::string("materials: no material '") + '\0' + "x' (known: rock)");
+  EXPECT_EQ(std::string(e.what()), "materials: no material '\\0x' (known: rock)");
+  EXPECT_EQ(visible_nul(std::string(2, '\0')), "\\0\\0");
+  EXPECT_EQ(std::string(InputError("plain").what()), "plain");
+}
+
 }  // namespace
 }  // namespace ochre::input_error_test
