@@ -31,7 +31,7 @@ constexpr double kBasisTolerance = 1e-4;
 constexpr double kMaxScale = 4.0;
 // The display lattice: points per axis, over a log2 shaper of this many stops below its top.
 constexpr int kLatticePoints = 65;
-constexpr double kShaperStops = 14.0;
+constexpr double kShaperStops = 16.0;
 // Half floats top out at 65504; larger values are clamped there rather than made infinite, which a scale
 // of 0 would turn into NaN.
 constexpr float kHalfMax = 65504.0f;
@@ -192,6 +192,9 @@ std::vector<float> to_floats(const std::vector<double>& values) {
   return std::vector<float>(values.begin(), values.end());
 }
 
+// Display values from which a channel is 255 in 8 bits (OCIO's white may fall short of 1 by rounding).
+constexpr float kWhite = 254.5f / 255.0f;
+
 // The linear value from which the display shows grey at full white (infinity when it never does): the
 // lattice need not reach much beyond it.
 double grey_saturation(const DisplayOptions& display) {
@@ -200,7 +203,7 @@ double grey_saturation(const DisplayOptions& display) {
     for (int c = 0; c < 3; ++c) ramp.push_back(static_cast<float>(std::exp2(i / 4.0 - 20.0)));
   const std::vector<float> shown = to_display_values(static_cast<int>(ramp.size() / 3), 1, ramp, display);
   for (size_t i = 0; i < shown.size(); i += 3)
-    if (shown[i] >= 1.0f && shown[i + 1] >= 1.0f && shown[i + 2] >= 1.0f) return ramp[i];
+    if (std::min({shown[i], shown[i + 1], shown[i + 2]}) >= kWhite) return ramp[i];
   return std::numeric_limits<double>::infinity();
 }
 
