@@ -30,7 +30,7 @@ constexpr double kBasisTolerance = 1e-4;
 // The intensity slider's top: the display lattice covers the image with every group at this scale.
 constexpr double kMaxScale = 4.0;
 // The display lattice: points per axis, over a log2 shaper of this many stops below its top.
-constexpr int kLatticePoints = 65;
+constexpr int kLatticePoints = 33;
 constexpr double kShaperStops = 16.0;
 // Half floats top out at 65504; larger values are clamped there rather than made infinite, which a scale
 // of 0 would turn into NaN.
@@ -116,7 +116,8 @@ std::vector<std::vector<double>> cct_weights(const ExrImage& image, const std::s
                                              const std::string& file) {
   std::vector<std::vector<double>> table;
   for (int kelvin = kCctMin; kelvin <= kCctMax; kelvin += kCctStep)
-    table.push_back(group_bin_weights(image, parse_group_change(fmt::format("{}:cct={}", group, kelvin)), file));
+    table.push_back(
+        group_bin_weights(image, parse_group_change(fmt::format("{}:cct={}", group, kelvin)), file));
   return table;
 }
 
@@ -140,9 +141,8 @@ std::vector<std::vector<double>> row_basis(const std::vector<std::vector<double>
   std::vector<std::vector<double>> residual = table, vectors;
   const size_t bins = table.front().size();
   while (vectors.size() < bins && largest_entry(residual) > kBasisTolerance) {
-    const auto pivot = std::max_element(residual.begin(), residual.end(), [](const auto& a, const auto& b) {
-      return dot(a, a) < dot(b, b);
-    });
+    const auto pivot = std::max_element(residual.begin(), residual.end(),
+                                        [](const auto& a, const auto& b) { return dot(a, a) < dot(b, b); });
     std::vector<double> q = *pivot;
     const double norm = std::sqrt(dot(q, q));
     for (double& v : q) v /= norm;
@@ -225,7 +225,9 @@ nlohmann::json display_lattice(const DisplayOptions& display, double top) {
   const std::vector<float> shown = to_display_values(n, 1, rgb, display);
   std::vector<std::uint16_t> values(shown.size());
   for (size_t i = 0; i < shown.size(); ++i)
-    values[i] = std::isnan(shown[i]) ? 0 : static_cast<std::uint16_t>(std::lround(std::clamp(shown[i], 0.0f, 1.0f) * 65535.0f));
+    values[i] = std::isnan(shown[i])
+                    ? 0
+                    : static_cast<std::uint16_t>(std::lround(std::clamp(shown[i], 0.0f, 1.0f) * 65535.0f));
   return {{"points", kLatticePoints}, {"lo", lo}, {"top", top}, {"values", base64_uint16(values)}};
 }
 
@@ -233,11 +235,20 @@ std::string html_escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -408,7 +419,8 @@ nlohmann::json group_data(const ExrImage& image, const std::string& group, const
   if (!bins.empty() && image.string_attributes.count(light_group_emission_attribute(group))) {
     const CctBasis basis = cct_basis(image, group, file);
     nlohmann::json images = nlohmann::json::array();
-    for (const std::vector<float>& b : basis_images(image, bins, basis, file)) images.push_back(base64_halves(b));
+    for (const std::vector<float>& b : basis_images(image, bins, basis, file))
+      images.push_back(base64_halves(b));
     data["cct"] = {{"basis", images},
                    {"coefficients", base64_floats(to_floats(basis.coefficients))},
                    {"unchanged_at", basis.unchanged_at}};
@@ -450,12 +462,9 @@ RelightPageStats write_relight_page(const ExrImage& image, const DisplayOptions&
   top = std::min(top, 8.0 * grey_saturation(display));
   if (!(top > 0.0) || !std::isfinite(top)) top = 1.0;
   const nlohmann::json data = {
-      {"width", image.width},
-      {"height", image.height},
-      {"render", render},
-      {"cct", {{"min", kCctMin}, {"max", kCctMax}, {"step", kCctStep}}},
-      {"groups", groups},
-      {"lattice", display_lattice(display, top)}};
+      {"width", image.width}, {"height", image.height},
+      {"render", render},     {"cct", {{"min", kCctMin}, {"max", kCctMax}, {"step", kCctStep}}},
+      {"groups", groups},     {"lattice", display_lattice(display, top)}};
   stats.lattice_points = kLatticePoints;
   const std::string html = page_html(data, render);
   const fs::path absolute = fs::absolute(dir).lexically_normal();

@@ -4,10 +4,10 @@ browser: headless Chromium driven by Selenium opens the page from a file:// URL,
 and another's colour temperature through DOM events, reads the canvas back (getImageData) and compares it
 with the PNG that the command the page shows writes (`ochre relight ... --png`).
 
-The page interpolates the display transform in a lattice (65^3 points over a log2 shaper) where the PNG
-evaluates it per pixel, and holds the layers as half floats: nearly every channel agrees within 2 levels of
-8 bits (measured: at most 1, most equal); a channel near a kink of the transform (where it clips to white)
-may differ by a few more, so the test allows 0.5 % of the channels up to 8 levels.
+The page interpolates the display transform in a lattice (33^3 points over a log2 shaper) where the PNG
+evaluates it per pixel, and holds the layers as half floats and a colour temperature as a few basis images:
+an interpolated value may round to the next 8-bit level, so every channel must agree within 2 levels and on
+average within 0.5 (measured: at most 1 level, mean 0.11 to 0.21, also with 12 % of the channels clipped).
 
 Run by ctest (tests/CMakeLists.txt, test Browser.RelightPage):
   test_relight_page.py --ochre build/bin/ochre --source . --work build/tests/tmp/browser-relight
@@ -29,9 +29,8 @@ from test_html_report import chromium_binary, skip, start_driver
 
 ARGS = None
 DRIVER = None
-TOLERANCE = 2  # levels of 8 bits, for all but OUTLIERS of the channels
-OUTLIERS = 0.005
-LARGEST = 8
+TOLERANCE = 2  # levels of 8 bits, for every channel
+MEAN_TOLERANCE = 0.5
 
 
 def read_png(path):
@@ -97,8 +96,9 @@ def move(element_id, value):
 
 
 def canvas_rgb():
-    pixels = DRIVER.execute_script("const c = document.getElementById('image');"
-                                   "return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data)")
+    pixels = DRIVER.execute_script(
+        "const c = document.getElementById('image');"
+        "return Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data)")
     return bytes(v for i, v in enumerate(pixels) if i % 4 != 3)
 
 
@@ -114,11 +114,10 @@ class RelightPage(unittest.TestCase):
         page = canvas_rgb()
         self.assertEqual(len(page), len(png))
         differences = [abs(a - b) for a, b in zip(page, png)]
-        beyond = sum(d > TOLERANCE for d in differences) / len(differences)
-        print(f"  {name}: largest difference {max(differences)} levels, {100 * beyond:.2f} % of the channels "
-              f"beyond {TOLERANCE}, mean {sum(differences) / len(differences):.3f}", file=sys.stderr)
-        self.assertLessEqual(beyond, OUTLIERS)
-        self.assertLessEqual(max(differences), LARGEST)
+        mean = sum(differences) / len(differences)
+        print(f"  {name}: largest difference {max(differences)} levels, mean {mean:.3f}", file=sys.stderr)
+        self.assertLessEqual(max(differences), TOLERANCE)
+        self.assertLessEqual(mean, MEAN_TOLERANCE)
 
     def test_unchanged(self):
         open_page()
@@ -138,8 +137,16 @@ class RelightPage(unittest.TestCase):
             "ochre relight render.exr --group torch:scale=0.5 --group lamp:cct=6500 --png relit.png", "cct")
         DRIVER.find_element("id", "cct-lamp-reset").click()
         DRIVER.find_element("id", "on-other").click()
-        self.compare_with_command("ochre relight render.exr --group torch:scale=0.5 --group other:off --png relit.png",
-                                  "reset")
+        self.compare_with_command(
+            "ochre relight render.exr --group torch:scale=0.5 --group other:off --png relit.png", "reset")
+
+    def test_bright_enough_to_clip(self):
+        open_page()
+        move("scale-torch", 4)
+        move("cct-torch", 10000)
+        move("scale-lamp", 2.5)
+        self.compare_with_command("ochre relight render.exr --group torch:scale=4,cct=10000 --group lamp:scale=2.5 "
+                                  "--png relit.png", "clip")
 
     def test_no_colour_temperature_without_one_emission(self):
         open_page()
