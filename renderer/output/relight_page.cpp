@@ -15,6 +15,7 @@
 #include "renderer/util/atomic_directory.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/base64.h"
+#include "renderer/util/xml_escape.h"
 #include "spectra/input_error.h"
 
 namespace ochre {
@@ -231,29 +232,6 @@ nlohmann::json display_lattice(const DisplayOptions& display, double top) {
   return {{"points", kLatticePoints}, {"lo", lo}, {"top", top}, {"values", base64_uint16(values)}};
 }
 
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 // The page's script, which reads DATA (the JSON above it).
 const char* kScript = R"JS(
 "use strict";
@@ -399,7 +377,7 @@ std::string page_html(const nlohmann::json& data, const std::string& render) {
   std::string json = data.dump();
   // The data sits in a <script> element: no "</script>" may end it early ('<' appears only in strings).
   for (size_t at; (at = json.find('<')) != std::string::npos;) json.replace(at, 1, "\\u003c");
-  const std::string title = html_escaped(render);
+  const std::string title = xml_escape(render);
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Relight {0}</title>\n"
       "<style>{1}</style>\n</head>\n<body>\n<h1>Relight {0}</h1>\n<div id=\"groups\"></div>\n"

@@ -25,7 +25,7 @@ import time
 import unittest
 import zlib
 
-from test_html_report import chromium_binary, skip, start_driver
+from test_html_report import require_browser, run_tests, start_driver
 
 ARGS = None
 DRIVER = None
@@ -162,23 +162,12 @@ def main():
     parser.add_argument("--work", required=True)
     ARGS = parser.parse_args()
     ARGS.work, ARGS.ochre = os.path.abspath(ARGS.work), os.path.abspath(ARGS.ochre)
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        skip(f"no Selenium for {sys.executable} (Debian: python3-selenium)")
-    if not chromium_binary():
-        skip("no Chromium (Debian: chromium)")
-    if not shutil.which("chromedriver"):
-        skip("no chromedriver (Debian: chromium-driver)")
+    require_browser()
     shutil.rmtree(ARGS.work, ignore_errors=True)
     os.makedirs(ARGS.work)
     render(ARGS.work)
     DRIVER = start_driver()
-    try:
-        result = unittest.main(argv=[sys.argv[0], "-v"], exit=False).result
-    finally:
-        DRIVER.quit()
-    sys.exit(0 if result.wasSuccessful() else 1)
+    run_tests(DRIVER)
 
 
 if __name__ == "__main__":
