@@ -149,9 +149,14 @@ class RelightPage(unittest.TestCase):
                                   "--png relit.png", "clip")
 
     def test_no_colour_temperature_without_one_emission(self):
+        DRIVER.get_log("browser")  # drop earlier messages
         open_page()
+        DRIVER.find_element("id", "copy").click()  # the clipboard may refuse: the page falls back quietly
         self.assertEqual(DRIVER.find_elements("id", "cct-other"), [])
         self.assertEqual(len(DRIVER.find_elements("id", "cct-torch")), 1)
+        self.assertEqual(DRIVER.find_element("id", "cct-torch").get_attribute("value"), "1700")
+        self.assertEqual(DRIVER.find_element("id", "cct-torch-value").text, "unchanged (about 1700 K)")
+        self.assertEqual([e["message"] for e in DRIVER.get_log("browser") if e["level"] == "SEVERE"], [])
 
 
 def main():
