@@ -117,6 +117,11 @@ void apply_white_balance(std::vector<float>& rgb, ColorSpace space, const std::a
 
 std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vector<float>& rgb,
                                           const DisplayOptions& options, DisplayTransformReport* report) {
+  return quantize(to_display_values(width, height, rgb, options, report));
+}
+
+std::vector<float> to_display_values(int width, int height, const std::vector<float>& rgb,
+                                     const DisplayOptions& options, DisplayTransformReport* report) {
   check_size(width, height, rgb, "display image");
   const ColorSpace pixels_space = parse_pixels_space(options.working_space);
   if (!std::isfinite(options.exposure_stops)) {
@@ -143,7 +148,7 @@ std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vect
     used.warnings = display.warnings();
   }
   if (report) *report = used;
-  return quantize(work);
+  return work;
 }
 
 DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,

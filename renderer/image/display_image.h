@@ -50,6 +50,10 @@ void convert_working_space(std::vector<float>& rgb, ColorSpace from, ColorSpace 
 std::vector<std::uint8_t> to_display_rgb8(int width, int height, const std::vector<float>& rgb,
                                           const DisplayOptions& options,
                                           DisplayTransformReport* report = nullptr);
+// The same before quantization: display-encoded values, to_display_rgb8 = quantize_unorm8 of each (for a
+// page that bakes the transform into a lattice and interpolates before it quantizes).
+std::vector<float> to_display_values(int width, int height, const std::vector<float>& rgb,
+                                     const DisplayOptions& options, DisplayTransformReport* report = nullptr);
 
 // Writes an 8-bit RGB PNG (whatever the extension). Throws ImageError naming the file.
 DisplayTransformReport write_display_png(const std::filesystem::path& path, int width, int height,

@@ -125,6 +125,27 @@ std::vector<double> bin_weights(const ExrImage& image, const std::string& file, 
 
 }  // namespace
 
+std::vector<std::string> light_group_names(const ExrImage& image, const std::string& file) {
+  const auto listed = image.string_attributes.find("ochre.lightGroups");
+  if (listed == image.string_attributes.end() || listed->second.empty())
+    throw InputError(
+        fmt::format("{}: has no light groups (attribute ochre.lightGroups): render a scene whose "
+                    "lights name groups (docs/lights.md, \"Light groups\")",
+                    file));
+  return split(listed->second, ',');
+}
+
+std::vector<std::string> group_bin_layer_names(const ExrImage& image, const std::string& group) {
+  std::vector<std::string> names;
+  for (const auto& [centre, name] : group_bin_layers(image, group)) names.push_back(name);
+  return names;
+}
+
+std::vector<double> group_bin_weights(const ExrImage& image, const GroupChange& change,
+                                      const std::string& file) {
+  return bin_weights(image, file, change, group_bin_layers(image, change.group));
+}
+
 GroupChange parse_group_change(std::string_view text) {
   const size_t colon = text.find(':');
   GroupChange change;
@@ -163,13 +184,7 @@ GroupChange parse_group_change(std::string_view text) {
 }
 
 ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes, const std::string& file) {
-  const auto listed = image.string_attributes.find("ochre.lightGroups");
-  if (listed == image.string_attributes.end() || listed->second.empty())
-    throw InputError(
-        fmt::format("{}: has no light groups (attribute ochre.lightGroups): render a scene whose "
-                    "lights name groups (docs/lights.md, \"Light groups\")",
-                    file));
-  const std::vector<std::string> groups = split(listed->second, ',');
+  const std::vector<std::string> groups = light_group_names(image, file);
   std::map<std::string, GroupChange> change;
   for (const std::string& g : groups) change[g].group = g;
   std::map<std::string, int> named;

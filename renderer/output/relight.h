@@ -30,6 +30,19 @@ struct GroupChange {
 // the text otherwise (the CSV file read is recorded by an InputFileLog that is recording).
 GroupChange parse_group_change(std::string_view text);
 
+// The render's light groups (ochre.lightGroups), in order. InputError naming the file when it has none.
+std::vector<std::string> light_group_names(const ExrImage& image, const std::string& file);
+
+// The spectral bin layers of `group` (group.<group>.<centre>nm, each with .R, .G, .B), by increasing centre;
+// empty for a render without --spectral-bins.
+std::vector<std::string> group_bin_layer_names(const ExrImage& image, const std::string& group);
+
+// The weight relight() gives each of those layers for `change` of spectrum (change.spectrum set): its scale
+// times the ratio of the new emission to the old over the bin. InputError as relight()'s for a group
+// without bins or without one emission spectrum. For the relighting page, which must weigh as relight does.
+std::vector<double> group_bin_weights(const ExrImage& image, const GroupChange& change,
+                                      const std::string& file);
+
 // The render `image` (read from `file`, for messages) relit: R, G, B are the sum of the groups' layers, each
 // times its change's scale (1 for a group no change names), and the groups' layers are scaled alike. A change
 // of spectrum keeps the group's luminance and weighs each of the group's spectral bins by the ratio of the

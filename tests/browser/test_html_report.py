@@ -41,6 +41,27 @@ def chromium_binary():
     return None
 
 
+def require_browser():
+    """Exits 77 (skipped) unless Selenium, Chromium and chromedriver are all there."""
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        skip(f"no Selenium for {sys.executable} (Debian: python3-selenium)")
+    if not chromium_binary():
+        skip("no Chromium (Debian: chromium)")
+    if not shutil.which("chromedriver"):
+        skip("no chromedriver (Debian: chromium-driver)")
+
+
+def run_tests(driver):
+    """Runs the test cases of the script started (unittest), quits `driver`, exits 0 or 1."""
+    try:
+        result = unittest.main(argv=[sys.argv[0], "-v"], exit=False).result
+    finally:
+        driver.quit()
+    sys.exit(0 if result.wasSuccessful() else 1)
+
+
 def make_suite(work):
     """work/suite: lambert_environment made brighter (fails against the committed reference), spot_light
     (passes) and the polarized spectral scene of this folder with a reference made now."""
@@ -305,14 +326,7 @@ def main():
     parser.add_argument("--source", required=True)
     parser.add_argument("--work", required=True)
     ARGS = parser.parse_args()
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        skip(f"no Selenium for {sys.executable} (Debian: python3-selenium)")
-    if not chromium_binary():
-        skip("no Chromium (Debian: chromium)")
-    if not shutil.which("chromedriver"):
-        skip("no chromedriver (Debian: chromium-driver)")
+    require_browser()
     shutil.rmtree(ARGS.work, ignore_errors=True)
     os.makedirs(ARGS.work)
     start = time.time()
@@ -321,11 +335,7 @@ def main():
     start = time.time()
     DRIVER = start_driver()
     print(f"Chromium started in {time.time() - start:.2f} s", file=sys.stderr)
-    try:
-        result = unittest.main(argv=[sys.argv[0], "-v"], exit=False).result
-    finally:
-        DRIVER.quit()
-    sys.exit(0 if result.wasSuccessful() else 1)
+    run_tests(DRIVER)
 
 
 if __name__ == "__main__":

@@ -211,6 +211,10 @@ int ochre_command(int argc, char** argv) {
       ->check(ochre::non_empty_path());
   relight->add_option("--png", relight_cmd.png, "Output display PNG (the render's display transform)")
       ->check(ochre::non_empty_path());
+  relight
+      ->add_option("--html", relight_cmd.html,
+                   "Output directory for a page that relights the render in a browser (sliders per group)")
+      ->check(ochre::non_empty_path());
   relight->add_flag("-q,--quiet", relight_cmd.quiet, "No report");
   DisplayOverrides relight_display;
   relight_display.add_to(relight);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/util/xml_escape.h"  // xml_escape, for the report's pages
+
 namespace ochre {
 
 struct SceneRecord {
@@ -28,9 +30,6 @@ struct RunRecord {
 
 // The current time as ISO 8601 UTC, "2024-05-01T12:34:56Z".
 std::string utc_timestamp_now();
-
-// XML text with &, <, >, " and ' escaped (for attribute values and text; also valid HTML).
-std::string xml_escape(const std::string& text);
 
 // <testsuite name="ochre-regress" tests=.. failures=.. errors="0" time=.. timestamp=..> with one
 // <testcase> per scene.

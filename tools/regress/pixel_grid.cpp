@@ -1,7 +1,6 @@
 #include "tools/regress/pixel_grid.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace ochre {
@@ -63,26 +62,6 @@ std::vector<float> reduce_to_grid(const std::vector<float>& values, int componen
     for (size_t cell = 0; cell < grid.cells(); ++cell)
       for (size_t k = 0; k < c; ++k) cells[cell * c + k] /= static_cast<float>(counts[cell]);
   return cells;
-}
-
-std::string base64_floats(const std::vector<float>& values) {
-  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::vector<unsigned char> bytes;
-  bytes.reserve(values.size() * 4);
-  for (const float v : values) {
-    const auto bits = std::bit_cast<std::uint32_t>(v);
-    for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<unsigned char>(bits >> shift));
-  }
-  std::string text;
-  text.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const size_t n = std::min<size_t>(3, bytes.size() - i);
-    std::uint32_t group = static_cast<std::uint32_t>(bytes[i]) << 16;
-    if (n > 1) group |= static_cast<std::uint32_t>(bytes[i + 1]) << 8;
-    if (n > 2) group |= bytes[i + 2];
-    for (size_t k = 0; k < 4; ++k) text += k <= n ? kAlphabet[(group >> (18 - 6 * k)) & 63] : '=';
-  }
-  return text;
 }
 
 }  // namespace ochre

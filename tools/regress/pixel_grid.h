@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/util/base64.h"  // base64_floats, which the pages decode
+
 namespace ochre {
 
 struct PixelGrid {
@@ -33,8 +35,5 @@ enum class BlockReduce {
 // values: `components` floats per pixel, row 0 = top; returns `components` floats per block.
 std::vector<float> reduce_to_grid(const std::vector<float>& values, int components, const PixelGrid& grid,
                                   BlockReduce reduce);
-
-// Base64 (RFC 4648, with padding) of the floats as little-endian IEEE 754 binary32.
-std::string base64_floats(const std::vector<float>& values);
 
 }  // namespace ochre
