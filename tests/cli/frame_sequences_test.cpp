@@ -7,24 +7,14 @@
 
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
+#include "cli/torch_scene.h"
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::frame_sequences_test {
 namespace {
 
-// A wall lit by a torch and a grease lamp, 24x16 pixels.
-const char* kTorchScene = R"({
-  "camera": {"eye": [0, 1, 4], "target": [0, 1, 0], "fov": 50},
-  "film": {"resolution": [24, 16]},
-  "integrator": {"spp": 4},
-  "materials": {"rock": {"type": "lambert", "color": [0.6, 0.5, 0.4]}},
-  "lights": [{"type": "flame", "preset": "torch", "position": [0.3, 1.2, 0.5]},
-             {"type": "flame", "preset": "grease_lamp", "position": [-0.5, 0.8, 0.4],
-              "flicker": {"cct_std": 50, "position_std": 0.01}}],
-  "shapes": [{"type": "plane", "size": [6, 4], "material": "rock", "transform": [{"translate": [0, 1, 0]}]}]
-})";
-
+// The wall lit by a torch and a grease lamp (cli/torch_scene.h).
 std::filesystem::path torch_dir() {
   const auto dir = scratch_dir();
   write_text(dir / "scene.json", kTorchScene);
@@ -32,9 +22,7 @@ std::filesystem::path torch_dir() {
 }
 
 double mean_red(const ExrImage& image) {
-  double sum = 0;
-  for (float v : *image.find_channel("R")) sum += v;
-  return sum / static_cast<double>(image.find_channel("R")->size());
+  return mean_of(exr_channel(image, "R"));
 }
 
 TEST(FrameSequences, WritesNumberedOutputs) {

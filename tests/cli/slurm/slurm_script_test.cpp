@@ -15,7 +15,7 @@
 
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
-#include "cli/slurm/torch_scene.h"
+#include "cli/torch_scene.h"
 #include "support/test_paths.h"
 
 namespace ochre::test::slurm_script_test {

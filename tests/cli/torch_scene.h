@@ -1,6 +1,7 @@
 #pragma once
-// The scene of the Slurm frame tests: a wall lit by a torch and a grease lamp whose flames flicker from frame
-// to frame (docs/cli.md#frame-sequences), 24x16 pixels, 4 samples per pixel: a frame renders in milliseconds.
+// The scene of the frame-sequence tests (tests/cli/frame_sequences_test.cpp, the Slurm frame tests): a wall
+// lit by a torch and a grease lamp whose flames flicker from frame to frame (docs/cli.md#frame-sequences),
+// 24x16 pixels, 4 samples per pixel: a frame renders in milliseconds.
 
 namespace ochre::test {
 
