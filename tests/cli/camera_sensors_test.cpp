@@ -8,6 +8,7 @@
 
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
+#include "cli/exr_bits.h"
 #include "renderer/image/exr_reader.h"
 #include "spectra/blackbody_spectrum.h"
 #include "spectra/cie.h"
@@ -31,13 +32,8 @@ std::string grey_wall(const std::string& sensor, const std::string& radiance) {
 }
 
 std::array<double, 3> mean_rgb(const ExrImage& image) {
-  std::array<double, 3> m{};
-  const char* names[3] = {"R", "G", "B"};
-  for (int c = 0; c < 3; ++c) {
-    for (float v : *image.find_channel(names[c])) m[c] += v;
-    m[c] /= static_cast<double>(image.find_channel(names[c])->size());
-  }
-  return m;
+  return {mean_of(exr_channel(image, "R")), mean_of(exr_channel(image, "G")),
+          mean_of(exr_channel(image, "B"))};
 }
 
 ExrImage render(const std::string& scene) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cli/cli_runner.h"
+#include "cli/exr_bits.h"
 #include "materials/core/pi.h"
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
@@ -19,16 +20,7 @@ struct Rendered {
   ExrImage exr;
   std::string log;
   // Mean over all pixels of a channel.
-  double mean(const std::string& channel) const {
-    const std::vector<float>* c = exr.find_channel(channel);
-    if (!c) {
-      ADD_FAILURE() << "no channel " << channel;
-      return 0.0;
-    }
-    double sum = 0.0;
-    for (float v : *c) sum += v;
-    return sum / static_cast<double>(c->size());
-  }
+  double mean(const std::string& channel) const { return mean_of(exr_channel(exr, channel)); }
   double luminance() const { return 0.2126729 * mean("R") + 0.7151522 * mean("G") + 0.0721750 * mean("B"); }
 };
 
