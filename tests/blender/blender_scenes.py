@@ -1,0 +1,206 @@
+"""Run inside Blender by test_blender.py: build a test scene by script, export it with the add-on, render it
+with ochre and with Cycles (or with the ochre render engine) and print the mean colours as one JSON line.
+
+    blender -b --factory-startup --python blender_scenes.py -- CASE WORK_DIR OCHRE_BINARY
+
+CASE: point, spot, area, sun, world (a grey Lambertian plane lit by that light alone), suzanne (Suzanne on a
+textured plane under an area light), engine (the suzanne scene through the render engine and directly).
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import bpy
+import numpy as np
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..'))
+sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender'))
+
+import ochre_blender  # noqa: E402 (after the path above)
+from ochre_blender import export  # noqa: E402
+
+CASE, WORK, OCHRE = sys.argv[sys.argv.index('--') + 1:][:3]
+WIDTH, HEIGHT, SPP, MAX_DEPTH = 64, 48, 64, 4
+
+
+def clear():
+    for ob in list(bpy.data.objects):
+        bpy.data.objects.remove(ob)
+
+
+def diffuse_material(name, colour, principled=False):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nt = mat.node_tree
+    out = nt.nodes['Material Output']
+    if principled:
+        node = nt.nodes['Principled BSDF']
+        node.inputs['Base Color'].default_value = (*colour, 1.0)
+        node.inputs['Specular'].default_value = 0.0
+        node.inputs['Roughness'].default_value = 1.0
+    else:
+        nt.nodes.remove(nt.nodes['Principled BSDF'])
+        node = nt.nodes.new('ShaderNodeBsdfDiffuse')
+        node.inputs['Color'].default_value = (*colour, 1.0)
+        node.inputs['Roughness'].default_value = 0.0
+    nt.links.new(node.outputs[0], out.inputs['Surface'])
+    return mat, node
+
+
+def add_camera(location, rotation_deg, lens=35.0):
+    cam = bpy.data.cameras.new('cam')
+    cam.lens = lens
+    ob = bpy.data.objects.new('cam', cam)
+    ob.location = location
+    ob.rotation_euler = [math.radians(a) for a in rotation_deg]
+    bpy.context.scene.collection.objects.link(ob)
+    bpy.context.scene.camera = ob
+    return ob
+
+
+def add_light(kind, location, rotation_deg=(0, 0, 0), **props):
+    light = bpy.data.lights.new(kind.lower(), kind)
+    for k, v in props.items():
+        setattr(light, k, v)
+    ob = bpy.data.objects.new(kind.lower(), light)
+    ob.location = location
+    ob.rotation_euler = [math.radians(a) for a in rotation_deg]
+    bpy.context.scene.collection.objects.link(ob)
+    return ob
+
+
+def black_world():
+    world = bpy.data.worlds.new('world')
+    world.use_nodes = True
+    world.node_tree.nodes['Background'].inputs['Color'].default_value = (0, 0, 0, 1)
+    bpy.context.scene.world = world
+    return world
+
+
+def plane(size, material):
+    bpy.ops.mesh.primitive_plane_add(size=size)
+    ob = bpy.context.active_object
+    ob.data.materials.append(material)
+    return ob
+
+
+def light_scene(kind):
+    clear()
+    world = black_world()
+    mat, _ = diffuse_material('grey', (0.5, 0.5, 0.5))
+    plane(8.0, mat)
+    add_camera((0.0, -3.0, 2.2), (55.0, 0.0, 0.0))
+    if kind == 'point':
+        add_light('POINT', (0.3, -0.2, 1.2), energy=150.0, shadow_soft_size=0.0)
+    elif kind == 'spot':
+        add_light('SPOT', (0.2, 0.0, 1.6), (-15.0, 0.0, 0.0), energy=400.0, shadow_soft_size=0.0,
+                  spot_size=math.radians(60.0), spot_blend=0.3)
+    elif kind == 'area':
+        add_light('AREA', (0.0, 0.2, 1.4), (10.0, -5.0, 30.0), energy=60.0, shape='RECTANGLE', size=0.6,
+                  size_y=0.3)
+    elif kind == 'sun':
+        add_light('SUN', (0.0, 0.0, 5.0), (30.0, 10.0, 0.0), energy=2.0, angle=0.0)
+    elif kind == 'world':
+        world.node_tree.nodes['Background'].inputs['Color'].default_value = (0.4, 0.5, 0.6, 1.0)
+        world.node_tree.nodes['Background'].inputs['Strength'].default_value = 1.5
+
+
+def suzanne_scene():
+    clear()
+    black_world()
+    image = bpy.data.images.new('grid', 256, 256)
+    image.generated_type = 'COLOR_GRID'
+    floor_mat, bsdf = diffuse_material('floor', (1.0, 1.0, 1.0), principled=True)
+    tex = floor_mat.node_tree.nodes.new('ShaderNodeTexImage')
+    tex.image = image
+    floor_mat.node_tree.links.new(tex.outputs['Color'], bsdf.inputs['Base Color'])
+    plane(6.0, floor_mat)
+    bpy.ops.mesh.primitive_monkey_add(location=(-0.6, 0.0, 0.8), rotation=(0.0, 0.0, math.radians(20.0)))
+    monkey = bpy.context.active_object
+    monkey.modifiers.new('subdivision', 'SUBSURF').levels = 1
+    bpy.ops.object.shade_smooth()
+    skin, _ = diffuse_material('skin', (0.8, 0.35, 0.2))
+    monkey.data.materials.append(skin)
+    twin = monkey.copy()  # a linked duplicate: the same mesh, another place
+    twin.location = (0.9, 0.4, 0.8)
+    bpy.context.scene.collection.objects.link(twin)
+    add_light('AREA', (0.5, -1.0, 3.0), (20.0, 0.0, 0.0), energy=400.0, shape='SQUARE', size=1.0)
+    add_camera((0.0, -5.0, 3.0), (60.0, 0.0, 0.0), lens=30.0)
+
+
+def settings(engine):
+    scene = bpy.context.scene
+    r, c = scene.render, scene.cycles
+    r.engine = engine
+    r.resolution_x, r.resolution_y, r.resolution_percentage = WIDTH, HEIGHT, 100
+    c.device, c.samples, c.seed = 'CPU', SPP * 2, 0
+    c.use_adaptive_sampling = c.use_denoising = False
+    scene.view_layers[0].cycles.use_denoising = False
+    c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = MAX_DEPTH - 1
+    c.sample_clamp_direct = c.sample_clamp_indirect = 0.0
+    c.caustics_reflective = c.caustics_refractive = True
+    c.pixel_filter_type, c.filter_width = 'BOX', 1.0
+    r.threads_mode, r.threads = 'FIXED', 2
+    r.use_compositing = r.use_sequencer = False
+    scene.view_settings.view_transform, scene.view_settings.look = 'Standard', 'None'
+    im = r.image_settings
+    im.file_format, im.color_depth, im.color_mode = 'OPEN_EXR', '32', 'RGB'
+    scene.ochre.samples, scene.ochre.max_depth, scene.ochre.preset = SPP, MAX_DEPTH, 'final'
+
+
+def exr_mean(path):
+    img = bpy.data.images.load(path)
+    px = np.array(img.pixels[:], dtype=np.float64).reshape(-1, img.channels)[:, :3]
+    bpy.data.images.remove(img)
+    return px.mean(axis=0).tolist()
+
+
+def render_ochre(scene_json, exr):
+    subprocess.run([OCHRE, 'render', scene_json, '-o', exr, '-q', '--threads', '2'], check=True)
+    return exr_mean(exr)
+
+
+def render_blender(path):
+    scene = bpy.context.scene
+    scene.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    return exr_mean(path)
+
+
+def main():
+    ochre_blender.register()
+    os.makedirs(WORK, exist_ok=True)
+    if CASE == 'suzanne' or CASE == 'engine':
+        suzanne_scene()
+    else:
+        light_scene(CASE)
+    scene_json = os.path.join(WORK, CASE + '.json')
+    result = {'case': CASE}
+    if CASE == 'engine':
+        settings('OCHRE')
+        os.environ['OCHRE_EXECUTABLE'] = OCHRE
+        scene = bpy.context.scene
+        scene.ochre.threads = 2
+        result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
+        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
+        result['other'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
+    else:
+        settings('CYCLES')
+        result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
+        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, CASE + '_ochre.exr'))
+        result['other'] = render_blender(os.path.join(WORK, CASE + '_cycles.exr'))
+    print('RESULT ' + json.dumps(result))
+    sys.stdout.flush()
+
+
+try:
+    main()
+except Exception as e:  # noqa: BLE001 (any failure is the test's failure, with its message)
+    import traceback
+    traceback.print_exc()
+    print(f'blender_scenes.py: {e}', file=sys.stderr)
+    sys.stdout.flush()
+    os._exit(1)
+os._exit(0)
