@@ -3,8 +3,9 @@ with ochre and with Cycles (or with the ochre render engine) and print the mean 
 
     blender -b --factory-startup --python blender_scenes.py -- CASE WORK_DIR OCHRE_BINARY
 
-CASE: point, spot, area, sun, world (a grey Lambertian plane lit by that light alone), suzanne (Suzanne on a
-textured plane under an area light), engine (the suzanne scene through the render engine and directly).
+CASE: point, spot, area, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
+environment texture turned by a Mapping node, partly in view), suzanne (Suzanne on a textured plane under an
+area light), engine (the suzanne scene through the render engine and directly); several separated by commas.
 """
 import json
 import math
@@ -21,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender'))
 import ochre_blender  # noqa: E402 (after the path above)
 from ochre_blender import export  # noqa: E402
 
-CASE, WORK, OCHRE = sys.argv[sys.argv.index('--') + 1:][:3]
+CASES, WORK, OCHRE = sys.argv[sys.argv.index('--') + 1:][:3]
 WIDTH, HEIGHT, SPP, MAX_DEPTH = 64, 48, 64, 4
 
 
@@ -105,6 +106,19 @@ def light_scene(kind):
     elif kind == 'world':
         world.node_tree.nodes['Background'].inputs['Color'].default_value = (0.4, 0.5, 0.6, 1.0)
         world.node_tree.nodes['Background'].inputs['Strength'].default_value = 1.5
+    elif kind == 'envmap':
+        image = bpy.data.images.new('sky', 64, 32, float_buffer=True)
+        image.generated_type = 'COLOR_GRID'
+        nt = world.node_tree
+        env, mapping = nt.nodes.new('ShaderNodeTexEnvironment'), nt.nodes.new('ShaderNodeMapping')
+        coords = nt.nodes.new('ShaderNodeTexCoord')
+        env.image = image
+        mapping.inputs['Rotation'].default_value = (0.0, 0.0, math.radians(40.0))
+        nt.links.new(coords.outputs['Generated'], mapping.inputs['Vector'])
+        nt.links.new(mapping.outputs['Vector'], env.inputs['Vector'])
+        nt.links.new(env.outputs['Color'], nt.nodes['Background'].inputs['Color'])
+        nt.nodes['Background'].inputs['Strength'].default_value = 0.8
+        bpy.context.scene.camera.rotation_euler = (math.radians(80.0), 0.0, math.radians(30.0))
 
 
 def suzanne_scene():
@@ -119,7 +133,8 @@ def suzanne_scene():
     plane(6.0, floor_mat)
     bpy.ops.mesh.primitive_monkey_add(location=(-0.6, 0.0, 0.8), rotation=(0.0, 0.0, math.radians(20.0)))
     monkey = bpy.context.active_object
-    monkey.modifiers.new('subdivision', 'SUBSURF').levels = 1
+    subsurf = monkey.modifiers.new('subdivision', 'SUBSURF')
+    subsurf.levels = subsurf.render_levels = 1  # the same mesh for the viewport (export) and F12 (engine)
     bpy.ops.object.shade_smooth()
     skin, _ = diffuse_material('skin', (0.8, 0.35, 0.2))
     monkey.data.materials.append(skin)
@@ -169,30 +184,55 @@ def render_blender(path):
     return exr_mean(path)
 
 
-def main():
-    ochre_blender.register()
-    os.makedirs(WORK, exist_ok=True)
-    if CASE == 'suzanne' or CASE == 'engine':
+def spot_profile():
+    """A wide spot straight down on a plane, seen through a tiny orthographic camera on its axis and 25 degrees
+    off it: (angle, ochre, Cycles) radiances."""
+    out = []
+    for angle in (0.0, 25.0):
+        clear()
+        black_world()
+        mat, _ = diffuse_material('grey', (0.5, 0.5, 0.5))
+        plane(20.0, mat)
+        cam = add_camera((2.0 * math.tan(math.radians(angle)), 0.0, 1.0), (0.0, 0.0, 0.0))
+        cam.data.type, cam.data.ortho_scale = 'ORTHO', 0.02
+        add_light('SPOT', (0.0, 0.0, 2.0), energy=100.0, shadow_soft_size=0.0, spot_size=math.radians(80.0),
+                  spot_blend=0.0)
+        settings('CYCLES')
+        path = os.path.join(WORK, f'spot_profile_{angle:g}.json')
+        export.export_scene(bpy.context.evaluated_depsgraph_get(), path)
+        out.append([angle, render_ochre(path, path[:-5] + '_ochre.exr')[1],
+                    render_blender(path[:-5] + '_cycles.exr')[1]])
+    return out
+
+
+def run_case(case):
+    if case in ('suzanne', 'engine'):
         suzanne_scene()
     else:
-        light_scene(CASE)
-    scene_json = os.path.join(WORK, CASE + '.json')
-    result = {'case': CASE}
-    if CASE == 'engine':
-        settings('OCHRE')
+        light_scene(case)
+    scene_json = os.path.join(WORK, case + '.json')
+    result = {'case': case}
+    settings('OCHRE' if case == 'engine' else 'CYCLES')
+    result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
+    if case == 'engine':
         os.environ['OCHRE_EXECUTABLE'] = OCHRE
-        scene = bpy.context.scene
-        scene.ochre.threads = 2
-        result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
+        bpy.context.scene.ochre.threads = 2
         result['ochre'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
         result['other'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
     else:
-        settings('CYCLES')
-        result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
-        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, CASE + '_ochre.exr'))
-        result['other'] = render_blender(os.path.join(WORK, CASE + '_cycles.exr'))
+        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, case + '_ochre.exr'))
+        result['other'] = render_blender(os.path.join(WORK, case + '_cycles.exr'))
+    if case == 'spot':
+        result['profile'] = spot_profile()
     print('RESULT ' + json.dumps(result))
     sys.stdout.flush()
+
+
+def main():
+    ochre_blender.register()
+    os.makedirs(WORK, exist_ok=True)
+    for case in CASES.split(','):
+        run_case(case)
 
 
 try:

@@ -83,6 +83,21 @@ def _write_ply(path, positions, normals, uvs, colours, faces):
         out.write(f.tobytes())
 
 
+def _write_hdr(path, rgb):
+    """A Radiance RGBE file (flat scanlines) of an (h, w, 3) array of linear values, top row first."""
+    h, w, _ = rgb.shape
+    rgb = np.maximum(np.nan_to_num(rgb.astype(np.float64), nan=0.0, posinf=0.0), 0.0)
+    peak = rgb.max(axis=2)
+    mantissa, exponent = np.frexp(peak)
+    scale = np.where(peak > 1e-32, mantissa * 256.0 / np.where(peak > 1e-32, peak, 1.0), 0.0)
+    rgbe = np.zeros((h, w, 4), dtype=np.uint8)
+    rgbe[..., :3] = np.clip(rgb * scale[..., None], 0, 255).astype(np.uint8)
+    rgbe[..., 3] = np.where(peak > 1e-32, exponent + 128, 0).astype(np.uint8)
+    with open(path, 'wb') as out:
+        out.write(f'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y {h} +X {w}\n'.encode('ascii'))
+        out.write(rgbe.tobytes())
+
+
 def _foreach(collection, attr, n, dtype=np.float32):
     a = np.empty(n, dtype=dtype)
     collection.foreach_get(attr, a)
@@ -156,13 +171,21 @@ class Exporter:
         usable = ('.hdr', '.exr') if hdr else ('.png', '.jpg', '.jpeg', '.exr', '.hdr', '.tif', '.tiff', '.tga', '.bmp')
         if image.source == 'FILE' and not image.packed_file and os.path.isfile(src) and ext in usable:
             rel = os.path.abspath(src)
-        else:  # generated, packed or in a format ochre does not read: a copy beside the scene
-            float_data = hdr or image.is_float
-            path, rel = self.asset(_safe_name(image.name) + ('.exr' if float_data else '.png'))
+        elif hdr or image.is_float:  # generated, packed or another format: a Radiance HDR copy
+            path, rel = self.asset(_safe_name(image.name) + '.hdr')
+            w, h = image.size
+            pixels = np.empty(w * h * image.channels, dtype=np.float32)
+            image.pixels.foreach_get(pixels)
+            rgb = pixels.reshape(h, w, image.channels)[::-1, :, :3]  # Blender's rows go bottom up
+            if image.channels < 3:
+                rgb = np.repeat(pixels.reshape(h, w, image.channels)[::-1, :, :1], 3, axis=2)
+            _write_hdr(path, rgb)
+        else:  # an 8-bit image that is generated, packed or in a format ochre does not read: a PNG copy
+            path, rel = self.asset(_safe_name(image.name) + '.png')
             copy = image.copy()
             try:
                 copy.filepath_raw = path
-                copy.file_format = 'OPEN_EXR' if float_data else 'PNG'
+                copy.file_format = 'PNG'
                 copy.save()
             finally:
                 bpy.data.images.remove(copy)
