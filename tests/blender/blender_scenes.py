@@ -138,9 +138,22 @@ def suzanne_scene():
     bpy.ops.object.shade_smooth()
     skin, _ = diffuse_material('skin', (0.8, 0.35, 0.2))
     monkey.data.materials.append(skin)
-    twin = monkey.copy()  # a linked duplicate: the same mesh, another place
-    twin.location = (0.9, 0.4, 0.8)
+    monkeys = bpy.data.collections.new('monkeys')  # a collection instance: one PLY for both Suzannes
+    bpy.context.scene.collection.children.link(monkeys)
+    for owner in list(monkey.users_collection):
+        owner.objects.unlink(monkey)
+    monkeys.objects.link(monkey)
+    twin = bpy.data.objects.new('twin', None)
+    twin.instance_type, twin.instance_collection = 'COLLECTION', monkeys
+    twin.location = (1.5, 0.4, 0.0)
     bpy.context.scene.collection.objects.link(twin)
+    bpy.ops.mesh.primitive_cube_add(size=0.4, location=(-1.6, -1.0, 0.2))
+    cube = bpy.context.active_object
+    cube.data.materials.append(skin)
+    for x in (-0.8, 0.0):  # linked duplicates: one PLY for the three cubes
+        dup = cube.copy()
+        dup.location.x = x
+        bpy.context.scene.collection.objects.link(dup)
     add_light('AREA', (0.5, -1.0, 3.0), (20.0, 0.0, 0.0), energy=400.0, shape='SQUARE', size=1.0)
     add_camera((0.0, -5.0, 3.0), (60.0, 0.0, 0.0), lens=30.0)
 
@@ -166,10 +179,13 @@ def settings(engine):
 
 
 def exr_mean(path):
+    """The mean colour of an EXR and the means of its 4 x 3 blocks (rows from the bottom)."""
     img = bpy.data.images.load(path)
-    px = np.array(img.pixels[:], dtype=np.float64).reshape(-1, img.channels)[:, :3]
+    w, h = img.size
+    px = np.array(img.pixels[:], dtype=np.float64).reshape(h, w, img.channels)[:, :, :3]
     bpy.data.images.remove(img)
-    return px.mean(axis=0).tolist()
+    blocks = px.reshape(3, h // 3, 4, w // 4, 3).mean(axis=(1, 3)).reshape(-1, 3)
+    return px.reshape(-1, 3).mean(axis=0).tolist(), blocks.tolist()
 
 
 def render_ochre(scene_json, exr):
@@ -200,8 +216,8 @@ def spot_profile():
         settings('CYCLES')
         path = os.path.join(WORK, f'spot_profile_{angle:g}.json')
         export.export_scene(bpy.context.evaluated_depsgraph_get(), path)
-        out.append([angle, render_ochre(path, path[:-5] + '_ochre.exr')[1],
-                    render_blender(path[:-5] + '_cycles.exr')[1]])
+        out.append([angle, render_ochre(path, path[:-5] + '_ochre.exr')[0][1],
+                    render_blender(path[:-5] + '_cycles.exr')[0][1]])
     return out
 
 
@@ -217,11 +233,13 @@ def run_case(case):
     if case == 'engine':
         os.environ['OCHRE_EXECUTABLE'] = OCHRE
         bpy.context.scene.ochre.threads = 2
-        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
-        result['other'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
+        result['ochre'], result['ochre_blocks'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
+        result['other'], result['other_blocks'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
     else:
-        result['ochre'] = render_ochre(scene_json, os.path.join(WORK, case + '_ochre.exr'))
-        result['other'] = render_blender(os.path.join(WORK, case + '_cycles.exr'))
+        result['ochre'], result['ochre_blocks'] = render_ochre(scene_json, os.path.join(WORK, case + '_ochre.exr'))
+        result['other'], result['other_blocks'] = render_blender(os.path.join(WORK, case + '_cycles.exr'))
+    with open(scene_json, encoding='utf-8') as f:
+        result['files'] = sorted({s['file'] for s in json.load(f)['shapes'] if 'file' in s})
     if case == 'spot':
         result['profile'] = spot_profile()
     print('RESULT ' + json.dumps(result))

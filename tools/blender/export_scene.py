@@ -3,11 +3,13 @@
     blender -b FILE.blend --python tools/blender/export_scene.py -- OUT.json [--samples N] [--max-depth N]
 
 Writes OUT.json and the folder OUT_assets/ beside it (meshes as binary PLY, images) and prints one line per
-warning (what was not exported, or only approximately). Exit 2 on bad arguments, 0 otherwise.
+warning (what was not exported, or only approximately). Exit 2 on bad arguments, 1 when the export
+fails, 0 otherwise.
 """
 import argparse
 import os
 import sys
+import traceback
 
 import bpy
 
@@ -43,4 +45,10 @@ def main():
     sys.stdout.flush()
 
 
-main()
+try:
+    main()
+except Exception:  # noqa: BLE001 (Blender would exit 0 after a failed script: say so and exit 1)
+    traceback.print_exc()
+    sys.stdout.flush()
+    os._exit(1)
+os._exit(0)
