@@ -233,6 +233,7 @@ def run_case(case):
     if case == 'engine':
         os.environ['OCHRE_EXECUTABLE'] = OCHRE
         bpy.context.scene.ochre.threads = 2
+        bpy.context.scene.ochre.exr_copy = os.path.join(WORK, 'engine_kept.exr')
         result['ochre'], result['ochre_blocks'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
         result['other'], result['other_blocks'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
     else:

@@ -22,7 +22,8 @@ ROOT = os.path.normpath(os.path.join(HERE, '..', '..'))
 sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender', 'ochre_blender'))
 SKIP = 77
 
-import units  # noqa: E402 (after the path above; units.py imports no bpy)
+import cli  # noqa: E402 (after the path above; cli.py and units.py import no bpy)
+import units  # noqa: E402
 
 
 class Units(unittest.TestCase):
@@ -99,6 +100,20 @@ class Units(unittest.TestCase):
         self.assertAlmostEqual(units.srgb_encode(1.0), 1.0)
         self.assertAlmostEqual(units.srgb_encode(0.0), 0.0)
         self.assertAlmostEqual(units.srgb_encode(0.214041140), 0.5, places=6)
+
+
+class Cli(unittest.TestCase):
+    def test_render_command(self):
+        self.assertEqual(cli.render_command('ochre', 's.json', 'o.exr'),
+                         ['ochre', 'render', 's.json', '-o', 'o.exr', '--preset', 'final'])
+        self.assertEqual(cli.render_command('/b/ochre', 's.json', 'o.exr', 'fast', 2)[5:],
+                         ['--preset', 'fast', '--threads', '2'])
+
+    def test_progress_lines(self):
+        self.assertAlmostEqual(cli.render_progress('render: 16% (elapsed 0.7 s, ETA 3.7 s)'), 0.16)
+        self.assertAlmostEqual(cli.render_progress('render: 100% (elapsed 4.9 s)'), 1.0)
+        self.assertIsNone(cli.render_progress('loading mesh.obj: 40%'))
+        self.assertIsNone(cli.render_progress('ochre: rendered in 4.92 s on 2 threads'))
 
 
 def blender_env():

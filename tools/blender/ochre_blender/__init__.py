@@ -35,9 +35,10 @@ class OchreSettings(bpy.types.PropertyGroup):
     samples: IntProperty(name='Samples', default=64, min=1, max=1 << 24, description='Samples per pixel')
     max_depth: IntProperty(name='Max bounces', default=8, min=0, max=1024,
                            description='Scattering events on a path (1: direct light only)')
-    spectral_bins: IntProperty(name='Spectral bins', default=0, min=0, max=471,
-                               description='Spectral radiance layers added to the EXR (0: none)')
     threads: IntProperty(name='Threads', default=0, min=0, max=4096, description='0: all cores')
+    exr_copy: StringProperty(name='Keep EXR', subtype='FILE_PATH', default='',
+                             description='Where to copy the EXR ochre writes (with its render settings in the '
+                                         'header); empty: not kept')
 
 
 class RENDER_PT_ochre(bpy.types.Panel):
@@ -55,7 +56,7 @@ class RENDER_PT_ochre(bpy.types.Panel):
         settings = context.scene.ochre
         layout = self.layout
         layout.use_property_split = True
-        for key in ('preset', 'samples', 'max_depth', 'spectral_bins', 'threads'):
+        for key in ('preset', 'samples', 'max_depth', 'threads', 'exr_copy'):
             layout.prop(settings, key)
 
 

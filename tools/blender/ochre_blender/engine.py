@@ -2,16 +2,14 @@
 progress and loads the EXR it writes into the render result."""
 import os
 import queue
-import re
+import shutil
 import subprocess
 import tempfile
 import threading
 
 import bpy
 
-from . import export, units
-
-PERCENT = re.compile(r'(\d+(?:\.\d+)?)\s*%')
+from . import cli, export, units
 
 
 def ochre_executable(context=None):
@@ -20,17 +18,6 @@ def ochre_executable(context=None):
     path = prefs.preferences.ochre_path if prefs is not None else ''
     path = bpy.path.abspath(path) if path else ''
     return path or os.environ.get('OCHRE_EXECUTABLE') or 'ochre'
-
-
-def render_command(executable, scene_path, exr_path, settings):
-    cmd = [executable, 'render', scene_path, '-o', exr_path]
-    if settings is not None:
-        cmd += ['--preset', settings.preset]
-        if settings.spectral_bins > 0:
-            cmd += ['--spectral-bins', str(settings.spectral_bins)]
-        if settings.threads > 0:
-            cmd += ['--threads', str(settings.threads)]
-    return cmd
 
 
 def _pump(stream, lines):
@@ -56,7 +43,9 @@ class OchreRenderEngine(bpy.types.RenderEngine):
             self.update_stats('', 'ochre: exporting the scene')
             for message in export.export_scene(depsgraph, scene_path):
                 self.report({'WARNING'}, message)
-            cmd = render_command(ochre_executable(), scene_path, exr_path, settings)
+            cmd = cli.render_command(ochre_executable(), scene_path, exr_path)
+            if settings is not None:
+                cmd = cli.render_command(ochre_executable(), scene_path, exr_path, settings.preset, settings.threads)
             env = dict(os.environ, OCHRE_PROGRESS='plain')
             try:
                 proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
@@ -79,13 +68,17 @@ class OchreRenderEngine(bpy.types.RenderEngine):
                     break
                 line = line.rstrip()
                 tail = (tail + [line])[-8:]
-                m = PERCENT.search(line)
-                if m:
-                    self.update_progress(min(float(m.group(1)), 100.0) / 100.0)
+                done = cli.render_progress(line)
+                if done is not None:
+                    self.update_progress(done)
                 self.update_stats('', line[:200])
             if proc.wait() != 0 or not os.path.isfile(exr_path):
                 self.report({'ERROR'}, f'ochre render failed (exit {proc.returncode}): ' + ' | '.join(tail))
                 return
+            keep = bpy.path.abspath(settings.exr_copy) if settings is not None and settings.exr_copy else ''
+            if keep:
+                os.makedirs(os.path.dirname(os.path.abspath(keep)), exist_ok=True)
+                shutil.copyfile(exr_path, keep)
             result = self.begin_result(0, 0, width, height)
             result.layers[0].load_from_file(exr_path)
             self.end_result(result)
