@@ -221,6 +221,21 @@ def spot_profile():
     return out
 
 
+def library_materials():
+    """`ochre_material` on an object (the pigment library's red ochre), on a material (limestone) and an
+    unknown name: the scene includes the library files, renders, and the unknown name is warned about."""
+    bpy.data.objects['Cube']['ochre_material'] = 'red_ochre'
+    bpy.data.materials['floor']['ochre_material'] = 'limestone'
+    bpy.data.materials['skin']['ochre_material'] = 'no_such_pigment'
+    path = os.path.join(WORK, 'library.json')
+    warnings = export.export_scene(bpy.context.evaluated_depsgraph_get(), path, samples=4)
+    render_ochre(path, os.path.join(WORK, 'library.exr'))
+    with open(path, encoding='utf-8') as f:
+        scene = json.load(f)
+    return {'include': [os.path.basename(p) for p in scene.get('include', [])], 'warnings': warnings,
+            'materials': sorted({s['material'] for s in scene['shapes']})}
+
+
 def run_case(case):
     if case in ('suzanne', 'engine'):
         suzanne_scene()
@@ -243,6 +258,8 @@ def run_case(case):
         result['files'] = sorted({s['file'] for s in json.load(f)['shapes'] if 'file' in s})
     if case == 'spot':
         result['profile'] = spot_profile()
+    if case == 'suzanne':
+        result['library'] = library_materials()
     print('RESULT ' + json.dumps(result))
     sys.stdout.flush()
 

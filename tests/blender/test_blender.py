@@ -226,6 +226,12 @@ def main():
         print('meshes written:', ', '.join(results[0]['files']))
         if len(results[0]['files']) != 3:  # the plane, Suzanne (and its instance), the cube (and its duplicates)
             sys.exit(f"expected 3 mesh files (instances and linked duplicates share one), got {results[0]['files']}")
+        lib = results[0]['library']
+        print('ochre_material:', lib)
+        if sorted(lib['include']) != ['limestone.json', 'red_ochre.json'] or \
+                not any('no_such_pigment' in w for w in lib['warnings']) or \
+                not {'red_ochre', 'limestone', 'm_skin'} <= set(lib['materials']):
+            sys.exit('ochre_material: the library materials were not used as expected')
         check(results, lambda r: 0.03)
     else:
         check(run_blender(['engine'], args), lambda r: 1e-5)
