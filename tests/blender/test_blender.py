@@ -157,14 +157,17 @@ def check(results, tolerance):
         tol = tolerance(r)
         if tol is not None and max(abs(x) for x in d) > tol:
             failed.append(f"{r['case']}: ochre differs from the reference by more than {100 * tol:g} %")
-        # Where things are: the 4 x 3 block means agree to 10 % (of the image's mean where a block is dark),
-        # which a mirrored, turned or misplaced image does not.
+        # Where things are: the 4 x 3 block means agree to 10 % (of the image's mean where a block is dark;
+        # 15 % with the environment map in view: a 64 x 32 map, filtered differently), which a mirrored,
+        # turned or misplaced image does not (the map turned by 40 degrees: 113 %).
         mean = sum(r['other']) / 3.0
         worst = max(abs(a - b) / max(b, mean) for ob, cb in zip(r['ochre_blocks'], r['other_blocks'])
                     for a, b in zip(ob, cb))
         print(f"{'':8s} largest difference of a block: {100 * worst:.1f} %")
-        if r['case'] != 'spot' and worst > 0.1:
-            failed.append(f"{r['case']}: a 4 x 3 block differs by {100 * worst:.1f} % (more than 10 %)")
+        block_tolerance = 0.15 if r['case'] == 'envmap' else 0.1
+        if r['case'] != 'spot' and worst > block_tolerance:
+            failed.append(f"{r['case']}: a 4 x 3 block differs by {100 * worst:.1f} % "
+                          f"(more than {100 * block_tolerance:g} %)")
         if r['case'] == 'spot':
             edge = 1.0 / math.cos(math.radians(30.0))
             if not all(1.0 - 0.01 <= x + 1.0 <= edge for x in d):
