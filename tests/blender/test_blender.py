@@ -17,6 +17,7 @@ import subprocess
 import sys
 import unittest
 
+sys.dont_write_bytecode = True  # tests never write into the source tree (no __pycache__ beside the add-on)
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, '..', '..'))
 sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender', 'ochre_blender'))
@@ -121,6 +122,7 @@ def blender_env():
     Debian's Blender miss the system site-packages, numpy among them)."""
     env = {k: v for k, v in os.environ.items() if not k.startswith('PYENV') and k not in ('PYTHONHOME', 'PYTHONPATH')}
     env['PATH'] = os.pathsep.join(p for p in env.get('PATH', '').split(os.pathsep) if '.pyenv' not in p)
+    env['PYTHONDONTWRITEBYTECODE'] = '1'  # no __pycache__ in the source tree
     return env
 
 
