@@ -260,6 +260,13 @@ def run_case(case):
         result['profile'] = spot_profile()
     if case == 'suzanne':
         result['library'] = library_materials()
+    if case == 'engine':  # a NaN in the scene: F12 fails with a message naming the value, nothing renders
+        bpy.data.objects['area'].data.energy = float('nan')
+        try:
+            bpy.ops.render.render()
+            result['nan_error'] = None
+        except RuntimeError as e:
+            result['nan_error'] = str(e)
     print('RESULT ' + json.dumps(result))
     sys.stdout.flush()
 

@@ -239,7 +239,11 @@ def main():
             sys.exit('ochre_material: the library materials were not used as expected')
         check(results, lambda r: 0.03)
     else:
-        check(run_blender(['engine'], args), lambda r: 1e-5)
+        results = run_blender(['engine'], args)
+        print('a NaN light power:', results[0]['nan_error'])
+        if 'is not a finite number' not in (results[0]['nan_error'] or ''):
+            sys.exit('the render engine did not refuse a NaN light power with a message')
+        check(results, lambda r: 1e-5)
 
 
 if __name__ == '__main__':

@@ -68,7 +68,11 @@ class EXPORT_SCENE_OT_ochre(bpy.types.Operator, ExportHelper):
     filter_glob: StringProperty(default='*.json', options={'HIDDEN'})
 
     def execute(self, context):
-        warnings = export.export_scene(context.evaluated_depsgraph_get(), self.filepath)
+        try:
+            warnings = export.export_scene(context.evaluated_depsgraph_get(), self.filepath)
+        except (ValueError, OSError) as e:
+            self.report({'ERROR'}, f'ochre export failed: {e}')
+            return {'CANCELLED'}
         for message in warnings:
             self.report({'WARNING'}, message)
         self.report({'INFO'}, f'exported {self.filepath} ({len(warnings)} warnings)')

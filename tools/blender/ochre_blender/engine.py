@@ -41,7 +41,12 @@ class OchreRenderEngine(bpy.types.RenderEngine):
             scene_path = os.path.join(tmp, 'scene.json')
             exr_path = os.path.join(tmp, 'render.exr')
             self.update_stats('', 'ochre: exporting the scene')
-            for message in export.export_scene(depsgraph, scene_path):
+            try:
+                warnings = export.export_scene(depsgraph, scene_path)
+            except (ValueError, OSError) as e:
+                self.report({'ERROR'}, f'ochre: export failed: {e}')
+                return
+            for message in warnings:
                 self.report({'WARNING'}, message)
             cmd = cli.render_command(ochre_executable(), scene_path, exr_path)
             if settings is not None:

@@ -442,10 +442,25 @@ class Exporter:
         scene['materials'] = self.materials
         scene['lights'] = self.lights
         scene['shapes'] = self.shapes
+        bad = _non_finite(scene)
+        if bad:
+            raise ValueError(f'{self.filepath}: {bad} is not a finite number (a NaN or infinite value in Blender)')
         os.makedirs(self.dir, exist_ok=True)
         with open(self.filepath, 'w', encoding='utf-8') as f:
             json.dump(scene, f, indent=1)
         return self.warnings
+
+
+def _non_finite(value, path=''):
+    """The JSON path of the first NaN or infinite number in value, or None."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return path or 'a value'
+    items = value.items() if isinstance(value, dict) else enumerate(value) if isinstance(value, list) else ()
+    for key, item in items:
+        found = _non_finite(item, f'{path}.{key}' if isinstance(key, str) else f'{path}[{key}]')
+        if found:
+            return found.lstrip('.')
+    return None
 
 
 class MaterialTranslator:
