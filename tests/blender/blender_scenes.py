@@ -5,7 +5,9 @@ with ochre and with Cycles (or with the ochre render engine) and print the mean 
 
 CASE: point, spot, area, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
 environment texture turned by a Mapping node, partly in view), suzanne (Suzanne on a textured plane under an
-area light), engine (the suzanne scene through the render engine and directly); several separated by commas.
+area light), ortho, vertical (that scene through an orthographic camera in a portrait image, and with the
+sensor fitted vertically), engine (the suzanne scene through the render engine and directly); several
+separated by commas.
 """
 import json
 import math
@@ -179,12 +181,13 @@ def settings(engine):
 
 
 def exr_mean(path):
-    """The mean colour of an EXR and the means of its 4 x 3 blocks (rows from the bottom)."""
+    """The mean colour of an EXR and the means of its 4 x 3 blocks (3 x 4 for a portrait image)."""
     img = bpy.data.images.load(path)
     w, h = img.size
     px = np.array(img.pixels[:], dtype=np.float64).reshape(h, w, img.channels)[:, :, :3]
     bpy.data.images.remove(img)
-    blocks = px.reshape(3, h // 3, 4, w // 4, 3).mean(axis=(1, 3)).reshape(-1, 3)
+    rows, cols = (3, 4) if w >= h else (4, 3)
+    blocks = px.reshape(rows, h // rows, cols, w // cols, 3).mean(axis=(1, 3)).reshape(-1, 3)
     return px.reshape(-1, 3).mean(axis=0).tolist(), blocks.tolist()
 
 
@@ -236,14 +239,28 @@ def library_materials():
             'materials': sorted({s['material'] for s in scene['shapes']})}
 
 
+def framing(case):
+    """The Suzanne scene through other cameras: orthographic in a portrait image (sensor fit Auto), and
+    perspective with the sensor fitted vertically."""
+    scene = bpy.context.scene
+    cam = scene.camera.data
+    if case == 'ortho':
+        cam.type, cam.ortho_scale = 'ORTHO', 5.0
+        scene.render.resolution_x, scene.render.resolution_y = HEIGHT, WIDTH
+    else:
+        cam.sensor_fit, cam.sensor_height, cam.lens = 'VERTICAL', 20.0, 28.0
+
+
 def run_case(case):
-    if case in ('suzanne', 'engine'):
+    if case in ('suzanne', 'engine', 'ortho', 'vertical'):
         suzanne_scene()
     else:
         light_scene(case)
     scene_json = os.path.join(WORK, case + '.json')
     result = {'case': case}
     settings('OCHRE' if case == 'engine' else 'CYCLES')
+    if case in ('ortho', 'vertical'):
+        framing(case)
     result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
     if case == 'engine':
         os.environ['OCHRE_EXECUTABLE'] = OCHRE

@@ -3,6 +3,7 @@
     python3 test_blender.py units                                   unit conversions (plain python3, no Blender)
     python3 test_blender.py lights  --ochre BIN --work DIR          each light kind alone: ochre against Cycles
     python3 test_blender.py suzanne --ochre BIN --work DIR          Suzanne on a textured plane: ochre against Cycles
+                                                                    (also orthographic, and a vertical sensor fit)
     python3 test_blender.py engine  --ochre BIN --work DIR          F12 with the ochre engine against ochre render
     python3 test_blender.py script  --work DIR                      export_scene.py's arguments
 
@@ -227,7 +228,7 @@ def main():
         check(run_blender(['point', 'spot', 'area', 'sun', 'world', 'envmap'], args),
               lambda r: None if r['case'] == 'spot' else 0.02)
     elif args.case == 'suzanne':
-        results = run_blender(['suzanne'], args)
+        results = run_blender(['suzanne', 'ortho', 'vertical'], args)
         print('meshes written:', ', '.join(results[0]['files']))
         if len(results[0]['files']) != 3:  # the plane, Suzanne (and its instance), the cube (and its duplicates)
             sys.exit(f"expected 3 mesh files (instances and linked duplicates share one), got {results[0]['files']}")
