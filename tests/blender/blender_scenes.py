@@ -151,7 +151,14 @@ def suzanne_scene():
     bpy.context.scene.collection.objects.link(twin)
     bpy.ops.mesh.primitive_cube_add(size=0.4, location=(-1.6, -1.0, 0.2))
     cube = bpy.context.active_object
-    cube.data.materials.append(skin)
+    paint = cube.data.color_attributes.new('paint', 'BYTE_COLOR', 'POINT')  # vertex colours: 8 corners
+    for i, value in enumerate(paint.data):
+        value.color = (0.9 if i & 1 else 0.1, 0.8 if i & 2 else 0.2, 0.7 if i & 4 else 0.05, 1.0)
+    painted, bsdf = diffuse_material('painted', (1.0, 1.0, 1.0))
+    colours = painted.node_tree.nodes.new('ShaderNodeVertexColor')
+    colours.layer_name = 'paint'
+    painted.node_tree.links.new(colours.outputs['Color'], bsdf.inputs['Color'])
+    cube.data.materials.append(painted)
     for x in (-0.8, 0.0):  # linked duplicates: one PLY for the three cubes
         dup = cube.copy()
         dup.location.x = x
