@@ -447,8 +447,18 @@ class Exporter:
             raise ValueError(f'{self.filepath}: {bad} is not a finite number (a NaN or infinite value in Blender)')
         os.makedirs(self.dir, exist_ok=True)
         with open(self.filepath, 'w', encoding='utf-8') as f:
-            json.dump(scene, f, indent=1)
+            f.write(_dumps(scene))
         return self.warnings
+
+
+# A list of numbers as json.dumps indents it (a string never holds a raw line break, so none is matched).
+NUMBER_LIST = re.compile(r'\[\n\s*(-?[0-9][-0-9.eE+]*(?:,\n\s*-?[0-9][-0-9.eE+]*)*)\n\s*\]')
+
+
+def _dumps(scene):
+    """The scene as indented JSON with each list of numbers on one line."""
+    text = json.dumps(scene, indent=1)
+    return NUMBER_LIST.sub(lambda m: '[' + ', '.join(x.strip() for x in m.group(1).split(',')) + ']', text) + '\n'
 
 
 def _non_finite(value, path=''):
