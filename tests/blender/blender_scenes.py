@@ -231,6 +231,43 @@ def spot_profile():
     return out
 
 
+def material_variety():
+    """Every mapped shader on its own sphere (metal, half metal, glass, rough glass, emission, glossy, add and mix
+    shaders, an unmapped shader): ochre accepts the exported materials and the approximations are warned about."""
+    clear()
+    black_world()
+    add_light('SUN', (0.0, 0.0, 5.0), (20.0, 0.0, 0.0), energy=3.0, angle=0.0)
+    add_camera((0.0, -8.0, 1.0), (85.0, 0.0, 0.0))
+    variants = []
+    for name, values in (('metal', {'Metallic': 1.0, 'Roughness': 0.3}), ('half_metal', {'Metallic': 0.5}),
+                         ('glass', {'Transmission': 1.0, 'Roughness': 0.0}),
+                         ('rough_glass', {'Transmission': 1.0, 'Roughness': 0.4}),
+                         ('glow', {'Emission': (1.0, 0.5, 0.2, 1.0), 'Emission Strength': 2.0})):
+        mat = bpy.data.materials.new(name)
+        mat.use_nodes = True
+        bsdf = mat.node_tree.nodes['Principled BSDF']
+        for key, value in values.items():
+            bsdf.inputs[key].default_value = value
+        variants.append(mat)
+    for name, kind in (('glossy', 'ShaderNodeBsdfGlossy'), ('added', 'ShaderNodeAddShader'),
+                       ('mixed', 'ShaderNodeMixShader'), ('velvet', 'ShaderNodeBsdfVelvet')):
+        mat, _ = diffuse_material(name, (0.5, 0.5, 0.5))
+        nt = mat.node_tree
+        node = nt.nodes.new(kind)
+        if kind in ('ShaderNodeAddShader', 'ShaderNodeMixShader'):
+            nt.links.new(nt.nodes['Diffuse BSDF'].outputs[0], node.inputs[-1])
+            nt.links.new(nt.nodes.new('ShaderNodeEmission').outputs[0], node.inputs[-2])
+        nt.links.new(node.outputs[0], nt.nodes['Material Output'].inputs['Surface'])
+        variants.append(mat)
+    for i, mat in enumerate(variants):
+        bpy.ops.mesh.primitive_uv_sphere_add(radius=0.4, location=(i - len(variants) / 2, 0.0, 0.0))
+        bpy.context.active_object.data.materials.append(mat)
+    path = os.path.join(WORK, 'materials.json')
+    warnings = export.export_scene(bpy.context.evaluated_depsgraph_get(), path, samples=4)
+    render_ochre(path, os.path.join(WORK, 'materials.exr'))
+    return warnings
+
+
 def library_materials():
     """`ochre_material` on an object (the pigment library's red ochre), on a material (limestone) and an
     unknown name: the scene includes the library files, renders, and the unknown name is warned about."""
@@ -284,6 +321,7 @@ def run_case(case):
         result['profile'] = spot_profile()
     if case == 'suzanne':
         result['library'] = library_materials()
+        result['material_warnings'] = material_variety()
     if case == 'engine':  # a NaN in the scene: F12 fails with a message naming the value, nothing renders
         bpy.data.objects['area'].data.energy = float('nan')
         try:

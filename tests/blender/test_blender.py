@@ -238,6 +238,11 @@ def main():
                 not any('no_such_pigment' in w for w in lib['warnings']) or \
                 not {'red_ochre', 'limestone', 'm_skin'} <= set(lib['materials']):
             sys.exit('ochre_material: the library materials were not used as expected')
+        warnings = results[0]['material_warnings']
+        print('every shader kind exported and rendered by ochre; warnings:\n   ' + '\n   '.join(warnings))
+        for expected in ('rough transmission', 'Velvet BSDF (BSDF_VELVET) not exported'):
+            if not any(expected in w for w in warnings):
+                sys.exit(f'no warning about {expected!r}')
         check(results, lambda r: 0.03)
     else:
         results = run_blender(['engine'], args)
