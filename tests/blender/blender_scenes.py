@@ -3,7 +3,7 @@ with ochre and with Cycles (or with the ochre render engine) and print the mean 
 
     blender -b --factory-startup --python blender_scenes.py -- CASE WORK_DIR OCHRE_BINARY
 
-CASE: point, spot, area, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
+CASE: point, spot, area, ellipse, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
 environment texture turned by a Mapping node, partly in view), suzanne (Suzanne on a textured plane under an
 area light), ortho, vertical (that scene through an orthographic camera in a portrait image, and with the
 sensor fitted vertically), engine (the suzanne scene through the render engine and directly); several
@@ -103,6 +103,10 @@ def light_scene(kind):
     elif kind == 'area':
         add_light('AREA', (0.0, 0.2, 1.4), (10.0, -5.0, 30.0), energy=60.0, shape='RECTANGLE', size=0.6,
                   size_y=0.3)
+    elif kind == 'ellipse':  # an elliptic area light, scaled by its object: a disk shape in ochre
+        light = add_light('AREA', (0.3, 0.0, 1.2), (0.0, 20.0, 0.0), energy=40.0, shape='ELLIPSE', size=0.5,
+                          size_y=0.2)
+        light.scale = (1.5, 1.0, 1.0)
     elif kind == 'sun':
         add_light('SUN', (0.0, 0.0, 5.0), (30.0, 10.0, 0.0), energy=2.0, angle=0.0)
     elif kind == 'world':

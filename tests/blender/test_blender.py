@@ -225,7 +225,7 @@ def main():
     if args.case == 'script':
         test_script(args)
     elif args.case == 'lights':
-        check(run_blender(['point', 'spot', 'area', 'sun', 'world', 'envmap'], args),
+        check(run_blender(['point', 'spot', 'area', 'ellipse', 'sun', 'world', 'envmap'], args),
               lambda r: None if r['case'] == 'spot' else 0.02)
     elif args.case == 'suzanne':
         results = run_blender(['suzanne', 'ortho', 'vertical'], args)
