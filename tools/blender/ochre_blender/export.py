@@ -166,6 +166,8 @@ class Exporter:
     def image_file(self, image, hdr=False):
         if image.name in self.images:
             return self.images[image.name]
+        if image.source in ('TILED', 'SEQUENCE', 'MOVIE'):
+            self.warn(f'image {image.name}: {image.source.lower()} images not exported (its first image is used)')
         src = bpy.path.abspath(image.filepath, library=image.library) if image.filepath else ''
         ext = os.path.splitext(src)[1].lower()
         usable = ('.hdr', '.exr') if hdr else ('.png', '.jpg', '.jpeg', '.exr', '.hdr', '.tif', '.tiff', '.tga', '.bmp')
