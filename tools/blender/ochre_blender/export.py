@@ -411,7 +411,10 @@ class Exporter:
         camera, film = self.camera()
         for inst in self.depsgraph.object_instances:
             ob = inst.object
-            if ob.original.hide_render or (inst.is_instance and inst.parent.original.hide_render):
+            if inst.is_instance:  # placed by a collection instance: hidden when its instancer is
+                if inst.parent.original.hide_render:
+                    continue
+            elif ob.original.hide_render or any(c.hide_render for c in ob.original.users_collection):
                 continue
             matrix = inst.matrix_world.copy()
             if ob.type in ('MESH', 'CURVE', 'SURFACE', 'META', 'FONT'):
