@@ -22,7 +22,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender'))
 
 import ochre_blender  # noqa: E402 (after the path above)
-from ochre_blender import export  # noqa: E402
+from ochre_blender import export, exr  # noqa: E402
 
 CASES, WORK, OCHRE = sys.argv[sys.argv.index('--') + 1:][:3]
 WIDTH, HEIGHT, SPP, MAX_DEPTH = 64, 48, 64, 4
@@ -313,9 +313,12 @@ def run_case(case):
     if case == 'engine':
         os.environ['OCHRE_EXECUTABLE'] = OCHRE
         bpy.context.scene.ochre.threads = 2
+        bpy.context.scene.ochre.spectral_bins = 4  # more EXR layers: the render result still takes R, G, B
+        bpy.data.objects['area']['ochre_light_group'] = 'key'  # and a light group
         bpy.context.scene.ochre.exr_copy = os.path.join(WORK, 'engine_kept.exr')
         result['ochre'], result['ochre_blocks'] = render_ochre(scene_json, os.path.join(WORK, 'engine_direct.exr'))
         result['other'], result['other_blocks'] = render_blender(os.path.join(WORK, 'engine_result.exr'))
+        result['kept_channels'] = exr.channel_names(bpy.context.scene.ochre.exr_copy)
     else:
         result['ochre'], result['ochre_blocks'] = render_ochre(scene_json, os.path.join(WORK, case + '_ochre.exr'))
         result['other'], result['other_blocks'] = render_blender(os.path.join(WORK, case + '_cycles.exr'))

@@ -108,8 +108,8 @@ class Cli(unittest.TestCase):
     def test_render_command(self):
         self.assertEqual(cli.render_command('ochre', 's.json', 'o.exr'),
                          ['ochre', 'render', 's.json', '-o', 'o.exr', '--preset', 'final'])
-        self.assertEqual(cli.render_command('/b/ochre', 's.json', 'o.exr', 'fast', 2)[5:],
-                         ['--preset', 'fast', '--threads', '2'])
+        self.assertEqual(cli.render_command('/b/ochre', 's.json', 'o.exr', 'fast', 2, 16)[5:],
+                         ['--preset', 'fast', '--threads', '2', '--spectral-bins', '16'])
 
     def test_progress_lines(self):
         self.assertAlmostEqual(cli.render_progress('render: 16% (elapsed 0.7 s, ETA 3.7 s)'), 0.16)
@@ -246,6 +246,10 @@ def main():
         check(results, lambda r: 0.03)
     else:
         results = run_blender(['engine'], args)
+        channels = results[0]['kept_channels']
+        print('the EXR kept by the engine:', ', '.join(channels))
+        if not {'group.key.R', 'S0.418,750000nm'} <= set(channels):
+            sys.exit('the kept EXR lacks the light group "key" or the spectral bins')
         print('a NaN light power:', results[0]['nan_error'])
         if 'is not a finite number' not in (results[0]['nan_error'] or ''):
             sys.exit('the render engine did not refuse a NaN light power with a message')

@@ -36,9 +36,11 @@ class OchreSettings(bpy.types.PropertyGroup):
     max_depth: IntProperty(name='Max bounces', default=8, min=0, max=1024,
                            description='Scattering events on a path (1: direct light only)')
     threads: IntProperty(name='Threads', default=0, min=0, max=4096, description='0: all cores')
+    spectral_bins: IntProperty(name='Spectral bins', default=0, min=0, max=471,
+                               description='Spectral radiance layers in the EXR (0: none); kept with Keep EXR')
     exr_copy: StringProperty(name='Keep EXR', subtype='FILE_PATH', default='',
-                             description='Where to copy the EXR ochre writes (with its render settings in the '
-                                         'header); empty: not kept')
+                             description='Where to copy the EXR ochre writes, with all its layers (spectral bins, '
+                                         'light groups) and its render settings in the header; empty: not kept')
 
 
 class RENDER_PT_ochre(bpy.types.Panel):
@@ -56,7 +58,7 @@ class RENDER_PT_ochre(bpy.types.Panel):
         settings = context.scene.ochre
         layout = self.layout
         layout.use_property_split = True
-        for key in ('preset', 'samples', 'max_depth', 'threads', 'exr_copy'):
+        for key in ('preset', 'samples', 'max_depth', 'threads', 'spectral_bins', 'exr_copy'):
             layout.prop(settings, key)
 
 

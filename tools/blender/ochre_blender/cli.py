@@ -4,12 +4,13 @@ import re
 PROGRESS = re.compile(r'^render: (\d+(?:\.\d+)?)%')
 
 
-def render_command(executable, scene_path, exr_path, preset='final', threads=0):
-    """The arguments of `ochre render` for an exported scene (docs/cli.md). The render engine loads an RGB
-    EXR: no spectral or light-group layers (Blender 3.4 crashes loading an EXR with more channels)."""
+def render_command(executable, scene_path, exr_path, preset='final', threads=0, spectral_bins=0):
+    """The arguments of `ochre render` for an exported scene (docs/cli.md)."""
     cmd = [executable, 'render', scene_path, '-o', exr_path, '--preset', preset]
     if threads > 0:
         cmd += ['--threads', str(int(threads))]
+    if spectral_bins > 0:
+        cmd += ['--spectral-bins', str(int(spectral_bins))]
     return cmd
 
 

@@ -8,8 +8,9 @@ import tempfile
 import threading
 
 import bpy
+import numpy as np
 
-from . import cli, export, units
+from . import cli, exr, export, units
 
 
 def ochre_executable(context=None):
@@ -50,7 +51,8 @@ class OchreRenderEngine(bpy.types.RenderEngine):
                 self.report({'WARNING'}, message)
             cmd = cli.render_command(ochre_executable(), scene_path, exr_path)
             if settings is not None:
-                cmd = cli.render_command(ochre_executable(), scene_path, exr_path, settings.preset, settings.threads)
+                cmd = cli.render_command(ochre_executable(), scene_path, exr_path, settings.preset, settings.threads,
+                                         settings.spectral_bins)
             env = dict(os.environ, OCHRE_PROGRESS='plain')
             try:
                 proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
@@ -84,8 +86,15 @@ class OchreRenderEngine(bpy.types.RenderEngine):
             if keep:
                 os.makedirs(os.path.dirname(os.path.abspath(keep)), exist_ok=True)
                 shutil.copyfile(exr_path, keep)
+            try:
+                rgb = exr.read_rgb(exr_path)
+            except (OSError, ValueError) as e:
+                self.report({'ERROR'}, f'ochre: cannot read {exr_path}: {e}')
+                return
+            rgba = np.ones((height, width, 4), dtype=np.float32)
+            rgba[:, :, :3] = rgb[::-1]  # Blender's rows go bottom up
             result = self.begin_result(0, 0, width, height)
-            result.layers[0].load_from_file(exr_path)
+            result.layers[0].passes['Combined'].rect = rgba.reshape(-1, 4)
             self.end_result(result)
 
 

@@ -295,8 +295,13 @@ class Exporter:
                 slots = ob.material_slots
                 mat = slots[slot].material if slot < len(slots) else None
                 mat_name = self.material(mat.original if mat is not None else None)
-            self.shapes.append({'type': 'mesh', 'name': _safe_name(ob.original.name), 'file': rel,
-                                'transform': units.to_ochre_matrix(matrix), 'material': mat_name})
+            shape = {'type': 'mesh', 'name': _safe_name(ob.original.name), 'file': rel,
+                     'transform': units.to_ochre_matrix(matrix), 'material': mat_name}
+            if _emits(self.materials.get(mat_name)):
+                group = self.light_group(ob.original, f'object {ob.original.name}')
+                if group:
+                    shape['light_group'] = group
+            self.shapes.append(shape)
 
     # ------------------------------------------------------------------ lights
     def light(self, ob, matrix):
@@ -309,6 +314,30 @@ class Exporter:
             self.warn(f'light {name}: its node tree is not exported (colour and power only)')
         if light.type in ('POINT', 'SPOT') and light.shadow_soft_size > 0.0:
             self.warn(f'light {name}: radius {light.shadow_soft_size:g} not exported (a point source: hard shadows)')
+        group = self.light_group(ob.original, f'light {name}')
+        first = len(self.lights)
+        shapes = len(self.shapes)
+        self.add_light(light, name, matrix, colour, position, axis)
+        if group:
+            for entry in self.lights[first:]:
+                entry['group'] = group
+            for entry in self.shapes[shapes:]:
+                entry['light_group'] = group
+
+    def light_group(self, owner, what):
+        """The light group a custom property `ochre_light_group` names, or None."""
+        group = owner.get('ochre_light_group')
+        if group is None:
+            return None
+        safe = _safe_name(str(group))
+        if safe == 'other':
+            self.warn(f'{what}: light group "other" is ochre\'s group of the lights without one: not set')
+            return None
+        if safe != group:
+            self.warn(f'{what}: light group "{group}" written as "{safe}" (letters, digits, _ and - only)')
+        return safe
+
+    def add_light(self, light, name, matrix, colour, position, axis):
         if light.type == 'POINT':
             self.lights.append({'type': 'point', 'position': position,
                                 'intensity': units.scaled_colour(colour, units.point_intensity(light.energy))})
@@ -355,6 +384,13 @@ class Exporter:
         world = self.scene.world
         if world is None:
             return
+        first = len(self.lights)
+        self.world_light(world)
+        group = self.light_group(world, f'world {world.name}') if len(self.lights) > first else None
+        if group:
+            self.lights[-1]['group'] = group
+
+    def world_light(self, world):
         if not world.use_nodes:
             self.constant_environment(world.color, 1.0)
             return
@@ -464,6 +500,14 @@ def _dumps(scene):
     """The scene as indented JSON with each list of numbers on one line."""
     text = json.dumps(scene, indent=1)
     return NUMBER_LIST.sub(lambda m: '[' + ', '.join(x.strip() for x in m.group(1).split(',')) + ']', text) + '\n'
+
+
+def _emits(material):
+    """Whether an ochre material (shorthand or graph) has an emission node."""
+    if not isinstance(material, dict):
+        return False
+    nodes = material.get('nodes', {'': material})
+    return any(n.get('type') == 'emission' for n in nodes.values())
 
 
 def _non_finite(value, path=''):
