@@ -1,6 +1,7 @@
 """Tests of the Blender add-on (tools/blender/ochre_blender, docs/blender.md).
 
-    python3 test_blender.py units                                   unit conversions (plain python3, no Blender)
+    python3 test_blender.py units                                   unit conversions, the command line, the EXR
+                                                                    reader (plain python3, no Blender)
     python3 test_blender.py lights  --ochre BIN --work DIR          each light kind alone: ochre against Cycles
     python3 test_blender.py suzanne --ochre BIN --work DIR          Suzanne on a textured plane: ochre against Cycles
                                                                     (also orthographic, and a vertical sensor fit)
@@ -24,8 +25,13 @@ ROOT = os.path.normpath(os.path.join(HERE, '..', '..'))
 sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender', 'ochre_blender'))
 SKIP = 77
 
-import cli  # noqa: E402 (after the path above; cli.py and units.py import no bpy)
+import cli  # noqa: E402 (after the path above; cli.py, exr.py and units.py import no bpy)
 import units  # noqa: E402
+
+try:
+    import exr  # needs numpy
+except ImportError:
+    exr = None
 
 
 class Units(unittest.TestCase):
@@ -102,6 +108,34 @@ class Units(unittest.TestCase):
         self.assertAlmostEqual(units.srgb_encode(1.0), 1.0)
         self.assertAlmostEqual(units.srgb_encode(0.0), 0.0)
         self.assertAlmostEqual(units.srgb_encode(0.214041140), 0.5, places=6)
+
+
+@unittest.skipIf(exr is None, 'numpy missing')
+class Exr(unittest.TestCase):
+    """The render engine's EXR reader on EXR files of the repository (means as oiiotool --stats prints them)."""
+
+    def mean(self, name):
+        return exr.read_rgb(os.path.join(ROOT, name)).reshape(-1, 3).mean(axis=0).tolist()
+
+    def test_half_zip(self):
+        self.assertEqual(exr.read_rgb(os.path.join(ROOT, 'tests/fuzz/corpus/envmap/checker_4x2_half.exr')).shape,
+                         (2, 4, 3))
+        for m in self.mean('tests/fuzz/corpus/envmap/checker_4x2_half.exr'):
+            self.assertAlmostEqual(m, 2.25, places=6)
+
+    def test_float_zip(self):
+        for m, expected in zip(self.mean('tests/fuzz/corpus/envmap/sky_32x16.exr'), (0.9, 0.75, 0.8)):
+            self.assertAlmostEqual(m, expected, places=5)
+
+    def test_more_channels_than_rgb(self):
+        path = os.path.join(ROOT, 'tests/regression/references/cave_flash.exr')
+        self.assertEqual(exr.channel_names(path), ['B', 'G', 'R', 'Y', 'variance.Y'])
+        for m, expected in zip(self.mean('tests/regression/references/cave_flash.exr'), (50.23845, 37.55815, 27.34281)):
+            self.assertAlmostEqual(m / expected, 1.0, places=5)
+
+    def test_no_rgb_is_refused(self):
+        with self.assertRaisesRegex(ValueError, 'no R, G, B channels'):
+            exr.read_rgb(os.path.join(ROOT, 'tests/fuzz/corpus/envmap/grey_8x4_zip.exr'))
 
 
 class Cli(unittest.TestCase):
