@@ -11,6 +11,8 @@ import json
 import math
 import os
 import re
+import struct
+import zlib
 
 import bpy
 import numpy as np
@@ -81,6 +83,19 @@ def _write_ply(path, positions, normals, uvs, colours, faces):
         out.write(('\n'.join(header) + '\n').encode('ascii'))
         out.write(v.tobytes())
         out.write(f.tobytes())
+
+
+def _write_png(path, rgb8):
+    """An 8-bit RGB PNG of an (h, w, 3) uint8 array, top row first."""
+    h, w, _ = rgb8.shape
+    raw = np.concatenate([np.zeros((h, 1), dtype=np.uint8), rgb8.reshape(h, w * 3)], axis=1).tobytes()
+
+    def chunk(kind, data):
+        return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    with open(path, 'wb') as out:
+        out.write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 2, 0, 0, 0)) +
+                  chunk(b'IDAT', zlib.compress(raw, 6)) + chunk(b'IEND', b''))
 
 
 def _write_hdr(path, rgb):
@@ -184,13 +199,12 @@ class Exporter:
             _write_hdr(path, rgb)
         else:  # an 8-bit image that is generated, packed or in a format ochre does not read: a PNG copy
             path, rel = self.asset(_safe_name(image.name) + '.png')
-            copy = image.copy()
-            try:
-                copy.filepath_raw = path
-                copy.file_format = 'PNG'
-                copy.save()
-            finally:
-                bpy.data.images.remove(copy)
+            w, h = image.size
+            pixels = np.empty(w * h * image.channels, dtype=np.float32)
+            image.pixels.foreach_get(pixels)  # 8-bit images: the stored (encoded) values / 255
+            rows = pixels.reshape(h, w, image.channels)[::-1]
+            rgb = rows[:, :, :3] if image.channels >= 3 else np.repeat(rows[:, :, :1], 3, axis=2)
+            _write_png(path, np.round(np.clip(rgb, 0.0, 1.0) * 255.0).astype(np.uint8))
         self.images[image.name] = rel
         return rel
 
