@@ -312,6 +312,8 @@ class Exporter:
             shape = {'type': 'mesh', 'name': _safe_name(ob.original.name), 'file': rel,
                      'transform': units.to_ochre_matrix(matrix), 'material': mat_name}
             if _emits(self.materials.get(mat_name)):
+                self.warn(f'object {ob.original.name}: emits from the side its normals face only (ochre\'s '
+                          'emission is one-sided; Cycles\' is two-sided)')
                 group = self.light_group(ob.original, f'object {ob.original.name}')
                 if group:
                     shape['light_group'] = group
