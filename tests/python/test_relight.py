@@ -49,6 +49,20 @@ class Relight(unittest.TestCase):
         for name in a:
             np.testing.assert_array_equal(a[name], b[name])
 
+    def test_the_page_is_that_of_the_command_line(self):
+        page = os.path.join(self.dir, "page")
+        ochre.relight(self.render, groups={"lamp": 0.5}, html=page)
+        cli = os.path.join(self.dir, "cli-page")
+        ochre_bin = os.path.join(os.environ.get("OCHRE_BIN_DIR", ""), "ochre")
+        subprocess.run([ochre_bin, "relight", self.render, "--html", cli, "-q"], check=True)
+        with open(os.path.join(page, "index.html"), "rb") as a, open(os.path.join(cli, "index.html"), "rb") as b:
+            self.assertEqual(a.read(), b.read())
+        # A folder that is not empty is refused before anything is written.
+        exr = os.path.join(self.dir, "not-written.exr")
+        with self.assertRaisesRegex(ochre.InputError, "page"):
+            ochre.relight(self.render, exr=exr, html=self.dir)
+        self.assertFalse(os.path.exists(exr))
+
     def test_bad_changes_raise_naming_them(self):
         with self.assertRaisesRegex(ochre.InputError, "no light group 'candle'"):
             ochre.relight(self.render, groups={"candle": 1})

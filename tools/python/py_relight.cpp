@@ -5,6 +5,7 @@
 
 #include "renderer/image/exr_reader.h"
 #include "renderer/output/relight.h"
+#include "renderer/output/relight_page.h"
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
 #include "tools/python/py_support.h"
@@ -59,11 +60,14 @@ std::vector<GroupChange> group_changes(const std::vector<std::pair<std::string, 
 void register_relight(py::module_& m) {
   m.def(
       "relight",
-      [](const py::object& render, const py::object& groups, const py::object& exr, const py::object& png) {
+      [](const py::object& render, const py::object& groups, const py::object& exr, const py::object& png,
+         const py::object& html) {
         const std::vector<std::pair<std::string, std::string>> texts = group_texts(groups);
         const std::filesystem::path file = path_argument(render, "render");
         const std::string exr_path = exr.is_none() ? "" : path_argument(exr, "exr").string();
         const std::string png_path = png.is_none() ? "" : path_argument(png, "png").string();
+        const std::filesystem::path html_dir = html.is_none() ? "" : path_argument(html, "html");
+        if (!html_dir.empty()) check_relight_page_destination(html_dir);  // before anything is written
         InputFileLog inputs;
         ExrImage image;
         std::vector<GroupChange> changes;
@@ -75,15 +79,16 @@ void register_relight(py::module_& m) {
           image = read_exr(file);
         }
         const ExrImage relit = relight(image, changes, file.string());
-        if (!exr_path.empty() || !png_path.empty())
-          write_relit(relit, recorded_display(image, file.string()), exr_path, png_path, inputs);
+        const DisplayOptions display = recorded_display(image, file.string());
+        if (!exr_path.empty() || !png_path.empty()) write_relit(relit, display, exr_path, png_path, inputs);
+        // The page starts from the render as it is, as `ochre relight --html` (docs/lights.md).
+        if (!html_dir.empty()) write_relight_page(image, display, file.string(), html_dir);
         return exr_to_python(relit);
       },
       py::arg("render"), py::kw_only(), py::arg("groups") = py::none(), py::arg("exr") = py::none(),
-      py::arg("png") = py::none(),
+      py::arg("png") = py::none(), py::arg("html") = py::none(),
       "(channels, attributes) of a render with light groups recombined with new scales and spectra, as ochre "
-      "relight; "
-      "writes exr / png when given");
+      "relight; writes exr / png when given, and the relighting page html/index.html (docs/lights.md)");
 }
 
 }  // namespace ochre::python
