@@ -1,5 +1,6 @@
 #include "renderer/lights/area_light.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -9,6 +10,7 @@
 #include "materials/lobes/lobe_arena.h"
 #include "renderer/geometry/surface_shading.h"
 #include "spectra/cie.h"
+#include "spectra/tabulated_spectrum.h"
 #include "spectra/wavelength_memo.h"
 
 namespace ochre {
@@ -62,6 +64,18 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
     bound_radius2_ = length_squared(b.hi - b.lo) * 0.25f;
   }
   mean_radiance_ = total_area_ > 0.0f ? power_ / (kPi * total_area_) : 0.0f;
+  if (material_.facts().uniform_over_surface) emission_ = uniform_emission_spectrum();
+}
+
+SpectrumPtr AreaLight::uniform_emission_spectrum() const {
+  // The emission at every nm of 360..830 (the grid of spectra/emission_shape.h), read as linear between.
+  std::vector<float> lambda, values;
+  for (int nm = 360; nm <= 830; ++nm) {
+    const SampledWavelengths at = SampledWavelengths::fixed(SampledSpectrum(static_cast<float>(nm)));
+    lambda.push_back(static_cast<float>(nm));
+    values.push_back(std::max(0.0f, evaluate_emission(SurfacePoint{}, at)[0]));  // negative emits nothing
+  }
+  return std::make_shared<TabulatedSpectrum>(std::move(lambda), std::move(values));
 }
 
 float AreaLight::importance(const Vec3& p) const {

@@ -24,6 +24,9 @@ class AreaLight final : public Light {
                                     const SampledWavelengths& lambda) const override;
   float power() const override { return power_; }
   float importance(const Vec3& p) const override;
+  // A material uniform over the surface has one emission spectrum (tabulated at 1 nm when the light is
+  // made); a textured or position-dependent one has none (null).
+  const Spectrum* emission_spectrum() const override { return emission_.get(); }
 
   // Solid-angle pdf of sampling point p (normal ng) from ref, given the point is on this light.
   float pdf(const Vec3& ref, const Vec3& p, const Vec3& ng) const;
@@ -41,6 +44,8 @@ class AreaLight final : public Light {
   uint64_t memo_key_;  // of the per-thread memo of a uniform emission (spectra/wavelength_memo.h)
   SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
+  SpectrumPtr uniform_emission_spectrum() const;
+  SpectrumPtr emission_;  // emission_spectrum()
 
   Distribution1D triangles_;
   std::vector<Vec3>

@@ -103,7 +103,7 @@ std::vector<double> bin_weights(const ExrImage& image, const std::string& file, 
     throw InputError(fmt::format(
         "{}: light group '{}' has no one emission spectrum to change ({}): its lights emit different "
         "spectra, "
-        "one is a map or an emissive surface, or it is \"other\" (docs/lights.md, \"Relighting\")",
+        "one is a map or a textured emissive surface, or it is \"other\" (docs/lights.md, \"Relighting\")",
         file, change.group, change.spectrum_text));
   const std::optional<std::vector<double>> from = parse_emission_shape(recorded->second);
   if (!from)

@@ -203,5 +203,40 @@ TEST(Relight, AChangeOfColourTemperatureIsTheSceneSoChanged) {
   EXPECT_TRUE(contains(other.output, "light group 'other' has no one emission spectrum")) << other.output;
 }
 
+// A wall lit by a glowing panel (an emissive rectangle, group "panel") of a blackbody at `kelvin`.
+std::string panel_scene(double kelvin) {
+  return fmt::format(R"({{
+  "camera": {{"eye": [0, 1, 4], "target": [0, 1, 0], "fov": 50}},
+  "film": {{"resolution": [24, 16]}}, "integrator": {{"spp": 64}},
+  "materials": {{"rock": {{"type": "lambert", "color": [0.6, 0.5, 0.4]}},
+                "glow": {{"type": "emission", "color": {{"blackbody": {}}}, "strength": 4}}}},
+  "shapes": [{{"type": "plane", "size": [6, 4], "material": "rock", "transform": [{{"translate": [0, 1, 0]}}]}},
+             {{"type": "plane", "size": [0.6, 0.6], "material": "glow", "light_group": "panel",
+              "transform": [{{"rotate": {{"axis": [1, 0, 0], "angle": 90}}}}, {{"translate": [0, 1, 1.5]}}]}}]
+}})",
+                     kelvin);
+}
+
+TEST(Relight, AnEmissiveSurfaceChangesItsColourTemperature) {
+  const fs::path dir = scratch_dir();
+  write_text(dir / "warm.json", panel_scene(2000));
+  write_text(dir / "cold.json", panel_scene(6500));
+  ASSERT_EQ(run_ochre("render warm.json -o warm.exr -q --seed 3 --spectral-bins 16", dir).exit_code, 0);
+  ASSERT_EQ(run_ochre("render cold.json -o cold.exr -q --seed 3", dir).exit_code, 0);
+  const ExrImage warm = read_exr(dir / "warm.exr");
+  // A material uniform over the surface has one emission spectrum: the group records it.
+  EXPECT_EQ(warm.string_attributes.count("ochre.lightGroup.panel.emission"), 1u);
+  const CommandResult r = run_ochre("relight warm.exr --group panel:cct=6500 -o relit.exr -q", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const ExrImage relit = read_exr(dir / "relit.exr"), cold = read_exr(dir / "cold.exr");
+  for (const char* c : {"R", "G", "B"})
+    EXPECT_NEAR(mean_of(exr_channel(relit, c)) / mean_of(exr_channel(cold, c)), 1.0, 0.01) << c;
+  // The change is large: the warm panel's image is far redder.
+  const auto red_over_green = [](const ExrImage& image) {
+    return mean_of(exr_channel(image, "R")) / mean_of(exr_channel(image, "G"));
+  };
+  EXPECT_GT(red_over_green(warm), 1.3 * red_over_green(cold));
+}
+
 }  // namespace
 }  // namespace ochre::test::relight_test
