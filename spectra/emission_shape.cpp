@@ -56,38 +56,77 @@ std::optional<std::vector<double>> parse_emission_shape(std::string_view text) {
 
 namespace {
 
-// The integral over [a, b] nm (within 360..830) of the shape read as linear between its 1 nm samples.
-double shape_integral(const std::vector<double>& shape, double a, double b) {
-  const auto value = [&](double lambda) {
-    const double x = std::clamp(lambda - kEmissionShapeFirstNm, 0.0, double(kEmissionShapeCount - 1));
-    const int i = std::min(static_cast<int>(x), kEmissionShapeCount - 2);
-    return shape[static_cast<size_t>(i)] +
-           (x - i) * (shape[static_cast<size_t>(i) + 1] - shape[static_cast<size_t>(i)]);
-  };
-  double sum = 0.0;
-  // Trapezoids between a, the sample wavelengths inside (a, b), and b: exact for the linear pieces.
-  double left = a;
+constexpr double kFirst = kEmissionShapeFirstNm, kLast = kEmissionShapeFirstNm + kEmissionShapeCount - 1;
+
+// The shape read as linear between its 1 nm samples.
+double shape_at(const std::vector<double>& shape, double lambda) {
+  const double x = std::clamp(lambda - kFirst, 0.0, double(kEmissionShapeCount - 1));
+  const int i = std::min(static_cast<int>(x), kEmissionShapeCount - 2);
+  const size_t k = static_cast<size_t>(i);
+  return shape[k] + (x - i) * (shape[k + 1] - shape[k]);
+}
+
+// The integral over [a, b] nm (within 360..830) of the shape times `weight`: trapezoids between a, the sample
+// wavelengths inside (a, b), and b (exact for the shape's linear pieces when the weight is 1).
+template <class Weight>
+double shape_integral(const std::vector<double>& shape, double a, double b, const Weight& weight) {
+  double sum = 0.0, left = a;
   for (double knot = std::floor(a) + 1.0; left < b; knot += 1.0) {
     const double right = std::min(knot, b);
-    sum += 0.5 * (value(left) + value(right)) * (right - left);
+    sum += 0.5 * (shape_at(shape, left) * weight(left) + shape_at(shape, right) * weight(right)) *
+           (right - left);
     left = right;
   }
   return sum;
+}
+
+double unweighted(double) {
+  return 1.0;
+}
+
+// Bin b of `bins` over [lambda_min, lambda_max], the first and last reaching to 360 and 830 nm (as
+// Film::group_bin counts a wavelength outside the range in them).
+std::pair<double, double> bin_edges(int b, int bins, double lambda_min, double lambda_max) {
+  const double width = (lambda_max - lambda_min) / bins;
+  const double a = b == 0 ? kFirst : std::clamp(lambda_min + b * width, kFirst, kLast);
+  const double c = b == bins - 1 ? kLast : std::clamp(lambda_min + (b + 1) * width, kFirst, kLast);
+  return {a, c};
 }
 
 }  // namespace
 
 std::vector<double> emission_bin_ratios(const std::vector<double>& from, const std::vector<double>& to,
                                         int bins, double lambda_min, double lambda_max) {
-  constexpr double kFirst = kEmissionShapeFirstNm, kLast = kEmissionShapeFirstNm + kEmissionShapeCount - 1;
-  const double width = (lambda_max - lambda_min) / bins;
   std::vector<double> ratios(static_cast<size_t>(bins), 0.0);
   for (int b = 0; b < bins; ++b) {
-    // As Film::group_bin: a wavelength outside the range counts in the first or last bin.
-    const double a = b == 0 ? kFirst : std::clamp(lambda_min + b * width, kFirst, kLast);
-    const double c = b == bins - 1 ? kLast : std::clamp(lambda_min + (b + 1) * width, kFirst, kLast);
-    const double old_integral = shape_integral(from, a, c);
-    if (old_integral > 0.0) ratios[static_cast<size_t>(b)] = shape_integral(to, a, c) / old_integral;
+    const auto [a, c] = bin_edges(b, bins, lambda_min, lambda_max);
+    const double old_integral = shape_integral(from, a, c, unweighted);
+    if (old_integral > 0.0)
+      ratios[static_cast<size_t>(b)] = shape_integral(to, a, c, unweighted) / old_integral;
+  }
+  return ratios;
+}
+
+std::vector<std::array<double, 3>> emission_bin_ratios_xyz(const std::vector<double>& from,
+                                                           const std::vector<double>& to, int bins,
+                                                           double lambda_min, double lambda_max) {
+  const std::vector<double> plain = emission_bin_ratios(from, to, bins, lambda_min, lambda_max);
+  const auto cmf = [](int k) {
+    return [k](double lambda) {
+      const float l = static_cast<float>(lambda);
+      return static_cast<double>(k == 0 ? cie_x(l) : k == 1 ? cie_y(l) : cie_z(l));
+    };
+  };
+  std::vector<std::array<double, 3>> ratios(static_cast<size_t>(bins));
+  for (int b = 0; b < bins; ++b) {
+    const auto [a, c] = bin_edges(b, bins, lambda_min, lambda_max);
+    const double whole = shape_integral(from, a, c, unweighted);
+    for (int k = 0; k < 3; ++k) {
+      const double old_integral = shape_integral(from, a, c, cmf(k));
+      ratios[static_cast<size_t>(b)][static_cast<size_t>(k)] =
+          old_integral > 1e-9 * whole ? shape_integral(to, a, c, cmf(k)) / old_integral
+                                      : plain[static_cast<size_t>(b)];
+    }
   }
   return ratios;
 }

@@ -9,6 +9,7 @@
 // over the bin (the shape linear between its samples) to the old one's. That is exact when the ratio is
 // constant over each bin (a change of intensity) and converges as the bins narrow.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,5 +37,14 @@ std::optional<std::vector<double>> parse_emission_shape(std::string_view text);
 // 830 nm: a film's group bins hold the wavelengths outside its range there.
 std::vector<double> emission_bin_ratios(const std::vector<double>& from, const std::vector<double>& to,
                                         int bins, double lambda_min, double lambda_max);
+
+// The same per X, Y and Z of a bin's light: the integrals over the bin of each shape times the
+// colour-matching function xbar, ybar or zbar (cie.h). Light reaching the film through a bin is weighed by
+// the colour-matching functions within it, so these ratios follow a change of spectrum inside wide bins far
+// better. A component whose old integral is below 1e-9 of the bin's plain integral (no response there) takes
+// the plain ratio.
+std::vector<std::array<double, 3>> emission_bin_ratios_xyz(const std::vector<double>& from,
+                                                           const std::vector<double>& to, int bins,
+                                                           double lambda_min, double lambda_max);
 
 }  // namespace ochre

@@ -11,9 +11,11 @@
 #include "renderer/json/spectrum_json.h"
 #include "renderer/output/output_files.h"
 #include "renderer/output/render_output.h"
+#include "renderer/scene/render_settings.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/image_error.h"
 #include "renderer/util/output_transaction.h"
+#include "spectra/color_space.h"
 #include "spectra/emission_shape.h"
 #include "spectra/input_error.h"
 #include "spectra/input_file.h"
@@ -90,9 +92,15 @@ std::map<float, std::string> group_bin_layers(const ExrImage& image, const std::
   return layers;
 }
 
-// The weight of each bin layer of `group` for `change`: scale x the ratio of the new emission to the old.
-std::vector<double> bin_weights(const ExrImage& image, const std::string& file, const GroupChange& change,
-                                const std::map<float, std::string>& bins) {
+// True when the image's R, G, B are CIE XYZ in a working space (no camera sensor's response).
+bool cie_render(const ExrImage& image) {
+  const auto sensor = image.string_attributes.find("ochre.sensor");
+  return sensor == image.string_attributes.end() || sensor->second == "cie1931";
+}
+
+// The weights of each bin layer of `group` for `change` (BinWeights).
+BinWeights bin_weights(const ExrImage& image, const std::string& file, const GroupChange& change,
+                       const std::map<float, std::string>& bins) {
   const auto recorded = image.string_attributes.find(light_group_emission_attribute(change.group));
   if (bins.empty())
     throw InputError(fmt::format(
@@ -117,10 +125,22 @@ std::vector<double> bin_weights(const ExrImage& image, const std::string& file, 
   const int count = static_cast<int>(bins.size());
   const double width = count > 1 ? (static_cast<double>(last) - first) / (count - 1) : 470.0;
   const double lambda_min = count > 1 ? first - width / 2 : 360.0;
-  std::vector<double> weights =
-      emission_bin_ratios(*from, *to, count, lambda_min, lambda_min + width * count);
-  for (double& w : weights) w *= change.scale;
-  return weights;
+  const double lambda_max = lambda_min + width * count;
+  BinWeights w;
+  const auto space = image.string_attributes.find("ochre.colorspace");
+  const std::optional<ColorSpace> working =
+      space == image.string_attributes.end() ? ColorSpace::LinearRec709 : kWorkingSpaces.parse(space->second);
+  if (cie_render(image) && working) {
+    w.weights = emission_bin_ratios_xyz(*from, *to, count, lambda_min, lambda_max);
+    w.to_xyz = rgb_to_xyz_matrix(*working);
+    w.to_rgb = xyz_to_rgb_matrix(*working);
+  } else {
+    for (const double r : emission_bin_ratios(*from, *to, count, lambda_min, lambda_max))
+      w.weights.push_back({r, r, r});
+  }
+  for (std::array<double, 3>& bin : w.weights)
+    for (double& v : bin) v *= change.scale;
+  return w;
 }
 
 }  // namespace
@@ -141,8 +161,13 @@ std::vector<std::string> group_bin_layer_names(const ExrImage& image, const std:
   return names;
 }
 
-std::vector<double> group_bin_weights(const ExrImage& image, const GroupChange& change,
-                                      const std::string& file) {
+Array3d BinWeights::apply(size_t bin, const Array3d& rgb) const {
+  Array3d xyz = to_xyz * rgb;
+  for (size_t k = 0; k < 3; ++k) xyz[k] *= weights[bin][k];
+  return to_rgb * xyz;
+}
+
+BinWeights group_bin_weights(const ExrImage& image, const GroupChange& change, const std::string& file) {
   return bin_weights(image, file, change, group_bin_layers(image, change.group));
 }
 
@@ -213,33 +238,45 @@ ExrImage relight(const ExrImage& image, const std::vector<GroupChange>& changes,
   for (const std::string& g : groups) {
     const GroupChange& c = change[g];
     const std::map<float, std::string> bins = group_bin_layers(image, g);
-    // A change of spectrum weighs the bins; a change of scale scales the group's sum as it is.
-    const std::vector<double> weights =
-        c.spectrum ? bin_weights(image, file, c, bins) : std::vector<double>(bins.size(), c.scale);
-    for (int k = 0; k < 3; ++k) {
-      const std::string name = fmt::format("group.{}.{}", g, "RGB"[k]);
-      const std::vector<float>* layer = channel(name, g);
-      std::vector<double> sum(n, 0.0);
-      if (!c.spectrum)
-        for (size_t i = 0; i < n; ++i) sum[i] = c.scale * (*layer)[i];
-      size_t b = 0;
-      for (const auto& [centre, bin_layer] : bins) {
-        const std::string bin_name = fmt::format("{}.{}", bin_layer, "RGB"[k]);
-        const std::vector<float>* values = channel(bin_name, g);
-        std::vector<float> scaled(n);
-        for (size_t i = 0; i < n; ++i) {
-          scaled[i] = static_cast<float>(weights[b] * (*values)[i]);
-          if (c.spectrum) sum[i] += weights[b] * (*values)[i];
+    const auto rgb_of = [&](const std::string& layer) {
+      return std::array<const std::vector<float>*, 3>{channel(layer + ".R", g), channel(layer + ".G", g),
+                                                      channel(layer + ".B", g)};
+    };
+    // A change of spectrum weighs the bins (BinWeights); a change of scale scales the group and its bins.
+    const bool spectral = c.spectrum != nullptr;
+    const BinWeights weights = spectral ? bin_weights(image, file, c, bins) : BinWeights{};
+    std::array<std::vector<double>, 3> sum{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0),
+                                           std::vector<double>(n, 0.0)};
+    if (!spectral) {
+      const auto group_rgb = rgb_of("group." + g);
+      for (int k = 0; k < 3; ++k)
+        for (size_t i = 0; i < n; ++i) sum[k][i] = c.scale * (*group_rgb[k])[i];
+    }
+    size_t b = 0;
+    for (const auto& [centre, bin_layer] : bins) {
+      const auto values = rgb_of(bin_layer);
+      std::array<std::vector<float>, 3> relit_bin{std::vector<float>(n), std::vector<float>(n),
+                                                  std::vector<float>(n)};
+      for (size_t i = 0; i < n; ++i) {
+        const Array3d v{(*values[0])[i], (*values[1])[i], (*values[2])[i]};
+        const Array3d r =
+            spectral ? weights.apply(b, v) : Array3d{c.scale * v[0], c.scale * v[1], c.scale * v[2]};
+        for (int k = 0; k < 3; ++k) {
+          relit_bin[k][i] = static_cast<float>(r[k]);
+          if (spectral) sum[k][i] += r[k];
         }
-        out.channels.emplace_back(bin_name, std::move(scaled));
-        ++b;
       }
+      for (int k = 0; k < 3; ++k)
+        out.channels.emplace_back(fmt::format("{}.{}", bin_layer, "RGB"[k]), std::move(relit_bin[k]));
+      ++b;
+    }
+    for (int k = 0; k < 3; ++k) {
       std::vector<float> relit(n);
       for (size_t i = 0; i < n; ++i) {
-        relit[i] = static_cast<float>(sum[i]);
+        relit[i] = static_cast<float>(sum[k][i]);
         rgb[k][i] += relit[i];
       }
-      out.channels.emplace_back(name, std::move(relit));
+      out.channels.emplace_back(fmt::format("group.{}.{}", g, "RGB"[k]), std::move(relit));
     }
     if (c.spectrum)
       out.string_attributes[light_group_emission_attribute(g)] =

@@ -100,22 +100,31 @@ double largest_magnitude(const std::vector<float>& values) {
   return largest;
 }
 
-// A colour-temperature slider's data: the bin weights of every temperature of the grid as
-// coefficients of a few orthonormal vectors over the bins (weights ~ coefficients x vectors).
+// A colour-temperature slider's data: the bin weights of every temperature of the grid (three per bin, for
+// X, Y and Z: BinWeights) as coefficients of a few orthonormal vectors over them (weights ~ coefficients x
+// vectors), and the matrices between the image's RGB and XYZ.
 struct CctBasis {
   std::vector<std::vector<double>> vectors;
+  Mat3 to_xyz = Mat3::identity(), to_rgb = Mat3::identity();
   std::vector<double> coefficients;  // per temperature, vectors.size() each
   double largest_weight = 1.0;
   int unchanged_at = 0;  // the grid temperature whose weights are nearest 1, when within 1 %; else 0
 };
 
-// The weights `ochre relight --group GROUP:cct=T` gives the group's bins, for each T of the grid.
+// The weights `ochre relight --group GROUP:cct=T` gives the group's bins (X, Y, Z of bin b at 3 b + k), for
+// each T of the grid; `basis` gets the matrices.
 std::vector<std::vector<double>> cct_weights(const ExrImage& image, const std::string& group,
-                                             const std::string& file) {
+                                             const std::string& file, CctBasis& basis) {
   std::vector<std::vector<double>> table;
-  for (int kelvin = kCctMin; kelvin <= kCctMax; kelvin += kCctStep)
-    table.push_back(
-        group_bin_weights(image, parse_group_change(fmt::format("{}:cct={}", group, kelvin)), file));
+  for (int kelvin = kCctMin; kelvin <= kCctMax; kelvin += kCctStep) {
+    const BinWeights w =
+        group_bin_weights(image, parse_group_change(fmt::format("{}:cct={}", group, kelvin)), file);
+    std::vector<double> row;
+    for (const std::array<double, 3>& bin : w.weights) row.insert(row.end(), bin.begin(), bin.end());
+    table.push_back(std::move(row));
+    basis.to_xyz = w.to_xyz;
+    basis.to_rgb = w.to_rgb;
+  }
   return table;
 }
 
@@ -154,8 +163,8 @@ std::vector<std::vector<double>> row_basis(const std::vector<std::vector<double>
 }
 
 CctBasis cct_basis(const ExrImage& image, const std::string& group, const std::string& file) {
-  const std::vector<std::vector<double>> table = cct_weights(image, group, file);
   CctBasis basis;
+  const std::vector<std::vector<double>> table = cct_weights(image, group, file, basis);
   basis.vectors = row_basis(table);
   basis.largest_weight = std::max(1.0, largest_entry(table));
   double nearest = 0.01;
@@ -171,15 +180,23 @@ CctBasis cct_basis(const ExrImage& image, const std::string& group, const std::s
   return basis;
 }
 
-// The images the basis vectors weigh the group's bin layers into, R, G, B interleaved.
+// The images the basis vectors weigh the group's bin layers into, R, G, B interleaved: vector j takes the
+// X, Y, Z of bin b times its entries 3 b + k, back to RGB (BinWeights::apply).
 std::vector<std::vector<float>> basis_images(const ExrImage& image, const std::vector<std::string>& bins,
                                              const CctBasis& basis, const std::string& file) {
-  const size_t values = static_cast<size_t>(image.width) * image.height * 3;
-  std::vector<std::vector<double>> sums(basis.vectors.size(), std::vector<double>(values, 0.0));
+  const size_t pixels = static_cast<size_t>(image.width) * image.height;
+  std::vector<std::vector<double>> sums(basis.vectors.size(), std::vector<double>(pixels * 3, 0.0));
   for (size_t b = 0; b < bins.size(); ++b) {
     const std::vector<float> layer = interleaved_rgb(image, bins[b], file);
-    for (size_t j = 0; j < basis.vectors.size(); ++j)
-      for (size_t i = 0; i < values; ++i) sums[j][i] += basis.vectors[j][b] * layer[i];
+    for (size_t i = 0; i < pixels; ++i) {
+      const Array3d xyz = basis.to_xyz * Array3d{layer[3 * i], layer[3 * i + 1], layer[3 * i + 2]};
+      for (size_t j = 0; j < basis.vectors.size(); ++j) {
+        const std::vector<double>& v = basis.vectors[j];
+        const Array3d rgb =
+            basis.to_rgb * Array3d{v[3 * b] * xyz[0], v[3 * b + 1] * xyz[1], v[3 * b + 2] * xyz[2]};
+        for (size_t k = 0; k < 3; ++k) sums[j][3 * i + k] += rgb[k];
+      }
+    }
   }
   std::vector<std::vector<float>> images;
   for (const std::vector<double>& sum : sums) images.emplace_back(sum.begin(), sum.end());

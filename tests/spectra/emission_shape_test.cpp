@@ -63,5 +63,33 @@ TEST(EmissionShape, BinRatiosAreTheRatiosOfTheBinIntegrals) {
   EXPECT_NEAR(one[0], b / a, 1e-12 * b / a);
 }
 
+TEST(EmissionShape, BinRatiosPerXyzWeighTheColourMatchingFunctions) {
+  const std::vector<double> from = *emission_shape(BlackbodySpectrum(1700.0f));
+  const std::vector<double> to = *emission_shape(BlackbodySpectrum(2600.0f));
+  for (const auto& bin : emission_bin_ratios_xyz(from, from, 4, 360, 830))
+    for (const double r : bin) EXPECT_NEAR(r, 1.0, 1e-12);
+  // Narrow bins: the colour-matching functions hardly vary across one, so every component is the plain ratio.
+  const std::vector<double> plain = emission_bin_ratios(from, to, 470, 360, 830);
+  const std::vector<std::array<double, 3>> xyz = emission_bin_ratios_xyz(from, to, 470, 360, 830);
+  for (size_t b = 50; b < 300; b += 50)
+    for (const double r : xyz[b]) EXPECT_NEAR(r, plain[b], 2e-3 * plain[b]) << b;
+  // A wide bin (360..477.5 nm): zbar peaks at its long end, where the hotter blackbody gains least, so Z's
+  // ratio lies below the bin's plain ratio; and each is the ratio of the weighted integrals.
+  const std::vector<std::array<double, 3>> wide = emission_bin_ratios_xyz(from, to, 4, 360, 830);
+  EXPECT_LT(wide[0][2], emission_bin_ratios(from, to, 4, 360, 830)[0]);
+  double a = 0, c = 0;
+  for (int nm = 360; nm < 477; ++nm) {
+    const size_t i = static_cast<size_t>(nm - 360);
+    const double w0 = cie_z(float(nm)), w1 = cie_z(float(nm + 1));
+    a += 0.5 * (from[i] * w0 + from[i + 1] * w1);
+    c += 0.5 * (to[i] * w0 + to[i + 1] * w1);
+  }
+  // The last half nanometre, to the bin's edge at 477.5 nm (trapezoids of the linear pieces, as the code).
+  const double z0 = cie_z(477.0f), z1 = cie_z(477.5f);
+  a += 0.25 * (from[117] * z0 + 0.5 * (from[117] + from[118]) * z1);
+  c += 0.25 * (to[117] * z0 + 0.5 * (to[117] + to[118]) * z1);
+  EXPECT_NEAR(wide[0][2], c / a, 1e-9 * c / a);
+}
+
 }  // namespace
 }  // namespace ochre::emission_shape_test
