@@ -64,7 +64,13 @@ AreaLight::AreaLight(const Mesh& mesh, const CompiledMaterial& material, const T
     bound_radius2_ = length_squared(b.hi - b.lo) * 0.25f;
   }
   mean_radiance_ = total_area_ > 0.0f ? power_ / (kPi * total_area_) : 0.0f;
-  if (material_.facts().uniform_over_surface) emission_ = uniform_emission_spectrum();
+}
+
+const Spectrum* AreaLight::emission_spectrum() const {
+  std::call_once(emission_once_, [&] {
+    if (material_.facts().uniform_over_surface) emission_ = uniform_emission_spectrum();
+  });
+  return emission_.get();
 }
 
 SpectrumPtr AreaLight::uniform_emission_spectrum() const {

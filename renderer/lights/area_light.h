@@ -4,6 +4,7 @@
 // textured and spectral emission work the same as in camera rays.
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "materials/graph/compiled_material.h"
@@ -24,9 +25,9 @@ class AreaLight final : public Light {
                                     const SampledWavelengths& lambda) const override;
   float power() const override { return power_; }
   float importance(const Vec3& p) const override;
-  // A material uniform over the surface has one emission spectrum (tabulated at 1 nm when the light is
-  // made); a textured or position-dependent one has none (null).
-  const Spectrum* emission_spectrum() const override { return emission_.get(); }
+  // A material uniform over the surface has one emission spectrum (tabulated at 1 nm the first time it is
+  // asked for: only light groups need it); a textured or position-dependent one has none (null).
+  const Spectrum* emission_spectrum() const override;
 
   // Solid-angle pdf of sampling point p (normal ng) from ref, given the point is on this light.
   float pdf(const Vec3& ref, const Vec3& p, const Vec3& ng) const;
@@ -45,7 +46,8 @@ class AreaLight final : public Light {
   SampledSpectrum evaluate_emission(const SurfacePoint& sp, const SampledWavelengths& lambda) const;
   SampledSpectrum uniform_emission(const SampledWavelengths& lambda) const;
   SpectrumPtr uniform_emission_spectrum() const;
-  SpectrumPtr emission_;  // emission_spectrum()
+  mutable std::once_flag emission_once_;
+  mutable SpectrumPtr emission_;  // emission_spectrum()
 
   Distribution1D triangles_;
   std::vector<Vec3>

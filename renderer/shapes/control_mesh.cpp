@@ -395,4 +395,24 @@ ControlMesh import_control_mesh(const std::filesystem::path& file, const Transfo
   return mesh;
 }
 
+ControlMesh quad_grid_control_mesh(int nx, int ny) {
+  ControlMesh mesh;
+  mesh.name = "grid";
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const float u = static_cast<float>(i) / static_cast<float>(nx),
+                  v = static_cast<float>(j) / static_cast<float>(ny);
+      mesh.positions.push_back({2 * u - 1, v, 0});
+      mesh.uvs.push_back({u, v});
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i;
+      mesh.face_sizes.push_back(4);
+      mesh.face_vertices.insert(mesh.face_vertices.end(), {a, a + 1, a + nx + 2, a + nx + 1});
+    }
+  mesh.face_uv_indices = mesh.face_vertices;
+  return mesh;
+}
+
 }  // namespace ochre

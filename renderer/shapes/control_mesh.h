@@ -36,6 +36,10 @@ struct ControlMesh {
   void validate(const std::string& where) const;
 };
 
+// An nx x ny grid of quads covering [-1, 1] x [0, 1] (z = 0, normal +z) with face-varying uv =
+// ((x + 1) / 2, y): the flat cage of the subdivision tests and of ochre-bench --micro subdivision.
+ControlMesh quad_grid_control_mesh(int nx, int ny);
+
 // Imports the polygons of a mesh file through Assimp WITHOUT triangulation (OBJ, PLY, glTF, ...).
 // - All meshes of the file are instanced through the node hierarchy and merged; vertices at exactly
 //   the same position are welded, so a UV seam (which the file stores as separate vertices) does

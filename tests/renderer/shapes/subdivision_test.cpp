@@ -35,26 +35,6 @@ ControlMesh cube() {
   return mesh;
 }
 
-// An nx x ny grid of quads covering [-1, 1] x [0, 1] (z = 0, normal +z), uv = ((x + 1) / 2, y).
-ControlMesh grid(int nx, int ny) {
-  ControlMesh mesh;
-  mesh.name = "grid";
-  for (int j = 0; j <= ny; ++j)
-    for (int i = 0; i <= nx; ++i) {
-      const float u = float(i) / float(nx), v = float(j) / float(ny);
-      mesh.positions.push_back({2 * u - 1, v, 0});
-      mesh.uvs.push_back({u, v});
-    }
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const int a = j * (nx + 1) + i;
-      mesh.face_sizes.push_back(4);
-      mesh.face_vertices.insert(mesh.face_vertices.end(), {a, a + 1, a + nx + 2, a + nx + 1});
-    }
-  mesh.face_uv_indices = mesh.face_vertices;
-  return mesh;
-}
-
 struct P3 {
   Vec3 v;
   void Clear() { v = {}; }
@@ -220,7 +200,7 @@ TEST(Subdivision, InfinitelySharpCreaseBetweenCornersStaysStraight) {
 
 TEST(Subdivision, FaceVaryingUvsAreContinuousOrSplitAtSeams) {
   const int level = 3;
-  const ControlMesh continuous = grid(2, 1);
+  const ControlMesh continuous = quad_grid_control_mesh(2, 1);
   const Mesh smooth = subdivide(continuous, {SubdivisionScheme::CatmullClark, level});
   const size_t refined_vertices = size_t((2 * 8 + 1) * (8 + 1));
   EXPECT_EQ(smooth.positions.size(), refined_vertices);
@@ -302,7 +282,7 @@ TEST(Subdivision, ParsesOptions) {
 TEST(Subdivision, OpenGridTriangleCounts) {
   // A grid with a boundary (the cube above is closed): every quad gives 2 x 4^level triangles. The time of
   // level 5, a million triangles, is `ochre-bench --micro subdivision`.
-  const ControlMesh plane = grid(25, 20);  // 500 quads
+  const ControlMesh plane = quad_grid_control_mesh(25, 20);  // 500 quads
   for (int level = 1; level <= 3; ++level)
     EXPECT_EQ(subdivide(plane, {SubdivisionScheme::CatmullClark, level}).triangle_count(), size_t(500 * 2)
                                                                                                << (2 * level))
