@@ -61,6 +61,16 @@ class Metrics(unittest.TestCase):
         self.assertTrue(extrapolated)
         self.assertEqual(rb.relmse_at(rows, 0.1), (None, True))  # 8x below the shortest render
 
+    def test_seconds_to_a_target_relmse_reads_the_fit_with_the_floor_subtracted(self):
+        floor = 2e-4
+        rows = [dict(spp=s, seconds=0.5 * s, relmse=0.04 / (0.5 * s) + floor) for s in (16, 32, 64, 128)]  # 8-64 s
+        seconds, extrapolated = rb.seconds_to(rows, 1e-3, floor)
+        self.assertAlmostEqual(seconds, 40.0, places=9)  # 0.04 / t = 1e-3
+        self.assertFalse(extrapolated)
+        self.assertGreater(rb.seconds_to(rows, 1e-3)[0], 40.0)  # with the floor in, later
+        self.assertTrue(rb.seconds_to(rows, 2e-4, floor)[1])  # 200 s: beyond the sweep, within 4x
+        self.assertEqual(rb.seconds_to(rows, 1e-5, floor), (None, True))
+
     def test_monte_carlo_images_give_sigma_squared_times_seconds_per_sample(self):
         rng = np.random.default_rng(7)
         truth = rng.uniform(0.2, 2.0, (64, 64, 3))
@@ -89,6 +99,38 @@ class Variants(unittest.TestCase):
             self.assertTrue(all(os.path.isabs(f) and os.path.exists(f) for f in files), files)
             name, path, _ = rb.variant_scene(args, 'plain')
             self.assertEqual(json.load(open(path))['integrator'], json.load(open(scene))['integrator'])
+
+    def test_resolution_includes_and_the_reference_without_a_noise_threshold(self):
+        with tempfile.TemporaryDirectory() as out:
+            os.makedirs(os.path.join(out, 'scenes'))
+            scene = os.path.join(ROOT, 'scenes/default/default.json')
+            args = argparse.Namespace(scene=scene, out=out, ochre_bin='bin', resolution=rb.checked_resolution('32x18'))
+            _, path, _ = rb.variant_scene(args, 'nt:noise_threshold=0.05')
+            s = json.load(open(path))
+            self.assertEqual(s['film']['resolution'], [32, 18])
+            self.assertEqual(s['integrator']['noise_threshold'], 0.05)
+            self.assertTrue(all(os.path.isabs(f) and os.path.exists(f) for f in s['include']), s['include'])
+            ref = json.load(open(rb.variant_scene(args, 'reference')[1]))
+            self.assertNotIn('noise_threshold', ref['integrator'])
+            self.assertEqual(ref['film']['resolution'], [32, 18])
+        self.assertIsNone(rb.checked_resolution(''))
+        for bad in ('320', '320x0', 'x180', '320x180x2'):
+            with self.assertRaises(SystemExit):
+                rb.checked_resolution(bad)
+
+    def test_adaptive_sweep_points_are_thresholds_at_the_most_samples(self):
+        uniform = argparse.Namespace(noise_thresholds='', max_spp=512)
+        self.assertEqual(rb.point_settings(uniform, 32), (32, 0.0))
+        self.assertEqual(rb.point_name(uniform, 32), 'spp32')
+        adaptive = argparse.Namespace(noise_thresholds='0.1,0.05', max_spp=512)
+        self.assertEqual(rb.point_settings(adaptive, 0.05), (512, 0.05))
+        self.assertEqual(rb.point_name(adaptive, 0.05), 'nt0.05_max512')
+        rows = [dict(spp=512, noise_threshold=e, seconds=t, relmse=0.1 / t, luminance_relmse=0.05 / t)
+                for e, t in ((0.1, 2.0), (0.05, 8.0), (0.025, 30.0))]
+        s = rb.summarise('ochre', rows, 0.0, 100, 0.05, 1e-3)
+        self.assertIsNone(s['samples_per_s'])  # not a fixed count per pixel
+        self.assertAlmostEqual(s['rgb_over_luminance'], 2.0, places=12)
+        self.assertAlmostEqual(s['C'], 0.1, places=12)
 
     def test_interleaved_rounds_alternate_renderers_and_keep_the_fastest_time(self):
         calls = []

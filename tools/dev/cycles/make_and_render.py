@@ -37,6 +37,8 @@ ap.add_argument('--spp', type=int, default=16)
 ap.add_argument('--seed', type=int, default=0)
 ap.add_argument('--res', default='', help='WxH; default: the scene film resolution')
 ap.add_argument('--threads', type=int, default=2)
+ap.add_argument('--adaptive-threshold', type=float, default=0.0,
+                help='Cycles adaptive sampling with this noise threshold (0: off, every pixel --spp samples)')
 ap.add_argument('--out', required=True)
 args = ap.parse_args(sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else [])
 
@@ -339,7 +341,10 @@ r, c = scene.render, scene.cycles
 r.engine = 'CYCLES'
 c.device, c.feature_set = 'CPU', 'SUPPORTED'
 c.samples, c.seed, c.use_animated_seed = args.spp, args.seed, False
-c.use_adaptive_sampling = c.use_denoising = False
+c.use_adaptive_sampling = args.adaptive_threshold > 0
+if c.use_adaptive_sampling:  # --spp is then the most a pixel takes; the minimum is Cycles' automatic one
+    c.adaptive_threshold, c.adaptive_min_samples = args.adaptive_threshold, 0
+c.use_denoising = False
 scene.view_layers[0].cycles.use_denoising = False
 c.max_bounces = c.diffuse_bounces = c.glossy_bounces = c.transmission_bounces = bounces
 c.transparent_max_bounces = 0
@@ -360,6 +365,7 @@ out = os.path.abspath(args.out)
 r.filepath = out
 
 params = dict(blender=bpy.app.version_string, scene=scene_path, res=[w, h], spp=args.spp, seed=args.seed,
+              adaptive_threshold=args.adaptive_threshold,
               threads=args.threads, ochre_max_depth=max_depth, cycles_max_bounces=bounces,
               sampling_pattern=c.sampling_pattern, min_light_bounces=c.min_light_bounces,
               triangles=sum(len(o.evaluated_get(bpy.context.evaluated_depsgraph_get()).data.loop_triangles)

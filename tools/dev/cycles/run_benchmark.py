@@ -19,6 +19,14 @@ relMSE at 1 s and at 10 s are read off the least-squares line through (log secon
 sweep, marked * where that time lies outside the swept render times ('-' beyond 4x).
 --summarise rewrites summary.md from OUT/results.csv and the reference halves in OUT/exr without rendering.
 The luminance relMSE (Rec.709 Y, same epsilon) at --colour-spp shows how much of the error is colour noise.
+"seconds to relMSE T" (--target-relmse, default 1e-3) is read off the log-log fit with the floor subtracted;
+the column after it divides it by the first ochre variant's (e.g. --variant before:bin=... first).
+
+--resolution WxH renders every image (references included) at that film size. --noise-thresholds E1,E2,...
+sweeps adaptive sampling instead of sample counts: every render takes at most --max-spp samples per pixel
+and stops each pixel at the threshold (ochre's --noise-threshold, Cycles' adaptive sampling with that
+threshold and its automatic minimum); the references stay uniform. Compare it with a uniform sweep of the
+same scene in another OUT: C is comparable across the two.
 
 An ochre variant NAME:key=value,... sets keys of the scene's "integrator" block (rr_depth, max_depth,
 polarization, branches, ...) in a copy; every spp counts paths per pixel (Cycles' samples), so a variant
@@ -67,6 +75,18 @@ def loglog_slope(rows):
     return loglog_fit(rows)[0]
 
 
+def seconds_to(rows, target, floor=0.0):
+    """Render seconds at which the least-squares line through (log seconds, log(relMSE - floor)) reaches
+    relMSE - floor = target (extrapolated?); (None, True) when that lies more than a factor 4 outside the
+    swept render times."""
+    slope, intercept = loglog_fit([dict(r, relmse=max(r['relmse'] - floor, 1e-12)) for r in rows])
+    seconds = math.exp((math.log(target) - intercept) / slope)
+    times = [r['seconds'] for r in rows]
+    if seconds < min(times) / 4 or seconds > max(times) * 4:
+        return None, True
+    return seconds, not min(times) <= seconds <= max(times)
+
+
 def relmse_at(rows, seconds):
     """(relMSE after `seconds` of rendering read off the log-log fit, extrapolated?); (None, True) when
     `seconds` lies more than a factor 4 outside the swept render times."""
@@ -98,21 +118,23 @@ class Cycles:
     def __init__(self, args, scene):
         self.args, self.scene = args, scene
 
-    def render(self, spp, seed, exr):
+    def render(self, spp, seed, exr, threshold=0.0):
         cmd = [self.args.blender, '-b', '--factory-startup', '--debug-cycles', '--python',
                os.path.join(HERE, 'make_and_render.py'), '--', '--scene', self.scene, '--spp', str(spp),
                '--seed', str(seed), '--threads', str(self.args.threads), '--out', exr]
+        if threshold:
+            cmd += ['--adaptive-threshold', repr(threshold)]
         p = subprocess.run(locked(cmd, self.args.lock), capture_output=True, text=True)
         m = re.search(r'Render time \(without synchronization\): ([0-9.eE+-]+)', p.stdout + p.stderr)
         if p.returncode or not m or not os.path.exists(exr):
             sys.exit(f'Blender failed on {exr} (rc {p.returncode}):\n' + (p.stdout + p.stderr)[-4000:])
         return float(m.group(1))
 
-    def exr(self, spp):
-        return os.path.join(self.args.out, 'exr', f'cycles_spp{spp}.exr')
+    def exr(self, point):
+        return os.path.join(self.args.out, 'exr', f'cycles_{point_name(self.args, point)}.exr')
 
-    def time_sweep(self, spps):  # one render of every spp -> {spp: seconds}; the images stay in OUT/exr
-        return {spp: self.render(spp, 0, self.exr(spp)) for spp in spps}
+    def time_sweep(self, points):  # one render of every point -> {point: seconds}; the images stay in OUT/exr
+        return {p: self.render(*point_settings(self.args, p), 0, self.exr(p)) for p in points}
 
 
 class Ochre:
@@ -130,18 +152,27 @@ class Ochre:
             sys.exit(f'ochre {self.label}: {spp} samples per pixel are not a multiple of its {self.branches} branches')
         return spp // self.branches
 
-    def render(self, spp, seed, exr):
+    def render(self, spp, seed, exr, threshold=0.0):
         cmd = [self.bin, 'render', self.scene, '-o', exr, '--spp', str(self.camera_spp(spp)), '--seed', str(seed),
                '--threads', str(self.args.threads), '-q']
+        if threshold:
+            cmd += ['--noise-threshold', repr(threshold)]
         subprocess.run(locked(cmd, self.args.lock), check=True)
 
-    def time_sweep(self, spps, ref_exr):  # one ochre-converge run -> {spp: seconds}; relMSE from our own reading
+    def time_sweep(self, points, ref_exr):  # one ochre-converge run -> {point: seconds}; relMSE from our own reading
         csv_path = os.path.join(self.args.out, f'converge_{self.label}.csv')
         cmd = [os.path.join(self.dir, 'ochre-converge'), self.scene, '--reference', ref_exr,
-               '--spp', ','.join(str(self.camera_spp(s)) for s in spps), '--threads', str(self.args.threads),
-               '--csv', csv_path]
+               '--threads', str(self.args.threads), '--csv', csv_path]
+        if not self.args.noise_thresholds:
+            cmd += ['--spp', ','.join(str(self.camera_spp(s)) for s in points)]
+            subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
+            return {int(row['spp']) * self.branches: float(row['seconds']) for row in csv.DictReader(open(csv_path))}
+        # Adaptive: one ochre-converge variant per threshold, each at the most samples a pixel may take.
+        cmd += ['--spp', str(self.camera_spp(self.args.max_spp))]
+        for i, threshold in enumerate(points):
+            cmd += ['--variant', f't{i}:noise_threshold={threshold!r}']
         subprocess.run(locked(cmd, self.args.lock), check=True, stdout=subprocess.DEVNULL)
-        return {int(row['spp']) * self.branches: float(row['seconds']) for row in csv.DictReader(open(csv_path))}
+        return {points[int(row['variant'][1:])]: float(row['seconds']) for row in csv.DictReader(open(csv_path))}
 
 
 def interleaved_best(sweeps, repeat):
@@ -156,15 +187,28 @@ def interleaved_best(sweeps, repeat):
     return best
 
 
-def judged_rows(renderer, variant, spps, seconds, image_of, ref):
-    """One results row per spp: the timed seconds and the relMSE of image_of(spp) (an EXR path) against ref."""
+def point_settings(args, point):
+    """(samples per pixel, noise threshold) of a sweep point: a sample count, or with --noise-thresholds a
+    threshold with --max-spp samples at most."""
+    return (args.max_spp, point) if getattr(args, 'noise_thresholds', None) else (point, 0.0)
+
+
+def point_name(args, point):
+    spp, threshold = point_settings(args, point)
+    return f'nt{threshold:g}_max{spp}' if threshold else f'spp{spp}'
+
+
+def judged_rows(args, renderer, variant, points, seconds, image_of, ref):
+    """One results row per sweep point: the timed seconds and the relMSE of image_of(point) (an EXR path)
+    against ref."""
     rows = []
-    for spp in spps:
-        x = read_exr(image_of(spp))
-        rows.append(dict(renderer=renderer, variant=variant, spp=spp, seconds=seconds[spp], relmse=relmse(x, ref),
-                         luminance_relmse=luminance_relmse(x, ref)))
+    for point in points:
+        x = read_exr(image_of(point))
+        spp, threshold = point_settings(args, point)
+        rows.append(dict(renderer=renderer, variant=variant, spp=spp, noise_threshold=threshold,
+                         seconds=seconds[point], relmse=relmse(x, ref), luminance_relmse=luminance_relmse(x, ref)))
         name = renderer if variant == renderer else f'{renderer} {variant}'
-        print(f"{name} spp {spp}: {seconds[spp]:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
+        print(f"{name} {point_name(args, point)}: {seconds[point]:.3f} s, relMSE {rows[-1]['relmse']:.4g}", flush=True)
     return rows
 
 
@@ -176,12 +220,19 @@ def variant_scene(args, spec):
     src = args.scene
     s = json.load(open(src))
 
-    def absolute(o):  # "file" entries are relative to the scene's folder
+    def here(v):
+        return os.path.join(os.path.dirname(src), v)
+
+    def absolute(o):  # "file" entries and includes are relative to the scene's folder
         if isinstance(o, dict):
-            return {k: (os.path.join(os.path.dirname(src), v) if k == 'file' and isinstance(v, str)
-                        else absolute(v)) for k, v in o.items()}
+            return {k: (here(v) if k == 'file' and isinstance(v, str) else
+                        [here(x) for x in v] if k == 'include' else absolute(v)) for k, v in o.items()}
         return [absolute(x) for x in o] if isinstance(o, list) else o
     s = absolute(s)
+    if getattr(args, 'resolution', None):
+        s.setdefault('film', {})['resolution'] = args.resolution
+    if name == 'reference':  # references take every sample in every pixel
+        s.get('integrator', {}).pop('noise_threshold', None)
     for k, v in settings.items():
         s.setdefault('integrator', {})[k] = json.loads(v) if re.fullmatch(r'-?[0-9.]+|true|false', v) else v
     path = os.path.join(args.out, 'scenes', name + '.json')
@@ -206,12 +257,16 @@ def reference(args, r, tag):
     return 0.5 * (a + b), reference_floor(a, b), ref_exr
 
 
-def summarise(label, spps_rows, floor, pixels, colour_spp):
-    rows = sorted(spps_rows, key=lambda r: r['spp'])
-    at = next(r for r in rows if r['spp'] == colour_spp)
+def summarise(label, spps_rows, floor, pixels, colour_spp, target):
+    """The summary of one renderer's sweep; colour_spp: the sample count (uniform sweeps) or the noise
+    threshold (adaptive sweeps) of the colour-noise column."""
+    rows = sorted(spps_rows, key=lambda r: r['seconds'])
+    at = next(r for r in rows if (r.get('noise_threshold') or r['spp']) == colour_spp)
+    adaptive = any(r.get('noise_threshold') for r in rows)
     return dict(label=label, C=figure_of_merit(rows), C_minus_floor=figure_of_merit(rows, floor),
+                to_target=seconds_to(rows, target, floor),
                 floor=floor, slope=loglog_slope(rows), at_1s=relmse_at(rows, 1.0), at_10s=relmse_at(rows, 10.0),
-                samples_per_s=pixels * rows[-1]['spp'] / rows[-1]['seconds'],
+                samples_per_s=None if adaptive else pixels * rows[-1]['spp'] / rows[-1]['seconds'],
                 rgb_over_luminance=at['relmse'] / at['luminance_relmse'])
 
 
@@ -224,12 +279,22 @@ def checked_colour_spp(colour_spp, spps):
     return colour_spp
 
 
+def checked_resolution(text):
+    """--resolution WxH -> [W, H] (None when not given), checked before any render."""
+    if not text:
+        return None
+    m = re.fullmatch(r'([1-9][0-9]*)x([1-9][0-9]*)', text)
+    if not m:
+        sys.exit(f'--resolution {text}: expected WxH, e.g. 320x180')
+    return [int(m.group(1)), int(m.group(2))]
+
+
 def summarise_results(args):
     """The summaries of an earlier run, from OUT/results.csv and its reference halves."""
-    rows = [dict(r, spp=int(r['spp']), seconds=float(r['seconds']), relmse=float(r['relmse']),
-                 luminance_relmse=float(r['luminance_relmse']))
+    rows = [dict(r, spp=int(r['spp']), noise_threshold=float(r.get('noise_threshold') or 0.0),
+                 seconds=float(r['seconds']), relmse=float(r['relmse']), luminance_relmse=float(r['luminance_relmse']))
             for r in csv.DictReader(open(os.path.join(args.out, 'results.csv')))]
-    args.colour_spp = checked_colour_spp(args.colour_spp, sorted({r['spp'] for r in rows}))
+    args.colour_spp = checked_colour_spp(args.colour_spp, sorted({r['noise_threshold'] or r['spp'] for r in rows}))
     summaries = []
     for renderer in ('cycles', 'ochre'):
         mine = [r for r in rows if r['renderer'] == renderer]
@@ -239,17 +304,28 @@ def summarise_results(args):
         for variant in dict.fromkeys(r['variant'] for r in mine):
             label = 'Cycles' if renderer == 'cycles' else f'ochre {variant}'
             summaries.append(summarise(label, [r for r in mine if r['variant'] == variant], reference_floor(a, b),
-                                       a.shape[0] * a.shape[1], args.colour_spp))
+                                       a.shape[0] * a.shape[1], args.colour_spp, args.target_relmse))
     return summaries
 
 
 def summary_table(args, summaries):
     base = next((s['C'] for s in summaries if s['label'] == 'Cycles'), None)
-    lines = [f'scene `{os.path.relpath(args.scene, ROOT)}`, spp {args.spps}, {args.threads} threads, '
+    swept = (f'noise thresholds {args.noise_thresholds} at most {args.max_spp} spp' if args.noise_thresholds
+             else f'spp {args.spps}')
+    lines = [f'scene `{os.path.relpath(args.scene, ROOT)}`, {swept}, {args.threads} threads, '
              f'references {args.ref_spp} spp, best of {args.repeat}',
              '', '| renderer | C = relMSE x s | C, reference floor subtracted | C / C(Cycles) | samples/s '
-             f'| relMSE at 1 s | relMSE at 10 s | log-log slope | RGB / luminance relMSE at {args.colour_spp} spp |',
-             '|---|---|---|---|---|---|---|---|---|']
+             f'| relMSE at 1 s | relMSE at 10 s | log-log slope | RGB / luminance relMSE at '
+             f'{args.colour_spp}{" threshold" if args.noise_thresholds else " spp"} '
+             f'| seconds to relMSE {args.target_relmse:g} | that / first ochre\'s |',
+             '|---|---|---|---|---|---|---|---|---|---|---|']
+    first = next((s['to_target'][0] for s in summaries if s['label'].startswith('ochre')), None)
+
+    def million(value):
+        return f'{value / 1e6:.3f} M' if value else '-'
+
+    def share(value, of):
+        return f'{value / of:.3f}' if value and of else '-'
 
     def at(fit):
         value, extrapolated = fit
@@ -257,8 +333,8 @@ def summary_table(args, summaries):
     for s in summaries:
         ratio = f"{s['C'] / base:.2f}" if base else '-'
         lines.append(f"| {s['label']} | {s['C']:.4g} | {s['C_minus_floor']:.4g} | {ratio} | "
-                     f"{s['samples_per_s'] / 1e6:.3f} M | {at(s['at_1s'])} | {at(s['at_10s'])} | {s['slope']:.2f} | "
-                     f"{s['rgb_over_luminance']:.3f} |")
+                     f"{million(s['samples_per_s'])} | {at(s['at_1s'])} | {at(s['at_10s'])} | {s['slope']:.2f} | "
+                     f"{s['rgb_over_luminance']:.3f} | {at(s['to_target'])} | {share(s['to_target'][0], first)} |")
     return '\n'.join(lines) + '\n'
 
 
@@ -277,7 +353,14 @@ def main():
     ap.add_argument('--spps', default='8,16,32,64,128,256')
     ap.add_argument('--colour-spp', type=int, default=None,
                     help='sample count of the RGB / luminance column, one of --spps (default: the middle one)')
+    ap.add_argument('--noise-thresholds', default='',
+                    help='adaptive sweep: noise thresholds E1,E2,... (ochre --noise-threshold, Cycles\' adaptive '
+                         'threshold), each with at most --max-spp samples per pixel, instead of --spps')
+    ap.add_argument('--max-spp', type=int, default=1024, help='the most samples a pixel takes in an adaptive sweep')
     ap.add_argument('--repeat', type=int, default=3)
+    ap.add_argument('--resolution', default='', help='film resolution WxH of every render (default: the scene\'s)')
+    ap.add_argument('--target-relmse', type=float, default=1e-3,
+                    help='the relMSE of the "seconds to" column (read off the log-log fit, floor subtracted)')
     ap.add_argument('--threads', type=int, default=2)
     ap.add_argument('--reuse-ref', action='store_true', help='keep reference EXRs from an earlier run in OUT')
     ap.add_argument('--blender', default='blender')
@@ -288,9 +371,11 @@ def main():
     ap.add_argument('--out', required=True)
     args = ap.parse_args()
     args.scene = os.path.abspath(args.scene)
+    args.resolution = checked_resolution(args.resolution)
     if args.summarise:
         return write_summary(args, summarise_results(args))
-    spps = [int(x) for x in args.spps.split(',')]
+    spps = ([float(x) for x in args.noise_thresholds.split(',')] if args.noise_thresholds
+            else [int(x) for x in args.spps.split(',')])  # the sweep points
     args.colour_spp = checked_colour_spp(args.colour_spp, spps)
     for d in ('exr', 'scenes'):
         os.makedirs(os.path.join(args.out, d), exist_ok=True)
@@ -300,13 +385,13 @@ def main():
 
     # References first, then the timed sweeps of every renderer and variant in interleaved rounds.
     sweeps = {}
+    _, ref_scene, _ = variant_scene(args, 'reference')
     if 'cycles' in renderers:
-        cy = Cycles(args, args.scene)
+        cy = Cycles(args, ref_scene if args.resolution else args.scene)
         cycles_ref, cycles_floor, _ = reference(args, cy, 'cycles')
         sweeps['cycles'] = lambda: cy.time_sweep(spps)
     ochres = []
     if 'ochre' in renderers:
-        _, ref_scene, _ = variant_scene(args, 'reference')
         ochre_ref, ochre_floor, ref_exr = reference(args, Ochre(args, ref_scene, 'ref', args.ochre_bin), 'ochre')
         for label, scene, ochre_bin in (variant_scene(args, v) for v in (args.variant or ['ochre'])):
             o = Ochre(args, scene, label, ochre_bin)
@@ -314,22 +399,23 @@ def main():
             sweeps[f'ochre {label}'] = lambda o=o: o.time_sweep(spps, ref_exr)
     best = interleaved_best(sweeps, args.repeat)
 
-    def ochre_image(o, spp):  # the same image ochre-converge timed (same seed and settings)
-        exr = os.path.join(args.out, 'exr', f'ochre_{o.label}_spp{spp}.exr')
-        o.render(spp, 0, exr)
+    def ochre_image(o, point):  # the same image ochre-converge timed (same seed and settings)
+        exr = os.path.join(args.out, 'exr', f'ochre_{o.label}_{point_name(args, point)}.exr')
+        spp, threshold = point_settings(args, point)
+        o.render(spp, 0, exr, threshold)
         return exr
 
     results, summaries = [], []
     if 'cycles' in renderers:
-        rows = judged_rows('cycles', 'cycles', spps, best['cycles'], cy.exr, cycles_ref)
+        rows = judged_rows(args, 'cycles', 'cycles', spps, best['cycles'], cy.exr, cycles_ref)
         summaries.append(summarise('Cycles', rows, cycles_floor, cycles_ref.shape[0] * cycles_ref.shape[1],
-                                   args.colour_spp))
+                                   args.colour_spp, args.target_relmse))
         results += rows
     for o in ochres:
-        rows = judged_rows('ochre', o.label, spps, best[f'ochre {o.label}'], lambda spp, o=o: ochre_image(o, spp),
+        rows = judged_rows(args, 'ochre', o.label, spps, best[f'ochre {o.label}'], lambda spp, o=o: ochre_image(o, spp),
                            ochre_ref)
         summaries.append(summarise(f'ochre {o.label}', rows, ochre_floor, ochre_ref.shape[0] * ochre_ref.shape[1],
-                                   args.colour_spp))
+                                   args.colour_spp, args.target_relmse))
         results += rows
 
     with open(os.path.join(args.out, 'results.csv'), 'w', newline='') as f:
