@@ -6,8 +6,9 @@ with ochre and with Cycles (or with the ochre render engine) and print the mean 
 CASE: point, spot, area, ellipse, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
 environment texture turned by a Mapping node, partly in view), suzanne (Suzanne on a textured plane under an
 area light), ortho, vertical (that scene through an orthographic camera in a portrait image, and with the
-sensor fitted vertically), engine (the suzanne scene through the render engine and directly); several
-separated by commas.
+sensor fitted vertically), engine (the suzanne scene through the render engine and directly), cave (the
+round trip: scenes/default imported into Blender, exported back, both rendered by ochre); several separated
+by commas.
 """
 import json
 import math
@@ -22,7 +23,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 sys.path.insert(0, os.path.join(ROOT, 'tools', 'blender'))
 
 import ochre_blender  # noqa: E402 (after the path above)
-from ochre_blender import export, exr  # noqa: E402
+from ochre_blender import export, exr, import_scene  # noqa: E402
 
 CASES, WORK, OCHRE = sys.argv[sys.argv.index('--') + 1:][:3]
 WIDTH, HEIGHT, SPP, MAX_DEPTH = 64, 48, 64, 4
@@ -299,7 +300,49 @@ def framing(case):
         cam.sensor_fit, cam.sensor_height, cam.lens = 'VERTICAL', 20.0, 28.0
 
 
+CAVE_RESOLUTION, CAVE_SPP = '160x90', 16
+
+
+def exr_pixels(path):
+    img = bpy.data.images.load(path)
+    w, h = img.size
+    px = np.array(img.pixels[:], dtype=np.float64).reshape(h, w, img.channels)[:, :, :3]
+    bpy.data.images.remove(img)
+    return px
+
+
+def cave_round_trip():
+    """The default scene imported into an empty Blender scene, exported back and rendered by ochre beside the
+    original (same seed; and the original with another seed, for the noise level)."""
+    clear()
+    original = os.path.join(ROOT, 'scenes', 'default', 'default.json')
+    result = {'case': 'cave', 'import_warnings': import_scene.import_scene(original, OCHRE)}
+    scene_json = os.path.join(WORK, 'cave', 'cave.json')
+    result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
+    with open(scene_json, encoding='utf-8') as f:
+        exported = json.load(f)
+    result['lights'], result['include'] = exported['lights'], exported.get('include', [])
+    result['materials'] = sorted({s.get('material') for s in exported['shapes']})
+    images = {}
+    for name, scene, seed in (('original', original, 0), ('round_trip', scene_json, 0), ('original_seed1', original, 1)):
+        out = os.path.join(WORK, 'cave', name + '.exr')
+        subprocess.run([OCHRE, 'render', scene, '-o', out, '-q', '--threads', '2', '--resolution', CAVE_RESOLUTION,
+                        '--spp', str(CAVE_SPP), '--seed', str(seed)], check=True)
+        images[name] = exr_pixels(out)
+
+    def relmse(a, b):
+        return float(np.mean((a - b) ** 2 / (b ** 2 + 1e-2)))
+    ref = images['original']
+    result['means'] = {k: v.reshape(-1, 3).mean(axis=0).tolist() for k, v in images.items()}
+    result['relmse_round_trip'] = relmse(images['round_trip'], ref)
+    result['relmse_other_seed'] = relmse(images['original_seed1'], ref)
+    print('RESULT ' + json.dumps(result))
+    sys.stdout.flush()
+
+
 def run_case(case):
+    if case == 'cave':
+        return cave_round_trip()
     if case in ('suzanne', 'engine', 'ortho', 'vertical'):
         suzanne_scene()
     else:

@@ -26,7 +26,7 @@ struct ToolDoc {
 
 const std::vector<ToolDoc>& tool_docs() {
   static const std::vector<ToolDoc> docs = {
-      {"ochre", {"render", "merge", "relight", "info"}, "docs/cli.md"},
+      {"ochre", {"render", "merge", "relight", "info", "export-mesh"}, "docs/cli.md"},
       {"ochre-diff", {}, "docs/tools.md"},
       {"ochre-regress", {}, "docs/tools.md"},
       {"ochre-converge", {}, "docs/tools.md"},

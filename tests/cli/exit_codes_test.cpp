@@ -35,6 +35,7 @@ const std::vector<Program>& programs() {
   static const std::vector<Program> list = {
       {"ochre", "render", "scene.json"},
       {"ochre", "merge", "part.exr"},
+      {"ochre", "export-mesh", "scene.json -o out.ply"},
       {"ochre-diff", "", "a.exr b.exr"},
       {"ochre-regress", "", "suite"},
       {"ochre-converge", "", "scene.json --reference auto --spp 1"},
@@ -153,6 +154,7 @@ TEST(ExitCodesBadInput, MissingInputFile) {
       {"ochre", "render missing.json -o out.exr --png out.png", "missing.json"},
       {"ochre", "merge missing.exr -o out.exr", "missing.exr"},
       {"ochre", "merge missing.exr --check", "missing.exr"},
+      {"ochre", "export-mesh missing.json -o out.ply", "missing.json"},
       {"ochre-diff", "missing.exr scene.json --heatmap heat.png", "missing.exr"},
       {"ochre-regress", "missing-suite --junit out.xml --output-dir out", "missing-suite"},
       {"ochre-converge", "missing.json --reference auto --spp 1 --csv out.csv", "missing.json"},

@@ -10,6 +10,7 @@
 #include "cli/bad_scene.h"
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
+#include "cli/file_test_support.h"
 #include "renderer/image/exr_reader.h"
 #include "support/test_paths.h"
 

@@ -11,6 +11,7 @@
 #include "tools/cli/command_line.h"
 #include "tools/cli/duration.h"
 #include "tools/cli/program.h"
+#include "tools/ochre/export_mesh_command.h"
 #include "tools/ochre/frame_options.h"
 #include "tools/ochre/info_command.h"
 #include "tools/ochre/merge_command.h"
@@ -60,6 +61,18 @@ uint64_t parse_memory_limit(const std::string& text) {
     throw ochre::InputError("--memory-limit: expected a size such as 8G, 512M or 1048576 (bytes), got '" +
                             text + "'");
   return *bytes;
+}
+
+// -D NAME=VALUE options -> (name, value) pairs; InputError for one without a name or '='.
+std::vector<std::pair<std::string, std::string>> parsed_defines(const std::vector<std::string>& defines) {
+  std::vector<std::pair<std::string, std::string>> parameters;
+  for (const std::string& define : defines) {
+    const size_t equals = define.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw ochre::InputError("-D: expected NAME=VALUE, got '" + define + "'");
+    parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
+  }
+  return parameters;
 }
 
 // The whole command: its exit code (docs/cli.md, "Exit codes"); bad input throws InputError.
@@ -225,9 +238,31 @@ int ochre_command(int argc, char** argv) {
       "What partial-sum files and checkpoints hold: frame, pixels, samples, time left (headers only)");
   info->add_option("parts", info_cmd.parts, "Partial-sum files or checkpoints")->required();
 
+  ochre::ExportMeshCommand export_cmd;
+  CLI::App* export_mesh = app.add_subcommand(
+      "export-mesh",
+      "Write one mesh of a scene as rendered (subdivided, displaced, in world coordinates) as PLY");
+  export_mesh->add_option("scene", export_cmd.scene, "Scene file (JSON or Mitsuba 3 XML)")->required();
+  export_mesh->add_option("-o,--output", export_cmd.output, "Output PLY file")
+      ->required()
+      ->check(ochre::non_empty_path());
+  export_mesh->add_option("--shape", export_cmd.shape, "The mesh's name (needed when the scene has several)");
+  std::string export_preset;
+  auto* export_preset_opt =
+      export_mesh->add_option("--preset", export_preset, "Named variant from the scene's \"presets\"");
+  std::vector<std::string> export_defines;
+  export_mesh->add_option("-D,--define", export_defines, "Mitsuba XML scenes: set parameter $NAME to VALUE");
+  export_mesh->add_flag("-q,--quiet", export_cmd.quiet, "No report");
+
   if (!ochre::parse_command_line(app, argc, argv)) return ochre::kExitDone;  // --help, --version
 
   if (app.got_subcommand(info)) return ochre::run_info(info_cmd);
+
+  if (app.got_subcommand(export_mesh)) {
+    if (*export_preset_opt) export_cmd.overrides.preset = export_preset;
+    export_cmd.overrides.parameters = parsed_defines(export_defines);
+    return ochre::run_export_mesh(export_cmd);
+  }
 
   if (app.got_subcommand(relight)) {
     relight_display.apply(relight_cmd);
@@ -273,12 +308,7 @@ int ochre_command(int argc, char** argv) {
   if (*region_opt && !(cmd.region = ochre::parse_pixel_rect(region)))
     throw ochre::InputError("--region: expected x0,y0,x1,y1 with integers 0 <= x0 < x1, 0 <= y0 < y1, got '" +
                             region + "'");
-  for (const std::string& define : defines) {
-    const size_t equals = define.find('=');
-    if (equals == std::string::npos || equals == 0)
-      throw ochre::InputError("-D: expected NAME=VALUE, got '" + define + "'");
-    cmd.overrides.parameters.emplace_back(define.substr(0, equals), define.substr(equals + 1));
-  }
+  cmd.overrides.parameters = parsed_defines(defines);
   if (*spp_opt) cmd.overrides.spp = spp;
   if (*noise_opt) cmd.overrides.noise_threshold = noise_threshold;
   if (*threads_opt) cmd.overrides.threads = threads;

@@ -1,4 +1,5 @@
-"""ochre for Blender: File > Export > ochre scene (.json), and ochre as a render engine.
+"""ochre for Blender: File > Export > ochre scene (.json), File > Import > ochre scene (.json), and ochre as
+a render engine.
 
 Install: link or copy this folder into Blender's add-ons folder and enable "ochre" (docs/blender.md).
 """
@@ -7,16 +8,16 @@ bl_info = {
     'author': 'the ochre authors',
     'version': (0, 1, 0),
     'blender': (3, 4, 0),
-    'location': 'File > Export > ochre scene (.json); Render Properties > Render Engine > ochre',
+    'location': 'File > Export / Import > ochre scene (.json); Render Properties > Render Engine > ochre',
     'description': 'Export scenes to the ochre spectral path tracer and render them with it',
     'category': 'Render',
 }
 
 import bpy
 from bpy.props import EnumProperty, IntProperty, StringProperty
-from bpy_extras.io_utils import ExportHelper
+from bpy_extras.io_utils import ExportHelper, ImportHelper
 
-from . import engine, export
+from . import engine, export, import_scene
 
 
 class OchrePreferences(bpy.types.AddonPreferences):
@@ -81,11 +82,36 @@ class EXPORT_SCENE_OT_ochre(bpy.types.Operator, ExportHelper):
         return {'FINISHED'}
 
 
+class IMPORT_SCENE_OT_ochre(bpy.types.Operator, ImportHelper):
+    """Import an ochre scene: its meshes as ochre renders them, lights, camera and materials by name"""
+    bl_idname = 'import_scene.ochre'
+    bl_label = 'Import ochre scene'
+    filename_ext = '.json'
+    filter_glob: StringProperty(default='*.json', options={'HIDDEN'})
+    preset: StringProperty(name='Preset', description='A preset of the scene (e.g. final); empty: as written')
+
+    def execute(self, context):
+        try:
+            warnings = import_scene.import_scene(self.filepath, engine.ochre_executable(context),
+                                                 self.preset or None)
+        except (ValueError, OSError) as e:
+            self.report({'ERROR'}, f'ochre import failed: {e}')
+            return {'CANCELLED'}
+        for message in warnings:
+            self.report({'WARNING'}, message)
+        self.report({'INFO'}, f'imported {self.filepath} ({len(warnings)} warnings)')
+        return {'FINISHED'}
+
+
+def menu_import(self, context):
+    self.layout.operator(IMPORT_SCENE_OT_ochre.bl_idname, text='ochre scene (.json)')
+
+
 def menu_export(self, context):
     self.layout.operator(EXPORT_SCENE_OT_ochre.bl_idname, text='ochre scene (.json)')
 
 
-CLASSES = (OchrePreferences, OchreSettings, RENDER_PT_ochre, EXPORT_SCENE_OT_ochre)
+CLASSES = (OchrePreferences, OchreSettings, RENDER_PT_ochre, EXPORT_SCENE_OT_ochre, IMPORT_SCENE_OT_ochre)
 
 
 def register():
@@ -93,11 +119,13 @@ def register():
         bpy.utils.register_class(cls)
     bpy.types.Scene.ochre = bpy.props.PointerProperty(type=OchreSettings)
     bpy.types.TOPBAR_MT_file_export.append(menu_export)
+    bpy.types.TOPBAR_MT_file_import.append(menu_import)
     engine.register()
 
 
 def unregister():
     engine.unregister()
+    bpy.types.TOPBAR_MT_file_import.remove(menu_import)
     bpy.types.TOPBAR_MT_file_export.remove(menu_export)
     del bpy.types.Scene.ochre
     for cls in reversed(CLASSES):

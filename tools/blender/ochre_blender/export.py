@@ -23,12 +23,15 @@ from . import units
 DEFAULT_MATERIAL = 'blender_default'  # Blender renders objects without a material as grey 0.8 diffuse
 
 
-def library_dirs():
-    """Folders whose scene files define named materials that `ochre_material` may name."""
+def library_dirs(scene=None):
+    """Folders whose scene files define named materials that `ochre_material` may name: the pigment library,
+    $OCHRE_MATERIAL_LIBRARY, and the Blender scene's `ochre_material_library` (set by the importer to the
+    folders of the imported scene and its includes)."""
     here = os.path.dirname(os.path.realpath(__file__))
     dirs = [os.path.normpath(os.path.join(here, '..', '..', '..', 'scenes', 'pigments'))]
-    extra = os.environ.get('OCHRE_MATERIAL_LIBRARY', '')
-    dirs += [d for d in extra.split(os.pathsep) if d]
+    for extra in (os.environ.get('OCHRE_MATERIAL_LIBRARY', ''),
+                  str(scene.get('ochre_material_library', '')) if scene is not None else ''):
+        dirs += [d for d in extra.split(os.pathsep) if d and d not in dirs]
     return [d for d in dirs if os.path.isdir(d)]
 
 
@@ -131,7 +134,7 @@ class Exporter:
         settings = getattr(self.scene, 'ochre', None)
         self.samples = samples or (settings.samples if settings else 64)
         self.max_depth = max_depth or (settings.max_depth if settings else 8)
-        self.library = library if library is not None else library_materials()
+        self.library = library if library is not None else library_materials(library_dirs(self.scene))
         self.warnings = []
         self.materials = {}       # ochre material name -> material
         self.material_names = {}  # Blender material name -> ochre material name
@@ -326,19 +329,42 @@ class Exporter:
         colour = light.color
         position = units.to_ochre_point(matrix.translation)
         axis = units.to_ochre_direction((matrix.to_3x3() @ Vector((0.0, 0.0, -1.0))).normalized())
-        if light.use_nodes:
-            self.warn(f'light {name}: its node tree is not exported (colour and power only)')
-        if light.type in ('POINT', 'SPOT') and light.shadow_soft_size > 0.0:
-            self.warn(f'light {name}: radius {light.shadow_soft_size:g} not exported (a point source: hard shadows)')
         group = self.light_group(ob.original, f'light {name}')
         first = len(self.lights)
         shapes = len(self.shapes)
-        self.add_light(light, name, matrix, colour, position, axis)
+        given = self.ochre_light(ob.original, position, axis)
+        if given is not None:  # the ochre light itself: Blender's colour, power and radius do not apply
+            self.lights.append(given)
+        else:
+            if light.use_nodes:
+                self.warn(f'light {name}: its node tree is not exported (colour and power only)')
+            if light.type in ('POINT', 'SPOT') and light.shadow_soft_size > 0.0:
+                self.warn(f'light {name}: radius {light.shadow_soft_size:g} not exported (a point source: hard shadows)')
+            self.add_light(light, name, matrix, colour, position, axis)
         if group:
             for entry in self.lights[first:]:
                 entry['group'] = group
             for entry in self.shapes[shapes:]:
                 entry['light_group'] = group
+
+    def ochre_light(self, owner, position, axis):
+        """The ochre light a custom property `ochre_light` holds (JSON, as the importer writes it), at the
+        object's position and, where it has one, along the object's direction; None without the property."""
+        text = owner.get('ochre_light')
+        if text is None:
+            return None
+        try:
+            light = json.loads(str(text))
+        except ValueError as e:
+            self.warn(f'light {owner.name}: ochre_light is not JSON ({e}); the Blender light is exported')
+            return None
+        if not isinstance(light, dict) or not isinstance(light.get('type', 'point'), str):
+            self.warn(f'light {owner.name}: ochre_light is not an ochre light (an object); the Blender light is exported')
+            return None
+        light['position'] = position
+        if 'direction' in light:
+            light['direction'] = axis
+        return light
 
     def light_group(self, owner, what):
         """The light group a custom property `ochre_light_group` names, or None."""

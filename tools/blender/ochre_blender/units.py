@@ -16,6 +16,7 @@ Conventions (measured against Cycles 3.4 on a white Lambertian plane, direct lig
 - Blender is z-up, ochre y-up: a Blender point (x, y, z) is the ochre point (x, z, -y).
 """
 import math
+import struct
 
 # Blender world (z up) -> ochre world (y up): (x, y, z) -> (x, z, -y).
 Z_UP_TO_Y_UP = ((1.0, 0.0, 0.0, 0.0),
@@ -35,8 +36,22 @@ def to_ochre_matrix(m):
     return [float(x) for row in rows for x in row]
 
 
+def shortest_float32(x):
+    """The shortest decimal that reads back as the same single-precision number as x (Blender stores
+    locations and colours in single precision: 1.3 instead of 1.2999999523162842)."""
+    x = float(x)
+    single = struct.unpack('<f', struct.pack('<f', x))[0] if math.isfinite(x) else x
+    if single != x:  # not a single-precision value: keep it as it is
+        return x
+    for digits in range(6, 10):
+        shorter = float(f'{x:.{digits}g}')
+        if struct.unpack('<f', struct.pack('<f', shorter))[0] == x:
+            return shorter
+    return x
+
+
 def to_ochre_point(p):
-    return [float(p[0]), float(p[2]), -float(p[1])]
+    return [shortest_float32(p[0]), shortest_float32(p[2]), -shortest_float32(p[1])]
 
 
 def to_ochre_direction(d):
