@@ -6,9 +6,9 @@ with ochre and with Cycles (or with the ochre render engine) and print the mean 
 CASE: point, spot, area, ellipse, sun, world, envmap (a grey Lambertian plane lit by that light alone; envmap: an
 environment texture turned by a Mapping node, partly in view), suzanne (Suzanne on a textured plane under an
 area light), ortho, vertical (that scene through an orthographic camera in a portrait image, and with the
-sensor fitted vertically), engine (the suzanne scene through the render engine and directly), cave (the
-round trip: scenes/default imported into Blender, exported back, both rendered by ochre); several separated
-by commas.
+sensor fitted vertically), engine (the suzanne scene through the render engine and directly), cave and cornell
+(round trips: scenes/default, scenes/cornell-box imported into Blender, exported back, both rendered by
+ochre); several separated by commas.
 """
 import json
 import math
@@ -300,7 +300,7 @@ def framing(case):
         cam.sensor_fit, cam.sensor_height, cam.lens = 'VERTICAL', 20.0, 28.0
 
 
-CAVE_RESOLUTION, CAVE_SPP = '160x90', 16
+ROUND_TRIP_SPP = 16
 
 
 def exr_pixels(path):
@@ -311,13 +311,18 @@ def exr_pixels(path):
     return px
 
 
-def cave_round_trip():
-    """The default scene imported into an empty Blender scene, exported back and rendered by ochre beside the
+ROUND_TRIPS = {'cave': ('scenes/default/default.json', '160x90'),  # its material in a library file
+               'cornell': ('scenes/cornell-box/cornell-box.json', '64x64')}  # materials beside the shapes
+
+
+def round_trip(case):
+    """An ochre scene imported into an empty Blender scene, exported back and rendered by ochre beside the
     original (same seed; and the original with another seed, for the noise level)."""
     clear()
-    original = os.path.join(ROOT, 'scenes', 'default', 'default.json')
-    result = {'case': 'cave', 'import_warnings': import_scene.import_scene(original, OCHRE)}
-    scene_json = os.path.join(WORK, 'cave', 'cave.json')
+    relative, resolution = ROUND_TRIPS[case]
+    original = os.path.join(ROOT, relative)
+    result = {'case': case, 'import_warnings': import_scene.import_scene(original, OCHRE)}
+    scene_json = os.path.join(WORK, case, case + '.json')
     result['warnings'] = export.export_scene(bpy.context.evaluated_depsgraph_get(), scene_json)
     with open(scene_json, encoding='utf-8') as f:
         exported = json.load(f)
@@ -325,9 +330,9 @@ def cave_round_trip():
     result['materials'] = sorted({s.get('material') for s in exported['shapes']})
     images = {}
     for name, scene, seed in (('original', original, 0), ('round_trip', scene_json, 0), ('original_seed1', original, 1)):
-        out = os.path.join(WORK, 'cave', name + '.exr')
-        subprocess.run([OCHRE, 'render', scene, '-o', out, '-q', '--threads', '2', '--resolution', CAVE_RESOLUTION,
-                        '--spp', str(CAVE_SPP), '--seed', str(seed)], check=True)
+        out = os.path.join(WORK, case, name + '.exr')
+        subprocess.run([OCHRE, 'render', scene, '-o', out, '-q', '--threads', '2', '--resolution', resolution,
+                        '--spp', str(ROUND_TRIP_SPP), '--seed', str(seed)], check=True)
         images[name] = exr_pixels(out)
 
     def relmse(a, b):
@@ -341,8 +346,8 @@ def cave_round_trip():
 
 
 def run_case(case):
-    if case == 'cave':
-        return cave_round_trip()
+    if case in ROUND_TRIPS:
+        return round_trip(case)
     if case in ('suzanne', 'engine', 'ortho', 'vertical'):
         suzanne_scene()
     else:

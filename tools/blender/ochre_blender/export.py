@@ -55,6 +55,26 @@ def library_materials(dirs=None):
     return found
 
 
+def is_library_file(path):
+    """Whether a scene file holds materials only (and includes, a description): one that can be included
+    without adding shapes, lights or a camera to the export."""
+    try:
+        with open(path, encoding='utf-8') as f:
+            data = json.loads(_strip_comments(f.read()))
+    except (OSError, ValueError):
+        return False
+    return isinstance(data, dict) and set(data) <= {'description', 'include', 'materials'}
+
+
+def _absolute_files(value, folder):
+    """A copy of a material definition with its `file` entries (textures, spectra) made absolute."""
+    if isinstance(value, dict):
+        return {k: (os.path.normpath(os.path.join(folder, v)) if k == 'file' and isinstance(v, str)
+                    and not v.startswith('mtl:') else
+                    _absolute_files(v, folder)) for k, v in value.items()}
+    return [_absolute_files(x, folder) for x in value] if isinstance(value, list) else value
+
+
 def _safe_name(name):
     return re.sub(r'[^A-Za-z0-9_-]', '_', name) or 'unnamed'
 
@@ -139,6 +159,7 @@ class Exporter:
         self.materials = {}       # ochre material name -> material
         self.material_names = {}  # Blender material name -> ochre material name
         self.includes = []
+        self.inlined = set()      # scene files whose materials were copied into the export
         self.meshes = {}          # mesh key -> [(relative PLY path, material slot index)]
         self.images = {}          # Blender image name -> relative file
         self.shapes, self.lights = [], []
@@ -217,9 +238,33 @@ class Exporter:
         if path is None:
             self.warn(f'{owner}: ochre_material "{name}" is in no material library; the node tree is used')
             return None
-        if path not in self.includes:
-            self.includes.append(path)
+        if is_library_file(path):
+            if path not in self.includes:
+                self.includes.append(path)
+        else:
+            self.inline_materials(path, owner)
         return name
+
+    def inline_materials(self, path, owner):
+        """The materials of a scene file that has more than materials (shapes, a camera: it cannot be included),
+        copied into the export with their files made absolute; the material libraries it includes are
+        included."""
+        if path in self.inlined:
+            return
+        self.inlined.add(path)
+        with open(path, encoding='utf-8') as f:
+            data = json.loads(_strip_comments(f.read()))
+        here = os.path.dirname(path)
+        for name, definition in data.get('materials', {}).items():
+            self.materials.setdefault(name, _absolute_files(definition, here))
+        for inc in data.get('include', []):
+            full = os.path.normpath(os.path.join(here, inc))
+            if is_library_file(full):
+                if full not in self.includes:
+                    self.includes.append(full)
+            else:
+                self.warn(f'{owner}: {os.path.basename(path)} includes {inc}, which is more than materials: '
+                          'not included (its materials are not available)')
 
     def material(self, mat):
         """The ochre material name for a Blender material (None: the default grey)."""
