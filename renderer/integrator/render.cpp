@@ -164,8 +164,9 @@ void RenderStats::add(const RenderStats& pass) {
 }
 
 PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
-  return choose_polarization_mode(job.settings.polarization,
-                                  scene.polarizing_materials || scene.polarizing_filters, job.outputs.stokes);
+  const PolarizationNeeds needs{scene.polarizing_filters, scene.polarizing_materials,
+                                scene.polarization_significance};
+  return choose_polarization_mode(job.settings.polarization, needs, job.outputs.stokes);
 }
 
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,

@@ -21,6 +21,7 @@
 #include "renderer/loader/material_templates.h"
 #include "renderer/loader/mitsuba/mitsuba_import.h"
 #include "renderer/loader/scene_sources.h"
+#include "renderer/scene/polarization_significance.h"
 #include "renderer/shapes/control_mesh.h"
 #include "renderer/shapes/displacement.h"
 #include "renderer/shapes/mesh_import.h"
@@ -498,6 +499,8 @@ LoadedScene build_scene(const nlohmann::json& root, const std::string& file,
     scene->polarizing_materials = scene->polarizing_materials || m->facts().polarizes;
     scene->needs_uv = scene->needs_uv || m->facts().needs_uv;
   }
+  if (scene->polarizing_materials && !scene->polarizing_filters)
+    scene->polarization_significance = polarization_significance(*scene);
   scene->accel = std::make_unique<Accel>(scene->meshes);
   scene->build_lights(job.settings.mirror_lights);
   job.outputs.light_groups = scene->light_groups;

@@ -1,5 +1,7 @@
 #include "renderer/scene/polarization_mode.h"
 
+#include <fmt/format.h>
+
 namespace ochre {
 
 const char* polarization_mode_name(PolarizationMode mode) {
@@ -14,7 +16,7 @@ const char* polarization_mode_name(PolarizationMode mode) {
   return "off";
 }
 
-PolarizationChoice choose_polarization_mode(PolarizationSetting requested, bool scene_polarizes,
+PolarizationChoice choose_polarization_mode(PolarizationSetting requested, const PolarizationNeeds& needs,
                                             bool stokes_output_requested) {
   switch (requested) {
     case PolarizationSetting::kOff:
@@ -27,8 +29,18 @@ PolarizationChoice choose_polarization_mode(PolarizationSetting requested, bool 
       break;
   }
   if (stokes_output_requested) return {PolarizationMode::kStokes, "auto: a Stokes output is requested"};
-  if (scene_polarizes) return {PolarizationMode::kIntensity, "auto: a material or a filter polarizes"};
-  return {PolarizationMode::kOff, "auto: no material or filter polarizes"};
+  if (needs.filters) return {PolarizationMode::kIntensity, "auto: a polarizer filter"};
+  if (!needs.materials) return {PolarizationMode::kOff, "auto: no material or filter polarizes"};
+  const PolarizationSignificance& s = needs.significance;
+  if (s.delta_lobes)
+    return {PolarizationMode::kIntensity, "auto: a material polarizes (a mirror or glass lobe)"};
+  const std::string figures = fmt::format("diattenuation {:.2g} x polarizance {:.2g} = {:.2g}",
+                                          s.diattenuation, s.polarizance, s.bound());
+  if (s.bound() >= kPolarizationSignificant)
+    return {PolarizationMode::kIntensity, "auto: a material polarizes (" + figures + ")"};
+  return {PolarizationMode::kOff, fmt::format("auto: the materials polarize too little to change intensities "
+                                              "({} < {:g})",
+                                              figures, kPolarizationSignificant)};
 }
 
 }  // namespace ochre

@@ -24,6 +24,7 @@
 #include "renderer/lights/flame_light.h"
 #include "renderer/lights/planar_mirrors.h"
 #include "renderer/sampling/distribution_1d.h"
+#include "renderer/scene/polarization_mode.h"
 #include "renderer/scene/render_settings.h"
 #include "renderer/texture/texture_system.h"
 #include "spectra/sensor_response.h"
@@ -84,6 +85,7 @@ struct Scene {
   // Facts the integrator uses to model only what the scene needs.
   bool polarizing_materials = false;
   bool polarizing_filters = false;
+  PolarizationSignificance polarization_significance;  // estimated at load when a material polarizes
   bool needs_uv = false;
 
   // Builds the light list and selection distribution (after meshes and materials exist); with

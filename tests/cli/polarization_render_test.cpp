@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
 #include <string>
 
 #include "cli/cli_runner.h"
@@ -380,11 +381,62 @@ TEST(PolarizationRender, ModesOffAndIntensityAgreeWithOnePolarizingBounce) {
   })";
   const Rendered off = render(scene, "--polarization off");
   const Rendered intensity = render(scene);
-  EXPECT_NE(intensity.log.find("polarization: intensity (auto: a material or a filter polarizes)"),
+  EXPECT_NE(intensity.log.find("polarization: intensity (auto: a material polarizes (diattenuation "),
             std::string::npos)
       << intensity.log;
   std::printf("one polarizing bounce: off %.7f, intensity %.7f\n", off.luminance(), intensity.luminance());
   EXPECT_NEAR(intensity.luminance() / off.luminance(), 1.0, 1e-4);
+}
+
+// A damp film over diffuse rock (the default cave's material in small): a rough dielectric lobe reflecting a
+// few percent over a Lambertian base. Its closures polarize too little to change intensities, so auto leaves
+// polarization off, and tracing it (mode intensity) changes the image by less than the bound auto printed;
+// rough gold alone polarizes strongly and auto traces it.
+std::string damp_corner_scene(const std::string& film, double film_weight) {
+  return R"({
+    "camera": {"type": "perspective", "fov": 50, "eye": [2, 1.2, 2], "target": [0, 0.5, 0]},
+    "film": {"resolution": [16, 16]},
+    "integrator": {"spp": 64, "max_depth": 4},
+    "materials": {"damp": {"nodes": {"rock": {"type": "lambert", "color": 0.6}, )" +
+         film + R"(, "wet": {"type": "multiply", "a": {"link": "film"}, "b": )" +
+         std::to_string(film_weight) +
+         R"(}, "out": {"type": "add", "a": {"link": "rock"}, "b": {"link": "wet"}}}, "output": "out"}},
+    "lights": [{"type": "point", "position": [1, 1.5, 1], "intensity": 5}],
+    "shapes": [{"type": "plane", "size": [4, 4], "material": "damp"},
+               {"type": "plane", "size": [4, 4], "material": "damp", "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}]},
+               {"type": "plane", "size": [4, 4], "material": "damp", "transform": [{"rotate": {"axis": [0, 0, 1], "angle": -90}}]}]
+  })";
+}
+
+TEST(PolarizationRender, AutoLeavesOffWhatPolarizesTooLittleToChangeIntensities) {
+  // The cave's film: ior 1.5, roughness 0.2, weighed by its wetness (here 0.3).
+  const std::string film = R"("film": {"type": "dielectric", "ior": 1.5, "roughness": 0.2, "opaque": 1})";
+  const Rendered automatic = render(damp_corner_scene(film, 0.3));
+  const Rendered traced = render(damp_corner_scene(film, 0.3), "--polarization intensity");
+  const std::smatch bound = [&] {
+    std::smatch m;
+    std::regex_search(
+        automatic.log, m,
+        std::regex(
+            R"(polarization: off \(auto: the materials polarize too little to change intensities \(diattenuation ([0-9.e-]+) x polarizance ([0-9.e-]+) = ([0-9.e-]+) < 0.001\)\))"));
+    return m;
+  }();
+  ASSERT_EQ(bound.size(), 4u) << automatic.log;
+  const double estimate = std::stod(bound[3]);
+  const double change = traced.luminance() / automatic.luminance() - 1.0;
+  std::printf(
+      "damp film: auto off (diattenuation %s x polarizance %s = %g); intensity mode changes the image by "
+      "%.2e\n",
+      bound[1].str().c_str(), bound[2].str().c_str(), estimate, change);
+  EXPECT_GT(estimate, 0.0);
+  EXPECT_LT(std::fabs(change), estimate);  // the same paths (same seed): only the cross terms differ
+
+  // Rough gold over the same rock: strongly polarizing, traced.
+  const Rendered gold =
+      render(damp_corner_scene(R"("film": {"type": "conductor", "metal": "Au", "roughness": 0.3})", 1.0));
+  EXPECT_NE(gold.log.find("polarization: intensity (auto: a material polarizes (diattenuation "),
+            std::string::npos)
+      << gold.log;
 }
 
 // Cross-polarized photography: a flash behind a polarizer and a crossed analyzer on the lens remove the

@@ -134,7 +134,11 @@ class Cycles:
         return os.path.join(self.args.out, 'exr', f'cycles_{point_name(self.args, point)}.exr')
 
     def time_sweep(self, points):  # one render of every point -> {point: seconds}; the images stay in OUT/exr
-        return {p: self.render(*point_settings(self.args, p), 0, self.exr(p)) for p in points}
+        times = {}
+        for p in points:
+            spp, threshold = point_settings(self.args, p)
+            times[p] = self.render(spp, 0, self.exr(p), threshold)
+        return times
 
 
 class Ochre:
@@ -351,8 +355,8 @@ def main():
     ap.add_argument('--variant', action='append', default=[], help='ochre variant NAME:key=value,...')
     ap.add_argument('--ref-spp', type=int, default=4096)
     ap.add_argument('--spps', default='8,16,32,64,128,256')
-    ap.add_argument('--colour-spp', type=int, default=None,
-                    help='sample count of the RGB / luminance column, one of --spps (default: the middle one)')
+    ap.add_argument('--colour-spp', type=lambda v: int(v) if v.isdigit() else float(v), default=None,
+                    help='sample count (or noise threshold) of the RGB / luminance column, one of the sweep (default: the middle one)')
     ap.add_argument('--noise-thresholds', default='',
                     help='adaptive sweep: noise thresholds E1,E2,... (ochre --noise-threshold, Cycles\' adaptive '
                          'threshold), each with at most --max-spp samples per pixel, instead of --spps')
