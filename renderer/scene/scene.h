@@ -78,8 +78,8 @@ struct Scene {
   // Fills light_groups, light_group_of and other_light_group from the lights' groups.
   void build_light_groups();
   // Per light group, the shape of the emission spectrum its lights share (format_emission_shape), or empty
-  // when they share none: a light without one (a map, a textured emissive surface), lights of different spectra, or
-  // the group "other" (which also holds emission that is no light's).
+  // when they share none: a light without one (a map, a textured emissive surface), lights of different
+  // spectra, or the group "other" (which also holds emission that is no light's).
   std::vector<std::string> light_group_emission() const;
 
   // Facts the integrator uses to model only what the scene needs.
