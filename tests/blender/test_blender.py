@@ -88,6 +88,7 @@ class Units(unittest.TestCase):
 
     def test_z_up_to_y_up(self):
         self.assertEqual(units.to_ochre_point((1.0, 2.0, 3.0)), [1.0, 3.0, -2.0])
+        self.assertEqual(units.to_ochre_point(units.to_blender_point([1.0, 3.0, -2.0])), [1.0, 3.0, -2.0])
         identity = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
         m = units.to_ochre_matrix(identity)
         self.assertEqual(m, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0])

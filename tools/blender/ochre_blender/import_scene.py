@@ -22,7 +22,6 @@ Anything else (an environment map, a camera's polarizer, output settings) gives 
 import json
 import math
 import os
-import re
 import subprocess
 import tempfile
 
@@ -53,18 +52,16 @@ def scene_with_includes(path, stack=(), done=None):
     done.add(path)
     data = read_json(path)
     here = os.path.dirname(path)
-    merged = {'materials': {}, 'material_dirs': {}, 'shapes': [], 'lights': [], 'dirs': []}
+    merged = {'materials': {}, 'shapes': [], 'lights': [], 'dirs': []}
     for inc in data.get('include', []):
         if os.path.realpath(os.path.join(here, inc)) in done:
             continue
         part = scene_with_includes(os.path.join(here, inc), stack + (path,), done)
         merged['materials'].update(part['materials'])
-        merged['material_dirs'].update(part['material_dirs'])
         merged['shapes'] += part['shapes']
         merged['lights'] += part['lights']
         merged['dirs'] += [d for d in part['dirs'] if d not in merged['dirs']]
     merged['materials'].update(data.get('materials', {}))
-    merged['material_dirs'].update({name: here for name in data.get('materials', {})})
     merged['shapes'] += data.get('shapes', [])
     merged['lights'] += data.get('lights', [])
     if here not in merged['dirs']:
@@ -314,11 +311,10 @@ class Importer:
         data.energy = value if blender_kind == 'SUN' else 4.0 * math.pi * value
         ob = self.link(bpy.data.objects.new(name, data))
         ob['ochre_light'] = json.dumps(light)
-        position = light.get('position', [0.0, 0.0, 0.0])
-        ob.location = Vector((position[0], -position[2], position[1]))
+        ob.location = Vector(units.to_blender_point(light.get('position', [0.0, 0.0, 0.0])))
         direction = light.get('direction')
         if direction is not None:  # Blender lights shine along their -z
-            d = Vector((direction[0], -direction[2], direction[1])).normalized()
+            d = Vector(units.to_blender_point(direction)).normalized()
             ob.rotation_euler = d.to_track_quat('-Z', 'Y').to_euler()
         if 'group' in light:
             ob['ochre_light_group'] = light['group']

@@ -54,6 +54,11 @@ def to_ochre_point(p):
     return [shortest_float32(p[0]), shortest_float32(p[2]), -shortest_float32(p[1])]
 
 
+def to_blender_point(p):
+    """The inverse of to_ochre_point: an ochre point or direction (y up) in Blender's z-up world."""
+    return [float(p[0]), -float(p[2]), float(p[1])]
+
+
 def to_ochre_direction(d):
     return to_ochre_point(d)
 
