@@ -369,46 +369,109 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
 }
 
 template <class Sampler, class T>
+bool PathIntegrator::trace_shared(PathState<T>& s, PathVertex& v, uint32_t& depth, const RayCone& cone,
+                                  const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                                  PathStats& stats, FirstHit* first_hit) const {
+  if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, true, stats, first_hit)) return false;
+  // Usually the first vertex; a mirror or glass seen by the camera would hand every branch the same
+  // direction.
+  for (depth = 0; !v.closure.has_non_delta_lobes(); ++depth)
+    if (!scatter(s, v, depth, lambda, sampler) ||
+        !arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, true, stats, nullptr))
+      return false;
+  return true;
+}
+
+template <class Sampler, class T>
+SensorStokes PathIntegrator::continue_branch(const PathState<T>& shared, const PathVertex& v, uint32_t depth,
+                                             uint32_t j, uint32_t k, const RayCone& cone,
+                                             const SampledWavelengths& lambda, const Sampler& sampler,
+                                             LobeArena& arena, size_t floor, PathStats& stats) const {
+  const Sampler numbers = sampler.branch(j, k);
+  PathState<T> c = shared;
+  c.L = SensorStokes{};
+  c.group_weight = 1.0f / static_cast<float>(k);
+  PathVertex w;
+  for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
+    if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
+  return c.L;
+}
+
+template <class T>
+PathState<T> PathIntegrator::camera_state(const Ray& camera_ray, SampledSpectrum* groups) const {
+  return PathState<T>{.groups = groups,
+                      .beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
+                                T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
+                      .ray = camera_ray};
+}
+
+template <class Sampler, class T>
 SensorStokes PathIntegrator::trace(const Ray& camera_ray, const RayCone& cone,
                                    const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
                                    PathStats& stats, FirstHit* first_hit, SampledSpectrum* groups) const {
-  PathState<T> s{.groups = groups,
-                 .beta = T(scene_.camera_analyzer ? &*scene_.camera_analyzer : nullptr,
-                           T::kPolarized ? camera_stokes_axis(scene_.camera, camera_ray.dir) : Vec3{}),
-                 .ray = camera_ray};
+  PathState<T> s = camera_state<T>(camera_ray, groups);
   PathVertex v;
-  const bool branched = branches_ > 1;
-  if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, branched, stats, first_hit)) return s.L;
-  if (!branched) {
+  if (branches_ == 1) {
+    if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, false, stats, first_hit)) return s.L;
     for (uint32_t depth = 0; scatter(s, v, depth, lambda, sampler); ++depth)
       if (!arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, false, stats, nullptr)) break;
     return s.L;
   }
   // Branched path tracing (docs/architecture.md#branched-paths): the path up to its first vertex with a
-  // non-delta lobe (usually the first; a mirror or glass seen by the camera would hand every branch the same
-  // direction) is shared by `branches_` continuations, each with its own numbers (Sampler::branch), averaged.
-  // The shared vertex's lobes stay in the arena below `floor` (evaluated outside the per-thread memo, which a
+  // non-delta lobe is shared by `branches_` continuations, each with its own numbers (Sampler::branch),
+  // averaged. The shared vertex's lobes stay in the arena (evaluated outside the per-thread memo, which a
   // later vertex could overwrite) while the branches reuse the space above.
   uint32_t depth = 0;
-  for (; !v.closure.has_non_delta_lobes(); ++depth)
-    if (!scatter(s, v, depth, lambda, sampler) ||
-        !arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, true, stats, nullptr))
-      return s.L;
+  if (!trace_shared(s, v, depth, cone, lambda, sampler, arena, stats, first_hit)) return s.L;
   const size_t floor = arena.used();
   SensorStokes sum{};
-  PathVertex w;
   for (uint32_t j = 0; j < branches_; ++j) {
-    const Sampler numbers = sampler.branch(j, branches_);
-    PathState<T> c = s;
-    c.L = SensorStokes{};
-    c.group_weight = 1.0f / static_cast<float>(branches_);
-    for (uint32_t d = depth; scatter(c, d == depth ? v : w, d, lambda, numbers); ++d)
-      if (!arrive(c, w, d + 1, cone, lambda, numbers, arena, floor, false, stats, nullptr)) break;
-    for (size_t i = 0; i < sum.size(); ++i) sum[i] += c.L[i];
+    const SensorStokes c =
+        continue_branch(s, v, depth, j, branches_, cone, lambda, sampler, arena, floor, stats);
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += c[i];
   }
   const float inv = 1.0f / static_cast<float>(branches_);
   for (size_t i = 0; i < sum.size(); ++i) s.L[i] += sum[i] * inv;
   return s.L;
+}
+
+template <class Sampler, class T>
+BranchPilotSample PathIntegrator::pilot_trace(const Ray& camera_ray, const RayCone& cone,
+                                              const SampledWavelengths& lambda, const Sampler& sampler,
+                                              LobeArena& arena) const {
+  BranchPilotSample out;
+  PathStats stats;
+  PathState<T> s = camera_state<T>(camera_ray, nullptr);
+  PathVertex v;
+  uint32_t depth = 0;
+  out.branched = trace_shared(s, v, depth, cone, lambda, sampler, arena, stats, nullptr);
+  out.shared = s.L[0];
+  out.shared_rays = stats.rays;
+  out.shared_shadow_rays = stats.shadow_rays;
+  if (!out.branched) return out;
+  const size_t floor = arena.used();
+  for (uint32_t j = 0; j < out.branch.size(); ++j) {
+    PathStats branch_stats;
+    out.branch[j] = continue_branch(s, v, depth, j, 2, cone, lambda, sampler, arena, floor, branch_stats)[0];
+    out.branch_rays += branch_stats.rays;
+    out.branch_shadow_rays += branch_stats.shadow_rays;
+  }
+  return out;
+}
+
+template <class Sampler>
+BranchPilotSample PathIntegrator::pilot_sample(const Ray& ray, const RayCone& cone,
+                                               const SampledWavelengths& lambda, const Sampler& sampler,
+                                               LobeArena& arena) const {
+  switch (mode_) {
+    case PolarizationMode::kOff:
+      return pilot_trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena);
+    case PolarizationMode::kIntensity:
+      return pilot_trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena);
+    case PolarizationMode::kStokes:
+      return pilot_trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena);
+  }
+  return {};
 }
 
 template <class Sampler>
@@ -433,5 +496,10 @@ template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,
                                                const SobolSampler&, LobeArena&, PathStats&, FirstHit*,
                                                SampledSpectrum*) const;
+
+template BranchPilotSample PathIntegrator::pilot_sample(const Ray&, const RayCone&, const SampledWavelengths&,
+                                                        const IndependentSampler&, LobeArena&) const;
+template BranchPilotSample PathIntegrator::pilot_sample(const Ray&, const RayCone&, const SampledWavelengths&,
+                                                        const SobolSampler&, LobeArena&) const;
 
 }  // namespace ochre

@@ -7,6 +7,7 @@
 // averaged (docs/architecture.md#branched-paths).
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 #include "materials/lobes/lobe_arena.h"
@@ -33,6 +34,17 @@ struct PathStats {
 
 template <class Throughput>
 struct PathState;
+
+// One camera sample of the pilot that chooses the branch count (branch_choice.h): the radiance (S0) of the
+// shared part of a branched path (camera to its first non-delta vertex, with that vertex's light sample) and
+// of each of two continuations from there, and the rays each traced.
+struct BranchPilotSample {
+  bool branched = false;  // false: the path ended before a branch point (everything is in `shared`)
+  SampledSpectrum shared{0.0f};
+  std::array<SampledSpectrum, 2> branch{SampledSpectrum(0.0f), SampledSpectrum(0.0f)};
+  uint64_t shared_rays = 0, shared_shadow_rays = 0;  // of the shared part
+  uint64_t branch_rays = 0, branch_shadow_rays = 0;  // of both continuations together
+};
 
 // Where light arriving along a path goes: the path's radiance L and, with light groups, the S0 of each group
 // (docs/lights.md, "Light groups"), which sum to L's S0.
@@ -63,6 +75,12 @@ class PathIntegrator {
                         const Sampler& sampler, LobeArena& arena, PathStats& stats,
                         FirstHit* first_hit = nullptr, SampledSpectrum* groups = nullptr) const;
 
+  // A camera sample of the branch-count pilot (branch_choice.h): two continuations from the first non-delta
+  // vertex, whatever integrator.branches is, their radiance kept apart from the shared part's.
+  template <class Sampler>
+  BranchPilotSample pilot_sample(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                                 const Sampler& sampler, LobeArena& arena) const;
+
  private:
   // Arrival of s.ray: emission, shading and next-event estimation at the vertex it hits (stored in v).
   // False when the path ends there. Lobes go to `arena` above `arena_floor`; `own_lobes`: never in the
@@ -75,6 +93,25 @@ class PathIntegrator {
   template <class Sampler, class Throughput>
   bool scatter(PathState<Throughput>& s, const struct PathVertex& v, uint32_t depth,
                const SampledWavelengths& lambda, const Sampler& sampler) const;
+  // A path's state as the camera ray leaves (the camera's analyzer and Stokes frame).
+  template <class Throughput>
+  PathState<Throughput> camera_state(const Ray& camera_ray, SampledSpectrum* groups) const;
+  // The shared part of a branched path: from the camera to its first vertex with a non-delta lobe (v, at
+  // `depth`), whose lobes stay in `arena`. False when the path ends before.
+  template <class Sampler, class Throughput>
+  bool trace_shared(PathState<Throughput>& s, struct PathVertex& v, uint32_t& depth, const RayCone& cone,
+                    const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                    PathStats& stats, FirstHit* first_hit) const;
+  // Continuation j of k from the shared vertex v: its own radiance (not divided by k). Its lobes use the
+  // arena above `floor`.
+  template <class Sampler, class Throughput>
+  SensorStokes continue_branch(const PathState<Throughput>& shared, const struct PathVertex& v,
+                               uint32_t depth, uint32_t j, uint32_t k, const RayCone& cone,
+                               const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
+                               size_t floor, PathStats& stats) const;
+  template <class Sampler, class Throughput>
+  BranchPilotSample pilot_trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                                const Sampler& sampler, LobeArena& arena) const;
   template <class Sampler, class Throughput>
   SensorStokes trace(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                      const Sampler& sampler, LobeArena& arena, PathStats& stats, FirstHit* first_hit,

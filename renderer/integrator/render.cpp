@@ -12,6 +12,8 @@
 
 #include "renderer/film/noise_threshold.h"
 #include "renderer/geometry/surface_shading.h"
+#include "renderer/integrator/branch_choice.h"
+#include "renderer/integrator/camera_sample.h"
 #include "renderer/integrator/path_integrator.h"
 #include "spectra/cie.h"
 
@@ -42,11 +44,6 @@ enum class SampleFate { kAdded, kDiscarded, kClamped };
 bool beyond_film_range(const XYZ& v) {
   return std::fabs(v.x) > kMaxSampleMagnitude || std::fabs(v.y) > kMaxSampleMagnitude ||
          std::fabs(v.z) > kMaxSampleMagnitude;
-}
-
-// The film records XYZ (the CIE observer, `sensor` null) or a camera sensor's R, G, B (docs/cameras.md).
-XYZ sensor_value(const SensorResponse* sensor, const SampledSpectrum& L, const SampledWavelengths& lambda) {
-  return sensor ? sensor->response(L, lambda) : sampled_to_xyz(L, lambda);
 }
 
 // The groups' S0 of one sample (docs/lights.md, "Light groups"): per group, or per group and bin of each
@@ -119,17 +116,11 @@ void render_tile(const Scene& scene, const RenderSettings& s, const PathIntegrat
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancel && cancel->load(std::memory_order_relaxed)) return;  // at a pixel boundary
       // Random numbers and rays follow the pixel's place in the image; the film holds only the rectangle.
-      const uint64_t pixel_index = static_cast<uint64_t>(y) * s.width + x;
       const int fx = x - rect.x0, fy = y - rect.y0;
       for (uint32_t k = samples.begin; k < samples.end; ++k) {
         if (threshold > 0.0 && !pixel_takes_sample(film, fx, fy, k, threshold)) break;
         ++taken;
-        const Sampler sampler(s.seed, pixel_index, k);
-        const float u_lambda = sampler.get_1d(SampleDims::kWavelength);
-        const SampledWavelengths lambda =
-            sensor ? sensor->sample_wavelengths(u_lambda) : SampledWavelengths::sample_visible(u_lambda);
-        const Vec2 jitter = scene.pixel_filter.sample(sampler.get_2d(SampleDims::kPixelJitter));
-        const Ray ray = scene.camera.generate_ray(x + jitter.x, y + jitter.y);
+        const auto [sampler, lambda, ray] = camera_sample<Sampler>(scene, s.seed, x, y, s.width, k);
         FirstHit first;
         for (size_t g = 0; g < group_count; ++g) groups[g] = SampledSpectrum(0.0f);
         const SensorStokes S = integrator.radiance(ray, cone, lambda, sampler, arena, stats,
@@ -171,6 +162,14 @@ PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
 
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
+  if (job.settings.branches == RenderSettings::kAutoBranches) {
+    // The pilot's time counts as the render's.
+    BranchChoice choice;
+    const RenderJob resolved = resolve_branches(scene, job, &choice);
+    RenderStats stats = render(scene, resolved, film, progress, cancel);
+    stats.seconds += choice.seconds;
+    return stats;
+  }
   const RenderSettings& s = job.settings;
   return render_range(scene, job, film, {0, 0, s.width, s.height}, {s.sample_begin, s.sample_begin + s.spp},
                       progress, cancel);
@@ -183,6 +182,10 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
+  if (s.branches == RenderSettings::kAutoBranches)
+    throw std::invalid_argument(
+        "render_range: branches auto: resolve_branches first (sample ranges count camera "
+        "samples)");
   if (!film.light_groups().empty() && film.light_groups() != scene.light_groups)
     throw std::invalid_argument("render_range: the film's light groups are not the scene's");
   // A pixel of a noise-threshold render decides from all its samples so far: the film holds [0, begin).

@@ -16,7 +16,7 @@ namespace ochre {
 
 struct RenderStats {
   double seconds = 0.0;
-  uint64_t samples = 0;
+  uint64_t samples = 0;           // camera samples (each of integrator.branches paths)
   uint64_t rays = 0;              // intersect queries
   uint64_t shadow_rays = 0;       // occlusion queries
   uint64_t discarded = 0;         // NaN / Inf samples, counted as zero
@@ -36,7 +36,8 @@ using ProgressCallback = std::function<void(uint64_t)>;
 // The polarization mode a render of `scene` uses (the job's setting, the scene's facts, a Stokes output).
 PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job);
 
-// Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film`. When `cancel`
+// Renders samples [settings.sample_begin, sample_begin + spp) of every pixel into `film` (with branches auto:
+// paths, resolve_branches; its pilot's time counts in the stats). When `cancel`
 // becomes true (set from any thread, e.g. on Ctrl-C in Python), every tile stops before its next pixel and
 // render() returns with stats.cancelled: the film is then incomplete and must not be used.
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film,
@@ -45,7 +46,8 @@ RenderStats render(const Scene& scene, const RenderJob& job, Film& film,
 // Renders samples `samples` of the pixels `rect` of the image into `film`, which is rect.width() x
 // rect.height() (film pixel (0, 0) is image pixel (rect.x0, rect.y0)). Random numbers depend on the image
 // pixel and the sample index only, so any split into rectangles and sample ranges, merged
-// (Film::merge), gives the bits of one render.
+// (Film::merge), gives the bits of one render. The job's branches must be resolved (resolve_branches): the
+// range counts camera samples.
 RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, const PixelRect& rect,
                          SampleRange samples, const ProgressCallback& progress = {},
                          const std::atomic<bool>* cancel = nullptr);

@@ -128,7 +128,12 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
     s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
-    s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    if (f.has("branches") && f.require("branches").is_string()) {
+      if (f.string("branches", "") != "auto") f.fail("branches", "must be \"auto\" or an integer in [1, 64]");
+      s.branches = RenderSettings::kAutoBranches;
+    } else {
+      s.branches = static_cast<int>(f.integer("branches", s.branches, 1, RenderSettings::kMaxBranches));
+    }
     s.noise_threshold = f.number("noise_threshold", s.noise_threshold, 0.0, 1.0);
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.light_selection =

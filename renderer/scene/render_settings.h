@@ -74,10 +74,14 @@ struct RenderSettings {
   int max_depth = 8;  // maximum number of scattering events on a path
   int rr_depth = 5;   // Russian roulette starts after this many bounces (docs/performance.md)
   // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
-  // (docs/architecture.md#branched-paths).
-  int branches = 1;
+  // (docs/architecture.md#branched-paths). kAutoBranches ("auto", the default): the renderer chooses from a
+  // pilot (renderer/integrator/branch_choice.h), and spp counts paths per pixel; resolve_branches turns it
+  // into a number and spp into camera samples before a render.
+  static constexpr int kAutoBranches = 0;
+  int branches = kAutoBranches;
   static constexpr int kMaxBranches = 64;  // past a few, the first vertex's noise dominates
-  bool mirror_lights = true;  // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
+  bool branches_chosen = false;  // set by resolve_branches: `branches` was chosen for auto, spp converted
+  bool mirror_lights = true;     // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
   LightSelection light_selection = LightSelection::kLocal;
   uint64_t seed = 0;
   int threads = 0;  // 0 = all cores

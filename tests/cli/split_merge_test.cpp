@@ -324,5 +324,29 @@ TEST(SplitOptions, MalformedOrOutOfRangeValuesAreRefused) {
   EXPECT_TRUE(contains(no_output.output, "--tile write partial sums: give -o PART.exr")) << no_output.output;
 }
 
+// integrator.branches auto: the pilot's choice depends on the scene and the settings only, so every part
+// renders the same camera samples (sample ranges count them: 64 paths as 32 x 2 branches on this box) and
+// the parts merge to the single render's bits.
+TEST(SplitMerge, AutoBranchedPartsMergeToTheSingleRender) {
+  const fs::path dir = scratch_dir();
+  const std::string args = "--resolution 128x128 --spp 64";
+  const CommandResult single =
+      run_ochre("render " + scene_path(kCornell) + " " + args + " -o single.exr", dir);
+  ASSERT_EQ(single.exit_code, 0) << single.output;
+  EXPECT_TRUE(contains(single.output, "32 spp x 2 branches (64 paths per pixel, branches auto)"))
+      << single.output;
+  EXPECT_TRUE(contains(single.output, "ochre: branches: 2 (pilot")) << single.output;
+  render(dir, kCornell, args + " -q --part 0/2 -o p0.exr");
+  render(dir, kCornell, args + " -q --sample-range 16:24 -o p1.exr --threads 1");
+  render(dir, kCornell, args + " -q --sample-range 24:32 -o p2.exr");
+  expect_merge_gives_the_single_render(dir, "p0.exr p1.exr p2.exr");
+  // Ranges beyond the camera samples are refused, naming the branch count.
+  const CommandResult beyond =
+      run_ochre("render " + scene_path(kCornell) + " " + args + " --sample-range 30:40 -o p.exr", dir);
+  EXPECT_EQ(beyond.exit_code, 2);
+  EXPECT_TRUE(contains(beyond.output, "beyond the 32 camera samples per pixel (64 paths as 32 x 2 branches"))
+      << beyond.output;
+}
+
 }  // namespace
 }  // namespace ochre::test::split_merge_test

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "materials/graph/graph_error.h"
+#include "renderer/integrator/branch_choice.h"
 #include "renderer/integrator/render.h"
 #include "renderer/integrator/render_passes.h"
 #include "renderer/output/output_files.h"
@@ -46,7 +47,8 @@ void print_summary(const Scene& scene, const RenderJob& job) {
   for (const Mesh& m : scene.meshes) triangles += m.triangle_count();
   const RenderSettings& s = job.settings;
   const std::string branches =
-      s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel)", s.branches, s.spp * s.branches)
+      s.branches > 1 ? fmt::format(" x {} branches ({} paths per pixel{})", s.branches, s.spp * s.branches,
+                                   s.branches_chosen ? ", branches auto" : "")
                      : "";
   const std::string spp = s.noise_threshold > 0.0
                               ? fmt::format("noise threshold {}, at most {} spp", s.noise_threshold, s.spp)
@@ -359,6 +361,11 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, job);
   }
+  // integrator.branches auto: chosen now, for every frame, part and resumed piece alike.
+  BranchChoice branch_choice;
+  job = resolve_branches(*scene, job, &branch_choice);
+  if (!command.quiet && job.settings.branches_chosen)
+    std::cerr << fmt::format("ochre: branches: {}\n", branch_choice.reason);
   if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
   if (command.still_frame) {
     // One frame of a sequence, rendered like a still (the frame is part of the render's identity).

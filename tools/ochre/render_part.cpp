@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <filesystem>
+#include <string>
 
 #include "renderer/output/render_output.h"
 #include "renderer/scene/scene.h"
@@ -18,21 +19,26 @@ RenderPart select_part(const RenderCommand& command, const RenderSettings& s) {
         "{}: {} cannot split a noise-threshold render (--noise-threshold or integrator.noise_threshold {}): "
         "each pixel decides from all of its samples when to stop; split it by pixels with --tile or --region",
         command.scene, command.part ? "--part" : "--sample-range", s.noise_threshold));
+  // With branches auto the range counts camera samples, spp / k
+  // (docs/architecture.md#automatic-branch-count).
+  const std::string samples =
+      s.branches_chosen && s.branches > 1
+          ? fmt::format(
+                "{} camera samples per pixel ({} paths as {} x {} branches, integrator.branches auto; "
+                "set it to 1 to count paths)",
+                s.spp, s.spp * s.branches, s.spp, s.branches)
+          : fmt::format("{} samples per pixel", s.spp);
   if (command.part) {
     const auto [index, count] = *command.part;
     if (count > s.spp)
-      throw InputError(
-          fmt::format("--part {}/{}: more parts than the {} samples per pixel of {} (integrator.spp "
-                      "or --spp)",
-                      index, count, s.spp, command.scene));
+      throw InputError(fmt::format("--part {}/{}: more parts than the {} of {} (integrator.spp or --spp)",
+                                   index, count, samples, command.scene));
     part.samples = part_of_samples(index, count, s.spp);
   }
   if (command.sample_range) {
     if (command.sample_range->end > s.spp)
-      throw InputError(
-          fmt::format("--sample-range {}: beyond the {} samples per pixel of {} (integrator.spp or "
-                      "--spp)",
-                      format_sample_range(*command.sample_range), s.spp, command.scene));
+      throw InputError(fmt::format("--sample-range {}: beyond the {} of {} (integrator.spp or --spp)",
+                                   format_sample_range(*command.sample_range), samples, command.scene));
     part.samples = *command.sample_range;
   }
   if (command.region) {

@@ -436,7 +436,10 @@ py::dict settings_of(const PyScene& p) {
   d["spp"] = s.spp;
   d["max_depth"] = s.max_depth;
   d["rr_depth"] = s.rr_depth;
-  d["branches"] = s.branches;
+  if (s.branches == RenderSettings::kAutoBranches)
+    d["branches"] = "auto";
+  else
+    d["branches"] = s.branches;
   d["seed"] = s.seed;
   d["threads"] = s.threads;
   d["sampler"] = kSamplerKinds.name(s.sampler);

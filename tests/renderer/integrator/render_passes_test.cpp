@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "renderer/integrator/branch_choice.h"
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
@@ -14,7 +15,9 @@ LoadedScene small_cornell() {
   o.width = 20;
   o.height = 12;
   o.spp = 9;
-  return load_scene(test::source_dir() / "scenes/cornell-box/cornell-box.json", o);
+  LoadedScene scene = load_scene(test::source_dir() / "scenes/cornell-box/cornell-box.json", o);
+  scene.job = resolve_branches(*scene.scene, scene.job);  // sample ranges count camera samples
+  return scene;
 }
 
 void expect_same_film(const Film& a, const Film& b) {

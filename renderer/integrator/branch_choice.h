@@ -1,0 +1,43 @@
+#pragma once
+// integrator.branches "auto": how many continuations each camera sample gets from its first vertex
+// (docs/architecture.md#automatic-branch-count). A deterministic pilot traces a few camera samples of a grid
+// of pixels, each with two continuations, and measures how much of a path's variance comes from the part
+// the branches share (camera ray, first vertex, its light sample, the wavelengths and the place in the
+// pixel) and how much from a continuation, and what each costs in rays. Splitting theory gives the best
+// count: with V0, c0 the shared part's variance and cost and V1, c1 a continuation's, k continuations cost
+// c0 + k c1 and leave V0 + V1 / k, whose product is least at k = sqrt((V1 / V0) (c0 / c1)).
+// The pilot's numbers come from a seed of its own: the choice depends on the scene and the settings, never
+// on the render's seed, thread count or split.
+
+#include <string>
+
+#include "renderer/scene/render_settings.h"
+#include "renderer/scene/scene.h"
+
+namespace ochre {
+
+struct BranchChoice {
+  int branches = 1;
+  bool piloted = false;        // a pilot ran (else `reason` says why not)
+  double shared_variance = 0;  // V0 / (V0 + V1): the share of a path's relative variance the branches share
+                               // (V0 at the upper end of its uncertainty)
+  double shared_cost = 0;      // c0: rays of the shared part per camera sample (and the sample's own work)
+  double branch_cost = 0;      // c1: rays per continuation
+  double optimum = 1;          // sqrt((V1 / V0) (c0 / c1)) before rounding to a power of two
+  double predicted_gain = 1;   // time to a given error with 1 branch over `branches`, as the pilot predicts
+  double seconds = 0;          // the pilot's time
+  std::string reason;          // one line for the render's summary
+};
+
+// The branch count for a render of `scene` with `job`'s settings, whose branches are auto and whose spp
+// counts paths per pixel: a power of two that divides spp and leaves at least 4 camera samples, 16 at most.
+// Renders too small for the pilot to be a small part of them, and noise-threshold renders (whose pixels
+// decide from their camera samples), keep 1.
+BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
+
+// `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths
+// into camera samples (`choice`, if given, receives the choice); other jobs come back as they are. Throws
+// std::invalid_argument when sample_begin is not a whole number of camera samples.
+RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice = nullptr);
+
+}  // namespace ochre

@@ -1,0 +1,146 @@
+// integrator.branches "auto" (renderer/integrator/branch_choice.h): a pilot chooses how many continuations a
+// camera sample gets, from the scene and the settings only; spp then counts paths per pixel.
+#include "renderer/integrator/branch_choice.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "renderer/integrator/render.h"
+#include "renderer/loader/scene_loader.h"
+#include "support/test_paths.h"
+
+namespace ochre::branch_choice_test {
+namespace {
+
+LoadedScene cornell_box(int size, uint32_t spp) {
+  SceneOverrides o;
+  o.width = size;
+  o.height = size;
+  o.spp = spp;
+  return load_scene(test::source_dir() / "scenes" / "cornell-box" / "cornell-box.json", o);
+}
+
+void print(const char* what, const BranchChoice& c) {
+  std::printf("%s: %d branches, piloted %d, shared variance %.4f, costs %.3f / %.3f, optimum %.3f, %s\n",
+              what, c.branches, c.piloted, c.shared_variance, c.shared_cost, c.branch_cost, c.optimum,
+              c.reason.c_str());
+}
+
+// The Cornell box's noise is in its indirect light (the first vertex's light sample from one area light is
+// nearly noise-free): the pilot branches, as hand-tuning found (2 on the matched box of the benchmarks).
+TEST(BranchChoice, BranchesWhereTheNoiseIsIndirect) {
+  const LoadedScene scene = cornell_box(128, 64);
+  EXPECT_EQ(scene.job.settings.branches, RenderSettings::kAutoBranches);  // the default
+  const BranchChoice c = choose_branches(*scene.scene, scene.job);
+  print("cornell box 128x128, 64 spp", c);
+  EXPECT_TRUE(c.piloted);
+  EXPECT_GE(c.branches, 2);
+  EXPECT_LE(c.branches, 8);
+  EXPECT_LT(c.shared_variance, 0.25);
+  // A first vertex costs one ray, a light sample and the camera sample's own work; a continuation the rest of
+  // the path (max depth 8, roulette from 5).
+  EXPECT_NEAR(c.shared_cost, 1.0 + 0.25 + 0.5, 0.1);
+  EXPECT_GT(c.branch_cost, 2.0);
+  EXPECT_GT(c.predicted_gain, 1.0);
+}
+
+// Direct light only (max depth 1) from a small sphere light: the noise is the first vertex's light sample,
+// which every branch would share, and a continuation adds only the BSDF ray's MIS-weighted hits of the light.
+TEST(BranchChoice, KeepsOnePathWhereTheNoiseIsAtTheFirstVertex) {
+  LoadedScene scene = cornell_box(128, 64);
+  scene.job.settings.max_depth = 1;
+  const BranchChoice c = choose_branches(*scene.scene, scene.job);
+  print("cornell box, direct light only", c);
+  EXPECT_TRUE(c.piloted);
+  EXPECT_EQ(c.branches, 1);
+  EXPECT_GT(c.shared_variance, 0.5);
+}
+
+// The choice is a function of the scene and the settings: not of the seed or the thread count.
+TEST(BranchChoice, SameChoiceForAnySeedAndThreadCount) {
+  LoadedScene scene = cornell_box(128, 64);
+  scene.job.settings.threads = 1;
+  const BranchChoice one = choose_branches(*scene.scene, scene.job);
+  scene.job.settings.threads = 2;
+  scene.job.settings.seed = 12345;
+  const BranchChoice two = choose_branches(*scene.scene, scene.job);
+  EXPECT_EQ(one.branches, two.branches);
+  EXPECT_EQ(one.shared_variance, two.shared_variance);  // the same sums, in the same order
+  EXPECT_EQ(one.shared_cost, two.shared_cost);
+  EXPECT_EQ(one.branch_cost, two.branch_cost);
+  EXPECT_EQ(one.optimum, two.optimum);
+}
+
+// k divides spp and leaves 4 camera samples; small renders and noise-threshold renders keep one path.
+TEST(BranchChoice, CountsThatDivideTheSamples) {
+  LoadedScene scene = cornell_box(128, 64);
+  for (const uint32_t spp : {6u, 7u, 8u, 12u, 24u, 64u}) {
+    scene.job.settings.spp = spp;
+    const BranchChoice c = choose_branches(*scene.scene, scene.job);
+    EXPECT_EQ(spp % c.branches, 0u) << spp;
+    EXPECT_GE(spp / c.branches, 4u) << spp;
+    if (spp < 8) {
+      EXPECT_EQ(c.branches, 1) << spp;
+    }
+  }
+  scene.job.settings.spp = 64;
+  scene.job.settings.noise_threshold = 0.01;
+  EXPECT_EQ(choose_branches(*scene.scene, scene.job).branches, 1);
+  EXPECT_FALSE(choose_branches(*scene.scene, scene.job).piloted);
+  const LoadedScene small = cornell_box(16, 64);  // 16 k paths: less than 20 pilots
+  EXPECT_FALSE(choose_branches(*small.scene, small.job).piloted);
+}
+
+// resolve_branches turns paths into camera samples; an explicit count is kept with its meaning.
+TEST(BranchChoice, ResolvedJobCountsCameraSamples) {
+  LoadedScene scene = cornell_box(128, 64);
+  BranchChoice c;
+  const RenderJob resolved = resolve_branches(*scene.scene, scene.job, &c);
+  EXPECT_TRUE(resolved.settings.branches_chosen);
+  EXPECT_EQ(resolved.settings.branches, c.branches);
+  EXPECT_EQ(resolved.settings.spp * static_cast<uint32_t>(c.branches), 64u);
+  scene.job.settings.sample_begin = 1;  // not a whole camera sample of c.branches > 1: k must divide it
+  EXPECT_EQ(resolve_branches(*scene.scene, scene.job).settings.branches, 1);
+  scene.job.settings.sample_begin = 0;
+  scene.job.settings.branches = 3;
+  const RenderJob fixed = resolve_branches(*scene.scene, scene.job);
+  EXPECT_EQ(fixed.settings.branches, 3);
+  EXPECT_EQ(fixed.settings.spp, 64u);
+  EXPECT_FALSE(fixed.settings.branches_chosen);
+  // render_range needs the count: its range counts camera samples.
+  scene.job.settings.branches = RenderSettings::kAutoBranches;
+  Film film(128, 128);
+  EXPECT_THROW(render_range(*scene.scene, scene.job, film, {0, 0, 128, 128}, {0, 1}), std::invalid_argument);
+}
+
+// An auto render is the render of its chosen count: the same bits as the explicit job, unbiased against a
+// plain path-traced render of the same number of paths (the mean of the image within its noise).
+TEST(BranchChoice, AutoRenderIsTheChosenCountsRender) {
+  const LoadedScene scene = cornell_box(128, 48);
+  BranchChoice c;
+  const RenderJob resolved = resolve_branches(*scene.scene, scene.job, &c);
+  ASSERT_GT(c.branches, 1);
+  Film automatic(128, 128), chosen(128, 128), plain(128, 128);
+  render(*scene.scene, scene.job, automatic);
+  render(*scene.scene, resolved, chosen);
+  RenderJob one = scene.job;
+  one.settings.branches = 1;
+  render(*scene.scene, one, plain);
+  double a = 0, b = 0;
+  bool same = true;
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      same = same && automatic.mean(x, y) == chosen.mean(x, y);
+      a += automatic.mean(x, y).y;
+      b += plain.mean(x, y).y;
+    }
+  EXPECT_TRUE(same);
+  std::printf("mean Y: auto (%d branches) %.5f, one branch %.5f\n", c.branches, a / (128 * 128),
+              b / (128 * 128));
+  EXPECT_NEAR(a / b, 1.0, 0.01);
+}
+
+}  // namespace
+}  // namespace ochre::branch_choice_test
