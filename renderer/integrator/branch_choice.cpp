@@ -24,10 +24,14 @@ namespace {
 constexpr int kGridWidth = 48;
 constexpr uint32_t kPilotSamples = 8;
 constexpr uint64_t kPilotSeed = 0x70696c6f74ull;  // "pilot"
-// The pilot runs only where the render traces at least this many times the pilot's paths.
-constexpr double kMinRenderToPilot = 20.0;
+// The pilot runs only where the render traces at least this many times the pilot's paths (of every roulette
+// start it weighs): it then costs at most a tenth of the render.
+constexpr double kMinRenderToPilot = 10.0;
 constexpr int kMaxAutoBranches = 16;
 constexpr double kUncertainties = 1.0;     // how far above its estimate V0 is taken
+// The earlier roulette start the pilot weighs against the default, and by how much it must win.
+constexpr int kEarlyRoulette = 3;
+constexpr double kRouletteMargin = 0.97;
 constexpr uint32_t kMinCameraSamples = 4;  // a pixel keeps this many places and wavelength sets at least
 // A shadow ray costs about a quarter of a ray whose hit is shaded; a camera sample's own work (wavelengths,
 // camera ray set-up, the film) about half of one (measured on the cave and the Cornell box: the first vertex
@@ -107,41 +111,18 @@ uint32_t power_of_two_dividing(uint32_t n) {
   return n & (~n + 1u);
 }
 
-// Time to a given error with k continuations, relative to one: (V0 + V1 / k)(c0 + k c1) / ((V0 + V1)(c0 +
-// c1)).
-double relative_time(double k, double v0, double v1, double c0, double c1) {
-  return (v0 + v1 / k) * (c0 + k * c1) / ((v0 + v1) * (c0 + c1));
-}
+// The pilot's sums for one roulette start: V0 (with its uncertainty), V1 and the costs, per camera sample.
+struct PilotSums {
+  double shared_variance = 0, shared_uncertainty = 0, branch_variance = 0;
+  double shared_cost = 0, branch_cost = 0;
+};
 
-}  // namespace
-
-BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
+PilotSums run_pilot(const Scene& scene, const RenderJob& job, const std::vector<GridPixel>& grid,
+                    int rr_depth) {
   const RenderSettings& s = job.settings;
-  BranchChoice choice;
-  if (s.noise_threshold > 0.0) {
-    choice.reason = "1 (a noise-threshold render decides per pixel from its camera samples)";
-    return choice;
-  }
-  // A power of two dividing spp (and sample_begin) that leaves kMinCameraSamples camera samples.
-  uint32_t cap = std::min<uint32_t>(kMaxAutoBranches, s.spp / kMinCameraSamples);
-  cap = std::min(cap, power_of_two_dividing(s.spp));
-  if (s.sample_begin > 0) cap = std::min(cap, power_of_two_dividing(s.sample_begin));
-  if (cap < 2) {
-    choice.reason =
-        fmt::format("1 ({} paths per pixel: fewer than {} camera samples of 2)", s.spp, kMinCameraSamples);
-    return choice;
-  }
-  const std::vector<GridPixel> grid = pilot_grid(s.width, s.height);
-  const double render_paths = double(s.width) * s.height * s.spp;
-  const double pilot_paths = 2.0 * kPilotSamples * grid.size();
-  if (render_paths < kMinRenderToPilot * pilot_paths) {
-    choice.reason = fmt::format("1 (a render of {:.3g} paths is too small for the pilot)", render_paths);
-    return choice;
-  }
-
-  const auto start = std::chrono::steady_clock::now();
   RenderSettings pilot_settings = s;
   pilot_settings.branches = 2;
+  pilot_settings.rr_depth = rr_depth;
   const PathIntegrator integrator(scene, pilot_settings, polarization_for(scene, job).mode);
   std::vector<PixelPilot> pixels(grid.size());
   {
@@ -155,53 +136,126 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
     });
   }
   // Summed in pixel order: the same figures for any thread count.
-  PixelPilot sum;
+  PilotSums sum;
   for (const PixelPilot& p : pixels) {
     sum.shared_variance += p.shared_variance;
     sum.branch_variance += p.branch_variance;
     sum.shared_cost += p.shared_cost;
     sum.branch_cost += p.branch_cost;
   }
-  // V0 is a small difference of noisy estimates where the shared part is nearly noise-free: it is taken at
-  // the upper end of its uncertainty (the pixels' spread, an upper bound of their noise), which errs towards
-  // fewer branches, the cheaper mistake.
+  // The pixels' spread: an upper bound of the noise of the sum of their V0 estimates.
   const double mean_shared = sum.shared_variance / double(pixels.size());
   double spread = 0;
   for (const PixelPilot& p : pixels)
     spread += (p.shared_variance - mean_shared) * (p.shared_variance - mean_shared);
-  const double shared_uncertainty = std::sqrt(spread);
-  sum.shared_variance = std::max(sum.shared_variance, 0.0) + kUncertainties * shared_uncertainty;
+  sum.shared_uncertainty = std::sqrt(spread);
+  const double samples = double(kPilotSamples) * double(grid.size());
+  sum.shared_cost /= samples;
+  sum.branch_cost /= samples;
+  return sum;
+}
+
+// The time to a given error with k continuations: (V0 + V1 / k)(c0 + k c1), in the pilot's units.
+double time_to_error(int k, double v0, const PilotSums& p) {
+  return (v0 + std::max(p.branch_variance, 0.0) / k) * (p.shared_cost + k * p.branch_cost);
+}
+
+}  // namespace
+
+BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
+  const RenderSettings& s = job.settings;
+  const bool auto_branches = s.branches == RenderSettings::kAutoBranches;
+  const bool auto_roulette = s.rr_depth == RenderSettings::kAutoRoulette;
+  BranchChoice choice;
+  choice.branches = auto_branches ? 1 : s.branches;
+  choice.rr_depth = auto_roulette ? RenderSettings::kDefaultRouletteDepth : s.rr_depth;
+  const auto plain = [&](const std::string& why) {
+    choice.reason = fmt::format("{} branch{}, roulette from depth {} ({})", choice.branches,
+                                choice.branches == 1 ? "" : "es", choice.rr_depth, why);
+    return choice;
+  };
+  if (!auto_branches && !auto_roulette) return plain("as set");
+  if (s.noise_threshold > 0.0)
+    return plain("a noise-threshold render decides per pixel from its camera samples");
+  // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples.
+  std::vector<int> counts{choice.branches};
+  if (auto_branches) {
+    uint32_t cap = std::min<uint32_t>(kMaxAutoBranches, s.spp / kMinCameraSamples);
+    cap = std::min(cap, power_of_two_dividing(s.spp));
+    if (s.sample_begin > 0) cap = std::min(cap, power_of_two_dividing(s.sample_begin));
+    for (uint32_t k = 2; k <= cap; k *= 2) counts.push_back(static_cast<int>(k));
+  }
+  // Roulette starts: the default and kEarlyRoulette (lever a, m of the performance record: earlier costs
+  // more than it saves, later rarely matters), where the paths are long enough to reach them.
+  std::vector<int> starts{choice.rr_depth};
+  if (auto_roulette && kEarlyRoulette < s.max_depth) starts.insert(starts.begin(), kEarlyRoulette);
+  if (counts.size() == 1 && starts.size() == 1)
+    return plain(
+        fmt::format("{} paths per pixel: fewer than {} camera samples of 2", s.spp, kMinCameraSamples));
+  const std::vector<GridPixel> grid = pilot_grid(s.width, s.height);
+  const double render_paths = double(s.width) * s.height * s.spp;
+  const double pilot_paths = 2.0 * kPilotSamples * double(grid.size()) * double(starts.size());
+  if (render_paths < kMinRenderToPilot * pilot_paths)
+    return plain(fmt::format("a render of {:.3g} paths is too small for the pilot", render_paths));
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<PilotSums> pilots;
+  for (const int rr : starts) pilots.push_back(run_pilot(scene, job, grid, rr));
   choice.piloted = true;
   choice.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double v1 = std::max(sum.branch_variance, 0.0);
-  const double v0 = std::max(sum.shared_variance, 1e-6 * v1);
-  const double c0 = sum.shared_cost, c1 = sum.branch_cost;
-  choice.shared_cost = c0 / double(kPilotSamples * grid.size());
-  choice.branch_cost = c1 / double(kPilotSamples * grid.size());
+  // V0 does not depend on the roulette (it starts past the shared part): the default's estimate serves all.
+  // Where the shared part is nearly noise-free it is a small difference of noisy sums, taken at the upper
+  // end of its uncertainty, which errs towards fewer branches, the cheaper mistake.
+  const PilotSums& base = pilots.back();
+  const double v1 = std::max(base.branch_variance, 0.0);
+  const double v0 =
+      std::max(std::max(base.shared_variance, 0.0) + kUncertainties * base.shared_uncertainty, 1e-6 * v1);
+  choice.shared_cost = base.shared_cost;
+  choice.branch_cost = base.branch_cost;
   choice.shared_variance = v0 + v1 > 0.0 ? v0 / (v0 + v1) : 1.0;
-  if (!(v1 > 0.0) || !(c1 > 0.0)) {
-    choice.reason = "1 (the continuations add no variance)";
-    return choice;
+  choice.optimum =
+      base.branch_cost > 0.0 ? std::sqrt((v1 / v0) * (base.shared_cost / base.branch_cost)) : 1.0;
+  // The least time to an error over the counts and starts; an earlier roulette start must win by
+  // kRouletteMargin, since its estimate is noisier than the default's, which the render would otherwise use.
+  const auto best_count = [&](const PilotSums& p) {
+    int best = counts.front();
+    for (const int k : counts)
+      if (time_to_error(k, v0, p) < time_to_error(best, v0, p)) best = k;
+    return best;
+  };
+  const int k_default = best_count(base);
+  double best_time = time_to_error(k_default, v0, base);
+  choice.branches = k_default;
+  for (size_t i = 0; i + 1 < pilots.size(); ++i) {
+    const int k = best_count(pilots[i]);
+    const double t = time_to_error(k, v0, pilots[i]);
+    if (t < kRouletteMargin * best_time) {
+      best_time = t;
+      choice.branches = k;
+      choice.rr_depth = starts[i];
+    }
   }
-  choice.optimum = std::sqrt((v1 / v0) * (c0 / c1));
-  // The power of two nearest the optimum (in ratio), within the cap.
-  int k = 1;
-  while (k * 2 <= static_cast<int>(cap) && choice.optimum >= k * std::sqrt(2.0)) k *= 2;
-  choice.branches = k;
-  choice.predicted_gain = 1.0 / relative_time(k, v0, v1, c0, c1);
+  const double one_path = time_to_error(counts.front(), v0, base);
+  choice.predicted_gain = best_time > 0.0 ? one_path / best_time : 1.0;
   choice.reason = fmt::format(
-      "{} (pilot {:.2f} s: the shared part at most {:.1f} % of the variance, {:.2f} against {:.2f} rays a "
-      "continuation; "
-      "best {:.1f}, predicted {:.2f}x less time to an error)",
-      k, choice.seconds, 100.0 * choice.shared_variance, choice.shared_cost, choice.branch_cost,
-      choice.optimum, choice.predicted_gain);
+      "{} branch{}, roulette from depth {} (pilot {:.2f} s: the shared part at most {:.1f} % of the "
+      "variance, "
+      "{:.2f} against {:.2f} rays a continuation, best count {:.1f}; predicted {:.2f}x less time to an "
+      "error)",
+      choice.branches, choice.branches == 1 ? "" : "es", choice.rr_depth, choice.seconds,
+      100.0 * choice.shared_variance, choice.shared_cost, choice.branch_cost, choice.optimum,
+      choice.predicted_gain);
   return choice;
 }
 
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice) {
   RenderSettings& s = job.settings;
-  if (s.branches != RenderSettings::kAutoBranches) return job;
+  if (s.branches != RenderSettings::kAutoBranches && s.rr_depth != RenderSettings::kAutoRoulette) return job;
   const BranchChoice chosen = choose_branches(scene, job);
+  s.roulette_chosen = s.rr_depth == RenderSettings::kAutoRoulette;
+  s.rr_depth = chosen.rr_depth;
+  if (choice) *choice = chosen;
+  if (s.branches != RenderSettings::kAutoBranches) return job;
   const uint32_t k = static_cast<uint32_t>(chosen.branches);
   if (s.spp % k != 0 || s.sample_begin % k != 0)
     throw std::invalid_argument(
@@ -211,7 +265,6 @@ RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choi
   s.spp /= k;
   s.sample_begin /= k;
   s.branches_chosen = true;
-  if (choice) *choice = chosen;
   return job;
 }
 

@@ -6,8 +6,11 @@
 // pixel) and how much from a continuation, and what each costs in rays. Splitting theory gives the best
 // count: with V0, c0 the shared part's variance and cost and V1, c1 a continuation's, k continuations cost
 // c0 + k c1 and leave V0 + V1 / k, whose product is least at k = sqrt((V1 / V0) (c0 / c1)).
-// The pilot's numbers come from a seed of its own: the choice depends on the scene and the settings, never
-// on the render's seed, thread count or split.
+// The same pilot, run again with roulette from depth 3, weighs that against the default start (5): ending
+// paths early saves their cost and adds variance to V1, so it pays in dark, closed scenes such as the cave
+// and more with branches (their deep bounces are averaged). integrator.rr_depth "auto" (the default) lets it
+// choose. The pilot's numbers come from a seed of its own: the choice depends on the scene and the settings,
+// never on the render's seed, thread count or split.
 
 #include <string>
 
@@ -18,25 +21,27 @@ namespace ochre {
 
 struct BranchChoice {
   int branches = 1;
-  bool piloted = false;        // a pilot ran (else `reason` says why not)
+  int rr_depth = RenderSettings::kDefaultRouletteDepth;  // where Russian roulette starts
+  bool piloted = false;                                  // a pilot ran (else `reason` says why not)
   double shared_variance = 0;  // V0 / (V0 + V1): the share of a path's relative variance the branches share
                                // (V0 at the upper end of its uncertainty)
   double shared_cost = 0;      // c0: rays of the shared part per camera sample (and the sample's own work)
   double branch_cost = 0;      // c1: rays per continuation
-  double optimum = 1;          // sqrt((V1 / V0) (c0 / c1)) before rounding to a power of two
+  double optimum = 1;          // sqrt((V1 / V0) (c0 / c1)) with the default roulette start
   double predicted_gain = 1;   // time to a given error with 1 branch over `branches`, as the pilot predicts
   double seconds = 0;          // the pilot's time
   std::string reason;          // one line for the render's summary
 };
 
-// The branch count for a render of `scene` with `job`'s settings, whose branches are auto and whose spp
-// counts paths per pixel: a power of two that divides spp and leaves at least 4 camera samples, 16 at most.
-// Renders too small for the pilot to be a small part of them, and noise-threshold renders (whose pixels
-// decide from their camera samples), keep 1.
+// The branch count and roulette start for a render of `scene` with `job`'s settings (each chosen where it is
+// auto, as set otherwise; with branches auto spp counts paths per pixel). The count is a power of two that
+// divides spp and leaves at least 4 camera samples, 16 at most. Renders too small for the pilot to be a small
+// part of them, and noise-threshold renders (whose pixels decide from their camera samples), keep 1.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths
-// into camera samples (`choice`, if given, receives the choice); other jobs come back as they are. Throws
+// into camera samples; with rr_depth auto, the chosen start (`choice`, if given, receives the choice); other
+// jobs come back as they are. Throws
 // std::invalid_argument when sample_begin is not a whole number of camera samples.
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice = nullptr);
 

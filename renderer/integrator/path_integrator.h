@@ -62,7 +62,9 @@ class PathIntegrator {
         local_lights_(scene.local_light_selection(settings.light_selection)),
         branches_(static_cast<uint32_t>(std::max(1, settings.branches))),
         max_depth_(static_cast<uint32_t>(std::max(0, settings.max_depth))),
-        rr_depth_(static_cast<uint32_t>(std::max(0, settings.rr_depth))) {}
+        rr_depth_(static_cast<uint32_t>(settings.rr_depth == RenderSettings::kAutoRoulette
+                                            ? RenderSettings::kDefaultRouletteDepth
+                                            : std::max(0, settings.rr_depth))) {}
 
   // What the camera ray's sensor pixel receives for the path's wavelengths: S0 (index 0), and S1..S3 in
   // mode stokes (in the camera's frame: x along the image x axis, y up). Random numbers come from

@@ -162,7 +162,8 @@ PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
 
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
-  if (job.settings.branches == RenderSettings::kAutoBranches) {
+  if (job.settings.branches == RenderSettings::kAutoBranches ||
+      job.settings.rr_depth == RenderSettings::kAutoRoulette) {
     // The pilot's time counts as the render's.
     BranchChoice choice;
     const RenderJob resolved = resolve_branches(scene, job, &choice);
@@ -182,9 +183,9 @@ RenderStats render_range(const Scene& scene, const RenderJob& job, Film& film, c
   if (rect.empty() || !PixelRect{0, 0, s.width, s.height}.contains(rect) || film.width() != rect.width() ||
       film.height() != rect.height())
     throw std::invalid_argument("render_range: the rectangle does not fit the image or the film");
-  if (s.branches == RenderSettings::kAutoBranches)
+  if (s.branches == RenderSettings::kAutoBranches || s.rr_depth == RenderSettings::kAutoRoulette)
     throw std::invalid_argument(
-        "render_range: branches auto: resolve_branches first (sample ranges count camera "
+        "render_range: branches or rr_depth auto: resolve_branches first (sample ranges count camera "
         "samples)");
   if (!film.light_groups().empty() && film.light_groups() != scene.light_groups)
     throw std::invalid_argument("render_range: the film's light groups are not the scene's");

@@ -127,7 +127,13 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
-    s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
+    if (f.has("rr_depth") && f.require("rr_depth").is_string()) {
+      if (f.string("rr_depth", "") != "auto")
+        f.fail("rr_depth", "must be \"auto\" or an integer in [1, 1024]");
+      s.rr_depth = RenderSettings::kAutoRoulette;
+    } else {
+      s.rr_depth = static_cast<int>(f.integer("rr_depth", s.rr_depth, 1, 1024));
+    }
     if (f.has("branches") && f.require("branches").is_string()) {
       if (f.string("branches", "") != "auto") f.fail("branches", "must be \"auto\" or an integer in [1, 64]");
       s.branches = RenderSettings::kAutoBranches;
@@ -432,6 +438,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.polarization) s.polarization = *o.polarization;
   if (o.sampler) s.sampler = *o.sampler;
   if (o.branches) s.branches = *o.branches;
+  if (o.rr_depth) s.rr_depth = *o.rr_depth;
   if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 

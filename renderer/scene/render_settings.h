@@ -72,7 +72,12 @@ struct RenderSettings {
   // maximum (renderer/film/noise_threshold.h). Requires sample_begin 0.
   double noise_threshold = 0.0;
   int max_depth = 8;  // maximum number of scattering events on a path
-  int rr_depth = 5;   // Russian roulette starts after this many bounces (docs/performance.md)
+  // Russian roulette starts after this many bounces (docs/performance.md). kAutoRoulette ("auto", the
+  // default): the pilot of renderer/integrator/branch_choice.h chooses between kRouletteCandidates, and
+  // renders it does not run for start at kDefaultRouletteDepth; resolve_branches turns it into a number.
+  static constexpr int kAutoRoulette = 0;
+  static constexpr int kDefaultRouletteDepth = 5;
+  int rr_depth = kAutoRoulette;
   // Branched path tracing: each camera sample continues from its first vertex along this many paths, averaged
   // (docs/architecture.md#branched-paths). kAutoBranches ("auto", the default): the renderer chooses from a
   // pilot (renderer/integrator/branch_choice.h), and spp counts paths per pixel; resolve_branches turns it
@@ -81,6 +86,7 @@ struct RenderSettings {
   int branches = kAutoBranches;
   static constexpr int kMaxBranches = 64;  // past a few, the first vertex's noise dominates
   bool branches_chosen = false;  // set by resolve_branches: `branches` was chosen for auto, spp converted
+  bool roulette_chosen = false;  // set by resolve_branches: `rr_depth` was chosen for auto
   bool mirror_lights = true;     // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
   LightSelection light_selection = LightSelection::kLocal;
   uint64_t seed = 0;

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli/cli_runner.h"
 #include "cli/exr_bits.h"
@@ -24,6 +25,21 @@ namespace fs = std::filesystem;
 
 std::string scene(const std::string& name) {
   return fmt::format("'{}'", (source_dir() / "scenes/cornell-box" / name).string());
+}
+
+// A copy of the Cornell box (in `dir`) that traces one path per camera sample with roulette from depth 5,
+// whatever the pilot of integrator.branches and rr_depth "auto" would choose: --spp then counts camera
+// samples, so the image of N samples done is the render of --spp N
+// (docs/architecture.md#automatic-branch-count).
+std::string one_path_cornell(const fs::path& dir) {
+  const fs::path copy = dir / "box";
+  fs::copy(source_dir() / "scenes/cornell-box", copy, fs::copy_options::recursive);
+  std::ifstream in(copy / "cornell-box.json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  j["integrator"]["branches"] = 1;
+  j["integrator"]["rr_depth"] = 5;
+  std::ofstream(copy / "cornell-box.json") << j.dump(1);
+  return fmt::format("'{}'", (copy / "cornell-box.json").string());
 }
 
 // All the layers a checkpoint must carry exactly: AOVs, Stokes, spectral bins (per Stokes component).
@@ -89,8 +105,8 @@ TEST(Checkpoint, SigintMidRenderThenResumeGivesTheUninterruptedBits) {
 // checkpoint; resuming (again under a limit, then without) finishes the render.
 TEST(Checkpoint, TimeLimitStopsWithAValidImageAndACheckpoint) {
   const fs::path dir = scratch_dir();
-  const std::string args =
-      "render " + scene("cornell-box.json") + " --resolution 64x64 --spp 4000 -o out.exr --png out.png";
+  const std::string box = one_path_cornell(dir);
+  const std::string args = "render " + box + " --resolution 64x64 --spp 4000 -o out.exr --png out.png";
   const CommandResult stopped = stop_at_a_time_limit(args, dir, "out.checkpoint.exr", 1.5);
   ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
   EXPECT_TRUE(
@@ -101,7 +117,7 @@ TEST(Checkpoint, TimeLimitStopsWithAValidImageAndACheckpoint) {
   const int done = std::stoi(range.substr(2));
   ASSERT_GT(done, 0);
   ASSERT_LT(done, 4000);
-  const CommandResult lower = run_ochre("render " + scene("cornell-box.json") + " --resolution 64x64 --spp " +
+  const CommandResult lower = run_ochre("render " + box + " --resolution 64x64 --spp " +
                                             std::to_string(done) + " -o lower.exr --png lower.png -q",
                                         dir);
   ASSERT_EQ(lower.exit_code, 0) << lower.output;
@@ -141,7 +157,7 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
 TEST(Checkpoint, ResumeKeepsTheCheckpointIntervalAndAddsUpTheRenderingTime) {
   const fs::path dir = scratch_dir();
   const std::string args =
-      "render " + scene("cornell-box.json") + " --resolution 32x16 --spp 100000 -o out.exr -q";
+      "render " + one_path_cornell(dir) + " --resolution 32x16 --spp 100000 -o out.exr -q";
   ASSERT_EQ(
       stop_at_a_time_limit(args + " --checkpoint-interval 1h30m", dir, "out.checkpoint.exr", 1).exit_code, 3);
   auto interval = [&] {
@@ -175,8 +191,10 @@ TEST(Checkpoint, ResumeKeepsTheCheckpointIntervalAndAddsUpTheRenderingTime) {
             3);
   EXPECT_EQ(interval(), "120s");
   // Without an interval the note is empty, and a resume has none.
-  const fs::path other = scratch_dir();
-  ASSERT_EQ(stop_at_a_time_limit(args, other, "out.checkpoint.exr", 1).exit_code, 3);
+  const fs::path other = scratch_dir();  // a new scratch folder: the scene copy goes there too
+  const std::string other_args =
+      "render " + one_path_cornell(other) + " --resolution 32x16 --spp 100000 -o out.exr -q";
+  ASSERT_EQ(stop_at_a_time_limit(other_args, other, "out.checkpoint.exr", 1).exit_code, 3);
   EXPECT_EQ(read_exr(other / "out.checkpoint.exr").string_attributes.at("ochre.checkpoint.interval"), "");
 }
 

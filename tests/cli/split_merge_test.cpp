@@ -333,9 +333,11 @@ TEST(SplitMerge, AutoBranchedPartsMergeToTheSingleRender) {
   const CommandResult single =
       run_ochre("render " + scene_path(kCornell) + " " + args + " -o single.exr", dir);
   ASSERT_EQ(single.exit_code, 0) << single.output;
-  EXPECT_TRUE(contains(single.output, "32 spp x 2 branches (64 paths per pixel, branches auto)"))
+  EXPECT_TRUE(
+      contains(single.output,
+               "32 spp x 2 branches (64 paths per pixel, branches auto), max depth 8, roulette from depth"))
       << single.output;
-  EXPECT_TRUE(contains(single.output, "ochre: branches: 2 (pilot")) << single.output;
+  EXPECT_TRUE(contains(single.output, "ochre: paths: 2 branches, roulette from depth")) << single.output;
   render(dir, kCornell, args + " -q --part 0/2 -o p0.exr");
   render(dir, kCornell, args + " -q --sample-range 16:24 -o p1.exr --threads 1");
   render(dir, kCornell, args + " -q --sample-range 24:32 -o p2.exr");

@@ -54,9 +54,11 @@ void print_summary(const Scene& scene, const RenderJob& job) {
                               ? fmt::format("noise threshold {}, at most {} spp", s.noise_threshold, s.spp)
                               : fmt::format("{} spp", s.spp);
   std::cerr << fmt::format(
-      "ochre: {}: {}x{}, {}{}, max depth {}, {} meshes ({} triangles), {} lights, seed {}, {} sampler\n",
-      scene.file.filename().string(), s.width, s.height, spp, branches, s.max_depth, scene.meshes.size(),
-      triangles, scene.lights.size(), s.seed, kSamplerKinds.name(s.sampler));
+      "ochre: {}: {}x{}, {}{}, max depth {}, roulette from depth {}, {} meshes ({} triangles), {} lights, "
+      "seed {}, "
+      "{} sampler\n",
+      scene.file.filename().string(), s.width, s.height, spp, branches, s.max_depth, s.rr_depth,
+      scene.meshes.size(), triangles, scene.lights.size(), s.seed, kSamplerKinds.name(s.sampler));
   std::cerr << fmt::format(
       "ochre: BVH built in {:.2f} s, {:.1f} MB ({:.0f} bytes per triangle incl. vertices)\n",
       scene.accel->build_seconds(), scene.accel->memory_bytes() / 1e6,
@@ -361,11 +363,11 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, job);
   }
-  // integrator.branches auto: chosen now, for every frame, part and resumed piece alike.
+  // integrator.branches and rr_depth auto: chosen now, for every frame, part and resumed piece alike.
   BranchChoice branch_choice;
   job = resolve_branches(*scene, job, &branch_choice);
-  if (!command.quiet && job.settings.branches_chosen)
-    std::cerr << fmt::format("ochre: branches: {}\n", branch_choice.reason);
+  if (!command.quiet && (job.settings.branches_chosen || job.settings.roulette_chosen))
+    std::cerr << fmt::format("ochre: paths: {}\n", branch_choice.reason);
   if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
   if (command.still_frame) {
     // One frame of a sequence, rendered like a still (the frame is part of the render's identity).

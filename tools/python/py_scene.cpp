@@ -435,7 +435,10 @@ py::dict settings_of(const PyScene& p) {
   d["height"] = s.height;
   d["spp"] = s.spp;
   d["max_depth"] = s.max_depth;
-  d["rr_depth"] = s.rr_depth;
+  if (s.rr_depth == RenderSettings::kAutoRoulette)
+    d["rr_depth"] = "auto";
+  else
+    d["rr_depth"] = s.rr_depth;
   if (s.branches == RenderSettings::kAutoBranches)
     d["branches"] = "auto";
   else

@@ -67,6 +67,7 @@ TEST(BranchChoice, SameChoiceForAnySeedAndThreadCount) {
   scene.job.settings.seed = 12345;
   const BranchChoice two = choose_branches(*scene.scene, scene.job);
   EXPECT_EQ(one.branches, two.branches);
+  EXPECT_EQ(one.rr_depth, two.rr_depth);
   EXPECT_EQ(one.shared_variance, two.shared_variance);  // the same sums, in the same order
   EXPECT_EQ(one.shared_cost, two.shared_cost);
   EXPECT_EQ(one.branch_cost, two.branch_cost);
@@ -89,8 +90,31 @@ TEST(BranchChoice, CountsThatDivideTheSamples) {
   scene.job.settings.noise_threshold = 0.01;
   EXPECT_EQ(choose_branches(*scene.scene, scene.job).branches, 1);
   EXPECT_FALSE(choose_branches(*scene.scene, scene.job).piloted);
-  const LoadedScene small = cornell_box(16, 64);  // 16 k paths: less than 20 pilots
+  const LoadedScene small = cornell_box(16, 64);  // 16 k paths: less than 10 pilots
   EXPECT_FALSE(choose_branches(*small.scene, small.job).piloted);
+}
+
+// rr_depth auto: the pilot weighs roulette from depth 3 against 5 where paths reach them; a number is kept.
+TEST(BranchChoice, RouletteStartIsChosenOrKept) {
+  LoadedScene scene = cornell_box(128, 64);
+  EXPECT_EQ(scene.job.settings.rr_depth, RenderSettings::kAutoRoulette);  // the default
+  const BranchChoice automatic = choose_branches(*scene.scene, scene.job);
+  print("cornell box, roulette auto", automatic);
+  EXPECT_TRUE(automatic.piloted);
+  EXPECT_TRUE(automatic.rr_depth == 3 || automatic.rr_depth == 5) << automatic.rr_depth;
+  EXPECT_GE(automatic.predicted_gain, 1.0);
+  const RenderJob resolved = resolve_branches(*scene.scene, scene.job);
+  EXPECT_EQ(resolved.settings.rr_depth, automatic.rr_depth);
+  EXPECT_TRUE(resolved.settings.roulette_chosen);
+  // Paths of at most 3 bounces: only the default start is a candidate.
+  scene.job.settings.max_depth = 3;
+  EXPECT_EQ(choose_branches(*scene.scene, scene.job).rr_depth, RenderSettings::kDefaultRouletteDepth);
+  scene.job.settings.max_depth = 8;
+  scene.job.settings.rr_depth = 7;
+  const RenderJob kept = resolve_branches(*scene.scene, scene.job);
+  EXPECT_EQ(kept.settings.rr_depth, 7);
+  EXPECT_FALSE(kept.settings.roulette_chosen);
+  EXPECT_TRUE(kept.settings.branches_chosen);
 }
 
 // resolve_branches turns paths into camera samples; an explicit count is kept with its meaning.

@@ -24,7 +24,7 @@ Writes OUT (32-bit float linear RGB EXR, ZIP = lossless) and OUT with .json (the
 the wall and CPU time of the render call). --debug-cycles makes Cycles log 'Render time (without
 synchronization)', which run_benchmark.py reads.
 """
-import argparse, json, math, os, sys, time
+import argparse, json, math, os, subprocess, sys, time
 import bpy
 import numpy as np
 from mathutils import Matrix, Vector
@@ -39,12 +39,23 @@ ap.add_argument('--res', default='', help='WxH; default: the scene film resoluti
 ap.add_argument('--threads', type=int, default=2)
 ap.add_argument('--adaptive-threshold', type=float, default=0.0,
                 help='Cycles adaptive sampling with this noise threshold (0: off, every pixel --spp samples)')
+ap.add_argument('--ochre', default=os.path.join(ROOT, 'build/bin/ochre'),
+                help='ochre binary: writes meshes whose displacement is procedural (ochre export-mesh)')
 ap.add_argument('--out', required=True)
 args = ap.parse_args(sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else [])
 
 scene_path = os.path.abspath(args.scene)
 scene_dir = os.path.dirname(scene_path)
 S = json.load(open(scene_path))
+
+
+# The flame presets of docs/lights.md (radius in m, CCT in K, intensity in cd) and the Blender point-light power
+# per candela that gives an image as bright as ochre's (matched on the cave pair, docs/performance.md).
+FLAME_PRESETS = {'torch': dict(radius=0.08, cct=1700, intensity=5.0),
+                 'torch_juniper': dict(radius=0.08, cct=1700, intensity=5.0),
+                 'grease_lamp': dict(radius=0.015, cct=1850, intensity=1.0),
+                 'fireplace': dict(radius=0.25, cct=1650, intensity=12.0)}
+FLAME_WATTS_PER_CANDELA = 0.94 * 4 * math.pi  # 4 pi gave a Cycles image 1/0.94 as bright (16 spp means)
 
 
 def asset(name):
@@ -214,6 +225,36 @@ def load_obj(path, fan):  # vertices, faces (fan-triangulated as Mitsuba and och
     return verts, faces, uvs, face_uvs
 
 
+def load_ply(path):  # the binary PLY of `ochre export-mesh`: vertices (world), normals, faces (triangles)
+    with open(path, 'rb') as f:
+        header = []
+        while not header or header[-1] != 'end_header':
+            header.append(f.readline().decode('ascii').strip())
+        body = f.read()
+    counts = {w[1]: int(w[2]) for w in (h.split() for h in header) if w[0] == 'element'}
+    props = [h.split()[-1] for h in header if h.startswith('property float')]
+    if 'red' in ' '.join(header):
+        raise SystemExit(f'{path}: vertex colours are not read by the Cycles harness')
+    nv, nf = counts['vertex'], counts['face']
+    vertex = np.frombuffer(body, dtype='<f4', count=nv * len(props)).reshape(nv, len(props))
+    faces = np.frombuffer(body, dtype=np.dtype([('n', 'u1'), ('i', '<i4', (3,))]), count=nf,
+                          offset=vertex.nbytes)
+    if np.any(faces['n'] != 3):
+        raise SystemExit(f'{path}: only triangles are read by the Cycles harness')
+    column = {name: i for i, name in enumerate(props)}
+    normals = vertex[:, [column['nx'], column['ny'], column['nz']]] if 'nx' in column else None
+    return vertex[:, :3], faces['i'], normals
+
+
+def exported_mesh(name):  # a mesh as ochre renders it (procedural displacement), cached beside --out
+    ply = os.path.join(os.path.dirname(os.path.abspath(args.out)), f'{os.path.basename(scene_path)}.{name}.ply')
+    if not os.path.exists(ply):
+        tmp = ply + '.tmp.ply'
+        subprocess.run([args.ochre, 'export-mesh', scene_path, '--shape', name, '-o', tmp, '-q'], check=True)
+        os.replace(tmp, ply)
+    return load_ply(ply)
+
+
 def add_object(name, verts, faces, uvs, face_uvs, material, xform):
     me = bpy.data.meshes.new(name)
     me.from_pydata([to_blender(xform @ Vector(v)) for v in verts], [], faces)
@@ -234,7 +275,17 @@ for i, sh in enumerate(S['shapes']):
     name = sh.get('name', f'shape{i}')
     xform = ochre_transform(sh.get('transform'))
     mat = materials[sh['material']]
-    if sh['type'] == 'mesh':
+    if sh['type'] == 'mesh' and 'noise' in sh.get('displacement', {}):
+        # ochre's procedural displacement has no Blender counterpart: the mesh as ochre renders it, in world
+        # coordinates, with ochre's shading normals as custom normals.
+        verts, faces, normals = exported_mesh(name)
+        ob = add_object(name, verts.tolist(), faces.tolist(), [], [], mat, Matrix.Identity(4))
+        for p in ob.data.polygons:
+            p.use_smooth = True
+        if normals is not None:
+            ob.data.use_auto_smooth = True
+            ob.data.normals_split_custom_set_from_vertices([tuple(to_blender(Vector(n))) for n in normals])
+    elif sh['type'] == 'mesh':
         subdiv = sh.get('subdivision')
         verts, faces, uvs, fuv = load_obj(asset(sh['file']), fan=subdiv is None)
         ob = add_object(name, verts, faces, uvs, fuv, mat, xform)
@@ -309,6 +360,21 @@ for i, li in enumerate(S.get('lights', [])):
         ob.matrix_world = Matrix.Translation(to_blender(pos)) @ \
             to_blender(axis).to_track_quat('-Z', 'Y').to_matrix().to_4x4()
         scene.collection.objects.link(ob)
+    elif li['type'] == 'flame':
+        # A sphere light with a blackbody colour (docs/lights.md); its flicker is off in a still. Cycles' point
+        # light with the flame's radius; the power is matched by hand (FLAME_WATTS_PER_CANDELA), as the rock's
+        # spot, so that both renderers' images are alike in brightness.
+        preset = FLAME_PRESETS[li.get('preset', 'torch')]
+        lamp = bpy.data.lights.new(f'flame{i}', 'POINT')
+        lamp.shadow_soft_size = li.get('radius', preset['radius'])
+        lamp.use_nodes = True
+        bb = lamp.node_tree.nodes.new('ShaderNodeBlackbody')
+        bb.inputs['Temperature'].default_value = li.get('cct', preset['cct'])
+        lamp.node_tree.links.new(bb.outputs[0], lamp.node_tree.nodes['Emission'].inputs['Color'])
+        lamp.energy = FLAME_WATTS_PER_CANDELA * li.get('intensity', preset['intensity']) * li.get('scale', 1.0)
+        ob = bpy.data.objects.new(f'flame{i}', lamp)
+        ob.matrix_world = Matrix.Translation(to_blender(Vector(li['position'])))
+        scene.collection.objects.link(ob)
     else:
         raise SystemExit(f'{scene_path}: lights[{i}].type {li["type"]} not supported by the Cycles harness')
 
@@ -317,7 +383,7 @@ C = S['camera']
 w, h = S['film']['resolution']
 if args.res:
     w, h = (int(x) for x in args.res.split('x'))
-eye, target, up = to_blender(C['eye']), to_blender(C['target']), to_blender(C['up'])
+eye, target, up = to_blender(C['eye']), to_blender(C['target']), to_blender(C.get('up', [0, 1, 0]))
 fwd = (target - eye).normalized()
 right = fwd.cross(up).normalized()
 cam = bpy.data.cameras.new('cam')

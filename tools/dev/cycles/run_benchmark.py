@@ -121,7 +121,8 @@ class Cycles:
     def render(self, spp, seed, exr, threshold=0.0):
         cmd = [self.args.blender, '-b', '--factory-startup', '--debug-cycles', '--python',
                os.path.join(HERE, 'make_and_render.py'), '--', '--scene', self.scene, '--spp', str(spp),
-               '--seed', str(seed), '--threads', str(self.args.threads), '--out', exr]
+               '--seed', str(seed), '--threads', str(self.args.threads), '--out', exr,
+               '--ochre', os.path.join(getattr(self.args, 'ochre_bin', os.path.join(ROOT, 'build/bin')), 'ochre')]
         if threshold:
             cmd += ['--adaptive-threshold', repr(threshold)]
         p = subprocess.run(locked(cmd, self.args.lock), capture_output=True, text=True)
