@@ -28,7 +28,7 @@ constexpr uint64_t kPilotSeed = 0x70696c6f74ull;  // "pilot"
 // start it weighs): it then costs at most a tenth of the render.
 constexpr double kMinRenderToPilot = 10.0;
 constexpr int kMaxAutoBranches = 16;
-constexpr double kUncertainties = 1.0;     // how far above its estimate V0 is taken
+constexpr double kUncertainties = 1.0;  // how far above its estimate V0 is taken
 // The earlier roulette start the pilot weighs against the default, and by how much it must win.
 constexpr int kEarlyRoulette = 3;
 constexpr double kRouletteMargin = 0.97;
@@ -175,11 +175,11 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
     return choice;
   };
   if (!auto_branches && !auto_roulette) return plain("as set");
-  if (s.noise_threshold > 0.0)
-    return plain("a noise-threshold render decides per pixel from its camera samples");
-  // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples.
+  // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples;
+  // one in a noise-threshold render, whose pixels decide from their own camera samples.
   std::vector<int> counts{choice.branches};
-  if (auto_branches) {
+  const bool threshold = s.noise_threshold > 0.0;
+  if (auto_branches && !threshold) {
     uint32_t cap = std::min<uint32_t>(kMaxAutoBranches, s.spp / kMinCameraSamples);
     cap = std::min(cap, power_of_two_dividing(s.spp));
     if (s.sample_begin > 0) cap = std::min(cap, power_of_two_dividing(s.sample_begin));
@@ -190,8 +190,9 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
   std::vector<int> starts{choice.rr_depth};
   if (auto_roulette && kEarlyRoulette < s.max_depth) starts.insert(starts.begin(), kEarlyRoulette);
   if (counts.size() == 1 && starts.size() == 1)
-    return plain(
-        fmt::format("{} paths per pixel: fewer than {} camera samples of 2", s.spp, kMinCameraSamples));
+    return plain(threshold ? "a noise-threshold render decides per pixel from its camera samples"
+                           : fmt::format("{} paths per pixel: fewer than {} camera samples of 2", s.spp,
+                                         kMinCameraSamples));
   const std::vector<GridPixel> grid = pilot_grid(s.width, s.height);
   const double render_paths = double(s.width) * s.height * s.spp;
   const double pilot_paths = 2.0 * kPilotSamples * double(grid.size()) * double(starts.size());

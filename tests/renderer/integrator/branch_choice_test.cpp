@@ -87,9 +87,11 @@ TEST(BranchChoice, CountsThatDivideTheSamples) {
     }
   }
   scene.job.settings.spp = 64;
-  scene.job.settings.noise_threshold = 0.01;
+  scene.job.settings.noise_threshold = 0.01;  // one branch; the roulette start is still weighed
   EXPECT_EQ(choose_branches(*scene.scene, scene.job).branches, 1);
+  scene.job.settings.max_depth = 3;  // and without an earlier start to weigh, no pilot
   EXPECT_FALSE(choose_branches(*scene.scene, scene.job).piloted);
+  scene.job.settings.max_depth = 8;
   const LoadedScene small = cornell_box(16, 64);  // 16 k paths: less than 10 pilots
   EXPECT_FALSE(choose_branches(*small.scene, small.job).piloted);
 }

@@ -8,9 +8,11 @@ this once per render. Read from the ochre scene: camera (perspective: eye, targe
 shorter axis), film resolution, integrator max_depth (ochre counts scattering events, Cycles bounces
 after the first: bounces = max_depth - 1), meshes (OBJ, fan-triangulated or kept as polygons for
 Catmull-Clark subdivision, UVs, transforms), planes and spheres, `subdivision` and `displacement`
-(Blender's Subdivision Surface and Displace modifiers), lambert (constant, [r,g,b], spectrum file or
-texture), the add-of-lambert-and-emission light material, conductors (metal, roughness), an HDR
-environment (scale, rotation) and spot lights.
+(Blender's Subdivision Surface and Displace modifiers; a procedural `displacement.noise`, which Blender has
+no counterpart for, through `ochre export-mesh` (--ochre): the triangles ochre renders, with its shading
+normals), lambert (constant, [r,g,b], spectrum file or texture), the add-of-lambert-and-emission light
+material, conductors (metal, roughness), an HDR environment (scale, rotation), spot lights and flame lights
+(a point light of the flame's radius and blackbody colour, power matched by hand).
 
 Spectra become linear Rec.709 (Blender's scene-linear space) with the CIE 1931 2-degree observer:
 an emitted spectrum E gives M int(E xyz) / int(ybar) (what a spectral renderer writes for a pixel that
