@@ -63,7 +63,9 @@ struct PixelPilot {
   double shared_cost = 0, branch_cost = 0;
 };
 
-template <class Sampler>
+// Independent numbers whatever the render's sampler: a stratified sampler's samples and branches are
+// anti-correlated (the two branches of a Sobol sample fall in opposite halves of every dimension), which
+// would bias the variance estimates.
 PixelPilot pilot_pixel(const Scene& scene, const RenderSettings& s, const PathIntegrator& integrator,
                        const GridPixel& pixel) {
   thread_local LobeArena arena;
@@ -73,7 +75,7 @@ PixelPilot pilot_pixel(const Scene& scene, const RenderSettings& s, const PathIn
   PixelPilot out;
   for (uint32_t i = 0; i < kPilotSamples; ++i) {
     const auto [sampler, lambda, ray] =
-        camera_sample<Sampler>(scene, kPilotSeed, pixel.x, pixel.y, s.width, i);
+        camera_sample<IndependentSampler>(scene, kPilotSeed, pixel.x, pixel.y, s.width, i);
     const BranchPilotSample p = integrator.pilot_sample(ray, cone, lambda, sampler, arena);
     const XYZ shared = sensor_value(sensor, p.shared, lambda);
     const XYZ a = sensor_value(sensor, p.branch[0], lambda), b = sensor_value(sensor, p.branch[1], lambda);
@@ -128,12 +130,8 @@ PilotSums run_pilot(const Scene& scene, const RenderJob& job, const std::vector<
   {
     const int threads = s.threads > 0 ? s.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
-    // Independent numbers whatever the render's sampler: a stratified sampler's samples and branches are
-    // anti-correlated (the two branches of a Sobol sample fall in opposite halves of every dimension), which
-    // would bias the variance estimates.
-    tbb::parallel_for(size_t(0), grid.size(), [&](size_t i) {
-      pixels[i] = pilot_pixel<IndependentSampler>(scene, s, integrator, grid[i]);
-    });
+    tbb::parallel_for(size_t(0), grid.size(),
+                      [&](size_t i) { pixels[i] = pilot_pixel(scene, s, integrator, grid[i]); });
   }
   // Summed in pixel order: the same figures for any thread count.
   PilotSums sum;

@@ -28,7 +28,7 @@ struct BranchChoice {
   double shared_cost = 0;      // c0: rays of the shared part per camera sample (and the sample's own work)
   double branch_cost = 0;      // c1: rays per continuation
   double optimum = 1;          // sqrt((V1 / V0) (c0 / c1)) with the default roulette start
-  double predicted_gain = 1;   // time to a given error with 1 branch over `branches`, as the pilot predicts
+  double predicted_gain = 1;   // time to a given error with 1 branch from the default start over the choice
   double seconds = 0;          // the pilot's time
   std::string reason;          // one line for the render's summary
 };
@@ -36,13 +36,14 @@ struct BranchChoice {
 // The branch count and roulette start for a render of `scene` with `job`'s settings (each chosen where it is
 // auto, as set otherwise; with branches auto spp counts paths per pixel). The count is a power of two that
 // divides spp and leaves at least 4 camera samples, 16 at most. Renders too small for the pilot to be a small
-// part of them, and noise-threshold renders (whose pixels decide from their camera samples), keep 1.
+// part of them keep 1 branch and the default start; noise-threshold renders (whose pixels decide from their
+// camera samples) keep 1 branch.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths
 // into camera samples; with rr_depth auto, the chosen start (`choice`, if given, receives the choice); other
-// jobs come back as they are. Throws
-// std::invalid_argument when sample_begin is not a whole number of camera samples.
+// jobs come back as they are. Throws std::invalid_argument when sample_begin is not a whole number of camera
+// samples.
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice = nullptr);
 
 }  // namespace ochre

@@ -459,35 +459,34 @@ BranchPilotSample PathIntegrator::pilot_trace(const Ray& camera_ray, const RayCo
   return out;
 }
 
+template <class Traced>
+auto PathIntegrator::with_throughput(const Traced& traced) const {
+  switch (mode_) {
+    case PolarizationMode::kIntensity:
+      return traced.template operator()<IntensityThroughput>();
+    case PolarizationMode::kStokes:
+      return traced.template operator()<StokesThroughput>();
+    case PolarizationMode::kOff:
+      break;
+  }
+  return traced.template operator()<UnpolarizedThroughput>();
+}
+
 template <class Sampler>
 BranchPilotSample PathIntegrator::pilot_sample(const Ray& ray, const RayCone& cone,
                                                const SampledWavelengths& lambda, const Sampler& sampler,
                                                LobeArena& arena) const {
-  switch (mode_) {
-    case PolarizationMode::kOff:
-      return pilot_trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena);
-    case PolarizationMode::kIntensity:
-      return pilot_trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena);
-    case PolarizationMode::kStokes:
-      return pilot_trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena);
-  }
-  return {};
+  return with_throughput(
+      [&]<class T>() { return pilot_trace<Sampler, T>(ray, cone, lambda, sampler, arena); });
 }
 
 template <class Sampler>
 SensorStokes PathIntegrator::radiance(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                                       const Sampler& sampler, LobeArena& arena, PathStats& stats,
                                       FirstHit* first_hit, SampledSpectrum* groups) const {
-  switch (mode_) {
-    case PolarizationMode::kOff:
-      return trace<Sampler, UnpolarizedThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit,
-                                                   groups);
-    case PolarizationMode::kIntensity:
-      return trace<Sampler, IntensityThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
-    case PolarizationMode::kStokes:
-      return trace<Sampler, StokesThroughput>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
-  }
-  return {};
+  return with_throughput([&]<class T>() {
+    return trace<Sampler, T>(ray, cone, lambda, sampler, arena, stats, first_hit, groups);
+  });
 }
 
 template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const SampledWavelengths&,

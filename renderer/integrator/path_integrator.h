@@ -95,6 +95,9 @@ class PathIntegrator {
   template <class Sampler, class Throughput>
   bool scatter(PathState<Throughput>& s, const struct PathVertex& v, uint32_t depth,
                const SampledWavelengths& lambda, const Sampler& sampler) const;
+  // traced.operator()<T>() for the throughput policy T of the polarization mode (path_throughput.h).
+  template <class Traced>
+  auto with_throughput(const Traced& traced) const;
   // A path's state as the camera ray leaves (the camera's analyzer and Stokes frame).
   template <class Throughput>
   PathState<Throughput> camera_state(const Ray& camera_ray, SampledSpectrum* groups) const;
