@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "renderer/film/noise_threshold.h"
 #include "renderer/integrator/camera_sample.h"
 #include "renderer/integrator/path_integrator.h"
 #include "renderer/integrator/render.h"
@@ -173,12 +174,14 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
     return choice;
   };
   if (!auto_branches && !auto_roulette) return plain("as set");
-  // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples;
-  // one in a noise-threshold render, whose pixels decide from their own camera samples.
+  // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples.
+  // A pixel of a noise-threshold render decides at 16, 32, ... camera samples
+  // (renderer/film/noise_threshold.h): its counts leave it at least one decision before the maximum.
   std::vector<int> counts{choice.branches};
   const bool threshold = s.noise_threshold > 0.0;
-  if (auto_branches && !threshold) {
-    uint32_t cap = std::min<uint32_t>(kMaxAutoBranches, s.spp / kMinCameraSamples);
+  const uint32_t min_camera_samples = threshold ? 2 * kFirstNoiseDecision : kMinCameraSamples;
+  if (auto_branches) {
+    uint32_t cap = std::min<uint32_t>(kMaxAutoBranches, s.spp / min_camera_samples);
     cap = std::min(cap, power_of_two_dividing(s.spp));
     if (s.sample_begin > 0) cap = std::min(cap, power_of_two_dividing(s.sample_begin));
     for (uint32_t k = 2; k <= cap; k *= 2) counts.push_back(static_cast<int>(k));
@@ -188,9 +191,9 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
   std::vector<int> starts{choice.rr_depth};
   if (auto_roulette && kEarlyRoulette < s.max_depth) starts.insert(starts.begin(), kEarlyRoulette);
   if (counts.size() == 1 && starts.size() == 1)
-    return plain(threshold ? "a noise-threshold render decides per pixel from its camera samples"
-                           : fmt::format("{} paths per pixel: fewer than {} camera samples of 2", s.spp,
-                                         kMinCameraSamples));
+    return plain(fmt::format("{} paths per pixel: fewer than {} camera samples of 2{}", s.spp,
+                             min_camera_samples,
+                             threshold ? " (a noise threshold's first decision and one more)" : ""));
   const std::vector<GridPixel> grid = pilot_grid(s.width, s.height);
   const double render_paths = double(s.width) * s.height * s.spp;
   const double pilot_paths = 2.0 * kPilotSamples * double(grid.size()) * double(starts.size());

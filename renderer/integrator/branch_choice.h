@@ -35,9 +35,9 @@ struct BranchChoice {
 
 // The branch count and roulette start for a render of `scene` with `job`'s settings (each chosen where it is
 // auto, as set otherwise; with branches auto spp counts paths per pixel). The count is a power of two that
-// divides spp and leaves at least 4 camera samples, 16 at most. Renders too small for the pilot to be a small
-// part of them keep 1 branch and the default start; noise-threshold renders (whose pixels decide from their
-// camera samples) keep 1 branch.
+// divides spp and leaves at least 4 camera samples, 16 at most; in a noise-threshold render at least 32 (its
+// pixels decide at 16, 32, ... camera samples: one decision before the maximum). Renders too small for the
+// pilot to be a small part of them keep 1 branch and the default start.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths

@@ -41,18 +41,30 @@ TEST(NoiseThreshold, PixelsStopAtPowersOfTwoAndTheImageSaysWhere) {
   const CommandResult r =
       run_ochre("render " + cornell() + " --resolution 24x24 --spp 512 --noise-threshold 0.05 -o a.exr", dir);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(contains(r.output, "24x24, noise threshold 0.05, at most 512 spp")) << r.output;
-  EXPECT_TRUE(contains(r.output, "ochre: noise threshold 0.05: ")) << r.output;
-  EXPECT_TRUE(contains(r.output, "512 (the maximum): ")) << r.output;
   const ExrImage image = read_exr(dir / "a.exr");
   EXPECT_EQ(image.string_attributes.at("ochre.noiseThreshold"), "0.05");
+  // The renderer branches the box's paths (2 from its pilot): pixels then count camera samples of k paths,
+  // and k leaves at least 32 of them (docs/architecture.md#automatic-branch-count).
+  const size_t chosen = r.output.find("ochre: paths: ");
+  ASSERT_NE(chosen, std::string::npos) << r.output;
+  const int k = std::stoi(r.output.substr(chosen + 14));
+  EXPECT_EQ(k, 2) << r.output;
+  const int most = 512 / k;
+  EXPECT_TRUE(contains(r.output, fmt::format("24x24, noise threshold 0.05, at most {} spp x {} branches (512 "
+                                             "paths per pixel",
+                                             most, k)))
+      << r.output;
+  EXPECT_TRUE(contains(r.output, "ochre: noise threshold 0.05: ")) << r.output;
+  EXPECT_TRUE(contains(r.output, fmt::format("camera samples of {} paths per pixel on average", k)))
+      << r.output;
+  EXPECT_TRUE(contains(r.output, fmt::format("{} (the maximum): ", most))) << r.output;
   const std::vector<float>& samples = exr_channel(image, "samples.Y");
   double total = 0;
   int early = 0;
   for (float n : samples) {
-    EXPECT_TRUE(n == 512.0f || (is_power_of_two_from_16(n) && n < 512.0f)) << n;
+    EXPECT_TRUE(n == float(most) || (is_power_of_two_from_16(n) && n < float(most))) << n;
     total += n;
-    early += n < 512.0f;
+    early += n < float(most);
   }
   EXPECT_EQ(image.string_attributes.at("ochre.samples"), fmt::format("{}", static_cast<uint64_t>(total)));
   // The box has both: the light and dark corners stop early, the lit walls need more.

@@ -98,10 +98,15 @@ void print_sample_counts(const Film& film, const RenderSettings& s) {
   for (const auto& [count, n] : pixels_at)
     shares += fmt::format("{}{}{}: {:.1f} %", shares.empty() ? "" : ", ", count,
                           count == s.spp ? " (the maximum)" : "", 100.0 * n / pixels);
+  // With branches a pixel counts camera samples, each the mean of `branches` paths.
+  const std::string samples =
+      s.branches > 1 ? fmt::format("camera samples of {} paths", s.branches) : std::string("samples");
+  const std::string paths =
+      s.branches > 1 ? fmt::format(" ({:.1f} paths)", s.branches * total / pixels) : std::string();
   std::cerr << fmt::format(
-      "ochre: noise threshold {}: {:.1f} samples per pixel on average (at most {}); "
-      "pixels by samples taken: {}\n",
-      s.noise_threshold, total / pixels, s.spp, shares);
+      "ochre: noise threshold {}: {:.1f} {} per pixel on average{} (at most {}); pixels by {} taken: {}\n",
+      s.noise_threshold, total / pixels, samples, paths, s.spp, s.branches > 1 ? "camera samples" : "samples",
+      shares);
 }
 
 // Samples the image does not hold as rendered: said even with -q (the image is not what the scene gives).

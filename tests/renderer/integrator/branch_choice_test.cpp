@@ -74,7 +74,8 @@ TEST(BranchChoice, SameChoiceForAnySeedAndThreadCount) {
   EXPECT_EQ(one.optimum, two.optimum);
 }
 
-// k divides spp and leaves 4 camera samples; small renders and noise-threshold renders keep one path.
+// k divides spp and leaves 4 camera samples (32 in a noise-threshold render: a decision before the maximum);
+// small renders keep one path.
 TEST(BranchChoice, CountsThatDivideTheSamples) {
   LoadedScene scene = cornell_box(128, 64);
   for (const uint32_t spp : {6u, 7u, 8u, 12u, 24u, 64u}) {
@@ -86,10 +87,18 @@ TEST(BranchChoice, CountsThatDivideTheSamples) {
       EXPECT_EQ(c.branches, 1) << spp;
     }
   }
-  scene.job.settings.spp = 64;
-  scene.job.settings.noise_threshold = 0.01;  // one branch; the roulette start is still weighed
-  EXPECT_EQ(choose_branches(*scene.scene, scene.job).branches, 1);
-  scene.job.settings.max_depth = 3;  // and without an earlier start to weigh, no pilot
+  scene.job.settings.noise_threshold = 0.01;
+  for (const uint32_t spp : {64u, 128u, 256u}) {
+    scene.job.settings.spp = spp;
+    const BranchChoice c = choose_branches(*scene.scene, scene.job);
+    EXPECT_TRUE(c.piloted) << spp;
+    EXPECT_EQ(spp % c.branches, 0u) << spp;
+    EXPECT_GE(spp / c.branches, 32u) << spp;  // the first decision, at 16, comes before the maximum
+  }
+  scene.job.settings.spp = 256;
+  EXPECT_GT(choose_branches(*scene.scene, scene.job).branches, 1);  // as without a threshold (above)
+  scene.job.settings.spp = 32;
+  scene.job.settings.max_depth = 3;  // one branch at most and no earlier start to weigh: no pilot
   EXPECT_FALSE(choose_branches(*scene.scene, scene.job).piloted);
   scene.job.settings.max_depth = 8;
   const LoadedScene small = cornell_box(16, 64);  // 16 k paths: less than 10 pilots
