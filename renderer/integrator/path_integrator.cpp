@@ -285,10 +285,14 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
     return false;
   }
 
+  const Mesh& mesh = scene_.meshes[hit->mesh];
+  // A path's last vertex only adds what it emits: where its material cannot emit, neither the hit's
+  // geometry nor its material is needed (the same image; most paths of a dark, closed scene such as the
+  // cave reach max_depth, so this is about one shading point in five there).
+  if (depth >= max_depth_ && !scene_.materials[mesh.material]->facts().is_emissive) return false;
   v.sp = surface_point(scene_.meshes, *hit, s.ray);
   v.mesh = hit->mesh;
   const Vec3 wo = -s.ray.dir;
-  const Mesh& mesh = scene_.meshes[hit->mesh];
   arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
   s.path_length += hit->t * length(s.ray.dir);
   ShadingContext ctx = shading_context(v.sp, scene_.origin.to_float(), lambda, scene_.textures.get(), &mesh);
@@ -337,6 +341,9 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
 template <class Sampler, class T>
 bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t depth,
                              const SampledWavelengths& lambda, const Sampler& sampler) const {
+  // The vertex the bounce would reach adds only emission it finds (arrive): none in a scene that ray hits
+  // cannot find (the same image, a ray and a BSDF sample fewer per path that reaches max_depth).
+  if (depth + 1 >= max_depth_ && !last_bounce_finds_light_) return false;
   const Vec3 wo = -s.ray.dir;
   auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
                              sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);

@@ -60,6 +60,7 @@ class PathIntegrator {
       : scene_(scene),
         mode_(mode),
         local_lights_(scene.local_light_selection(settings.light_selection)),
+        last_bounce_finds_light_(scene.rays_find_emission()),
         branches_(static_cast<uint32_t>(std::max(1, settings.branches))),
         max_depth_(static_cast<uint32_t>(std::max(0, settings.max_depth))),
         rr_depth_(static_cast<uint32_t>(settings.rr_depth == RenderSettings::kAutoRoulette
@@ -144,7 +145,10 @@ class PathIntegrator {
 
   const Scene& scene_;
   PolarizationMode mode_;
-  bool local_lights_;   // lights chosen per shading point (Scene::light_pmfs)
+  bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
+  // A ray from a path's last vertex can find light (Scene::rays_find_emission): else that bounce is not
+  // taken.
+  bool last_bounce_finds_light_;
   uint32_t branches_;   // continuations of each camera sample from its first vertex (integrator.branches)
   uint32_t max_depth_;  // scattering events a path may have (integrator.max_depth)
   uint32_t rr_depth_;   // bounces before Russian roulette (integrator.rr_depth)

@@ -27,6 +27,12 @@ void Scene::build_lights(bool mirror_lights_on) {
   build_light_groups();
 }
 
+bool Scene::rays_find_emission() const {
+  if (environment) return true;
+  return std::any_of(meshes.begin(), meshes.end(),
+                     [&](const Mesh& mesh) { return materials[mesh.material]->facts().is_emissive; });
+}
+
 void Scene::build_light_groups() {
   light_groups.clear();
   light_group_of.assign(lights.size(), -1);

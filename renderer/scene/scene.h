@@ -87,6 +87,10 @@ struct Scene {
   bool polarizing_filters = false;
   PolarizationSignificance polarization_significance;  // estimated at load when a material polarizes
   bool needs_uv = false;
+  // Whether a ray can find light by hitting something (an environment, or a mesh whose material may emit):
+  // otherwise only light sampling finds the lights (point, spot, sphere and flame lights are not geometry)
+  // and a path's last bounce, which could only find emission, can be left out.
+  bool rays_find_emission() const;
 
   // Builds the light list and selection distribution (after meshes and materials exist); with
   // `mirror_lights`, the lights' images in planar mirrors too; then the light groups.
