@@ -341,8 +341,9 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
 template <class Sampler, class T>
 bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t depth,
                              const SampledWavelengths& lambda, const Sampler& sampler) const {
-  // The vertex the bounce would reach adds only emission it finds (arrive): none in a scene that ray hits
-  // cannot find (the same image, a ray and a BSDF sample fewer per path that reaches max_depth).
+  // The vertex this bounce would reach, at max_depth, adds only the emission it finds (arrive), and in a
+  // scene where no ray can find light there is none: the same image, with a ray and a BSDF sample fewer per
+  // path.
   if (depth + 1 >= max_depth_ && !last_bounce_finds_light_) return false;
   const Vec3 wo = -s.ray.dir;
   auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
