@@ -45,9 +45,10 @@ TEST(NoiseThreshold, PixelsStopAtPowersOfTwoAndTheImageSaysWhere) {
   EXPECT_EQ(image.string_attributes.at("ochre.noiseThreshold"), "0.05");
   // The renderer branches the box's paths (2 from its pilot): pixels then count camera samples of k paths,
   // and k leaves at least 32 of them (docs/architecture.md#automatic-branch-count).
-  const size_t chosen = r.output.find("ochre: paths: ");
-  ASSERT_NE(chosen, std::string::npos) << r.output;
-  const int k = std::stoi(r.output.substr(chosen + 14));
+  const std::string chosen = "ochre: paths: ";
+  const size_t at = r.output.find(chosen);
+  ASSERT_NE(at, std::string::npos) << r.output;
+  const int k = std::stoi(r.output.substr(at + chosen.size()));
   EXPECT_EQ(k, 2) << r.output;
   const int most = 512 / k;
   EXPECT_TRUE(contains(r.output, fmt::format("24x24, noise threshold 0.05, at most {} spp x {} branches (512 "

@@ -99,14 +99,14 @@ void print_sample_counts(const Film& film, const RenderSettings& s) {
     shares += fmt::format("{}{}{}: {:.1f} %", shares.empty() ? "" : ", ", count,
                           count == s.spp ? " (the maximum)" : "", 100.0 * n / pixels);
   // With branches a pixel counts camera samples, each the mean of `branches` paths.
-  const std::string samples =
-      s.branches > 1 ? fmt::format("camera samples of {} paths", s.branches) : std::string("samples");
+  const bool branched = s.branches > 1;
+  const char* unit = branched ? "camera samples" : "samples";
+  const std::string of_paths = branched ? fmt::format(" of {} paths", s.branches) : std::string();
   const std::string paths =
-      s.branches > 1 ? fmt::format(" ({:.1f} paths)", s.branches * total / pixels) : std::string();
+      branched ? fmt::format(" ({:.1f} paths)", s.branches * total / pixels) : std::string();
   std::cerr << fmt::format(
-      "ochre: noise threshold {}: {:.1f} {} per pixel on average{} (at most {}); pixels by {} taken: {}\n",
-      s.noise_threshold, total / pixels, samples, paths, s.spp, s.branches > 1 ? "camera samples" : "samples",
-      shares);
+      "ochre: noise threshold {}: {:.1f} {}{} per pixel on average{} (at most {}); pixels by {} taken: {}\n",
+      s.noise_threshold, total / pixels, unit, of_paths, paths, s.spp, unit, shares);
 }
 
 // Samples the image does not hold as rendered: said even with -q (the image is not what the scene gives).
