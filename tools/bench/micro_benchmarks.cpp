@@ -138,7 +138,7 @@ void micro_lambert_sphere(const MicroOptions& options) {
   auto lobe = [&](const Lobe& l) {
     return [&l, &lambda](const Vec3& wo, const Vec3& wi) { return l.eval(wo, wi, lambda)[1]; };
   };
-  const std::vector<std::pair<const char*, std::function<float(const Vec3&, const Vec3&)>>> cases = {
+  const std::vector<std::pair<std::string, std::function<float(const Vec3&, const Vec3&)>>> cases = {
       {"one wavelength, Lambert lobe",
        [&](const Vec3& wo, const Vec3& wi) { return lambert.eval(wo, wi, lambda)[0]; }},
       {"one wavelength, full",
@@ -152,9 +152,15 @@ void micro_lambert_sphere(const MicroOptions& options) {
        [&](const Vec3& wo, const Vec3& wi) { return lambert_sphere_fast(k, wi.z, wo.z, dot(wi, wo)); }},
       {"one wavelength, exact",
        [&](const Vec3& wo, const Vec3& wi) { return lambert_sphere_exact(ke, wi.z, wo.z, dot(wi, wo)); }},
-      {"lobe eval(), 4 wavelengths, full", lobe(full)},
-      {"lobe eval(), 4 wavelengths, fast", lobe(fast)},
-      {"lobe eval(), 4 wavelengths, exact", lobe(exact)},
+      {fmt::format("lobe eval(), {} wavelengths, full", kSpectrumSamples), lobe(full)},
+      {fmt::format("lobe eval(), {} wavelengths, fast", kSpectrumSamples), lobe(fast)},
+      {fmt::format("lobe eval(), {} wavelengths, exact", kSpectrumSamples), lobe(exact)},
+      // What a shading point pays: the lobe's constants for each wavelength, then one evaluation.
+      {fmt::format("lobe built + eval(), {} wavelengths, full", kSpectrumSamples),
+       [&](const Vec3& wo, const Vec3& wi) {
+         return LambertSphereLobe(LambertSphereVariant::kFull, albedos * (1.0f - 0.01f * wo.z))
+             .eval(wo, wi, lambda)[1];
+       }},
   };
   fmt::print(
       "lambert-sphere: ns per float evaluation, {} random direction pairs x 20, c = {}, 1 thread, "

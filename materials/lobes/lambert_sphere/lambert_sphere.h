@@ -25,11 +25,40 @@
 #include <cmath>
 #include <functional>
 #include <span>
+#include <type_traits>
 
 #include "materials/lobes/lambert_sphere/lambert_sphere_phase.h"
+#include "materials/numerics/branchless_math.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
+
+// exp, log and pow for the per-wavelength terms: in single precision the branchless ones, so the lobe's loops
+// over the wavelengths vectorize; in double (the reference and tabulation paths) the library's.
+template <class T>
+T lambert_sphere_exp(T x) {
+  if constexpr (std::is_same_v<T, float>)
+    return branchless_exp(x);
+  else
+    return std::exp(x);
+}
+
+template <class T>
+T lambert_sphere_log(T x) {
+  if constexpr (std::is_same_v<T, float>)
+    return branchless_log(x);
+  else
+    return std::log(x);
+}
+
+// x^p for x in [0, 1] and p > 0 (0^p is ~1e-37 rather than 0 in single precision).
+template <class T>
+T lambert_sphere_pow(T x, T p) {
+  if constexpr (std::is_same_v<T, float>)
+    return branchless_exp(p * branchless_log(x));
+  else
+    return std::pow(x, p);
+}
 
 template <class T>
 struct LambertSphereConstants {
@@ -59,16 +88,17 @@ T lambert_sphere_c_from_kd_eq46(T kd) {
 }
 
 // The c-dependent constants (c clamped to [0, 1]).
+// with_fast_variant = false leaves fast_constant (which only the fast variant reads, Eq 48) at 0.
 template <class T>
-LambertSphereConstants<T> lambert_sphere_constants(T c_in) {
+LambertSphereConstants<T> lambert_sphere_constants(T c_in, bool with_fast_variant = true) {
   LambertSphereConstants<T> k;
   const T c = nan_safe_clamp(c_in, T(0), T(1));
   const T one_minus_c = T(1) - c, s = std::sqrt(one_minus_c), s3 = one_minus_c * s;
   k.c = c;
   // Eq 37 constants; 1/H0(inf) = sqrt(K0(0)) = sqrt((16 - c)(1 - c)(4c + 9)) / 12, finite at c = 1.
-  k.h0_a = (T(1.50112) * std::pow(s, T(6.05435)) + T(8.21644)) / (T(4.17593) - T(1.21222) * s);
-  k.h0_d =
-      (T(7.7731) - T(0.565811) * std::pow(s, T(0.961546))) / (T(8.65912) - T(0.159974) * std::pow(s, T(7)));
+  const T s2 = s * s, s7 = s2 * s2 * s2 * s;
+  k.h0_a = (T(1.50112) * lambert_sphere_pow(s, T(6.05435)) + T(8.21644)) / (T(4.17593) - T(1.21222) * s);
+  k.h0_d = (T(7.7731) - T(0.565811) * lambert_sphere_pow(s, T(0.961546))) / (T(8.65912) - T(0.159974) * s7);
   k.inv_h0_infinity = std::sqrt(std::max(T(0), (T(16) - c) * one_minus_c * (T(4) * c + T(9)))) / T(12);
   // Eqs 38-42.
   k.A = T(69) * c / T(128);
@@ -87,7 +117,8 @@ LambertSphereConstants<T> lambert_sphere_constants(T c_in) {
   const T m = T(0.44038) * c + T(1);
   k.l2_plus_45m_over_64 = k.l * k.l + T(45) * m / T(64);
   // Eq 48.
-  k.fast_constant = T(0.234459) * std::pow(lambert_sphere_kd_from_c_eq47(c), T(1.85432));
+  if (with_fast_variant)
+    k.fast_constant = T(0.234459) * lambert_sphere_pow(lambert_sphere_kd_from_c_eq47(c), T(1.85432));
   k.fast_slope = T(0.0151829) * (c - T(0.249978));
   return k;
 }
@@ -153,11 +184,11 @@ template <class T>
 LambertSphereGeometry<T> lambert_sphere_geometry(T mu_i, T mu_o, T wi_dot_wo) {
   LambertSphereGeometry<T> g = lambert_sphere_phase_geometry(mu_i, mu_o, wi_dot_wo);
   if (!g.valid) return g;
-  g.log_mu_i = std::log(mu_i);
-  g.log_mu_o = std::log(mu_o);
+  g.log_mu_i = lambert_sphere_log(mu_i);
+  g.log_mu_o = lambert_sphere_log(mu_o);
   g.q_i = lambert_sphere_h1_exponent(mu_i);
   g.q_o = lambert_sphere_h1_exponent(mu_o);
-  g.h1_exponent_sum = std::exp(g.q_i * g.log_mu_i) + std::exp(g.q_o * g.log_mu_o);
+  g.h1_exponent_sum = lambert_sphere_exp(g.q_i * g.log_mu_i) + lambert_sphere_exp(g.q_o * g.log_mu_o);
   return g;
 }
 
@@ -168,14 +199,15 @@ T lambert_sphere_single_scattering(T c, T mu_i, T mu_o, T wi_dot_wo) {
   return c * lambert_sphere_phase(-wi_dot_wo) / (mu_i + mu_o);
 }
 
-// Multiple scattering f_m^(0) + f_m^(1) cos(phi) of the corrected fitted model (Eqs 27-45).
+// Multiple scattering f_m^(0) + f_m^(1) cos(phi) of the corrected fitted model (Eqs 27-45) for valid
+// geometry (mu_i, mu_o > 0): straight-line arithmetic, so loops over wavelengths vectorize.
 template <class T>
-T lambert_sphere_multiple_scattering(const LambertSphereConstants<T>& k, const LambertSphereGeometry<T>& g) {
-  if (!g.valid) return T(0);
+T lambert_sphere_multiple_scattering_valid(const LambertSphereConstants<T>& k,
+                                           const LambertSphereGeometry<T>& g) {
   constexpr T kPiT = T(3.14159265358979323846);
   // Eq 36 minus Eq 44; H0 of Eq 37 with mu^d = exp(d log mu).
   auto h0 = [&](T log_mu) {
-    const T x = k.h0_a * std::exp(k.h0_d * log_mu);
+    const T x = k.h0_a * lambert_sphere_exp(k.h0_d * log_mu);
     return (T(1) + x) / (T(1) + x * k.inv_h0_infinity);
   };
   const T poly0 =
@@ -184,11 +216,16 @@ T lambert_sphere_multiple_scattering(const LambertSphereConstants<T>& k, const L
   const T f0_single =
       k.c * (T(207) + T(135) * g.prod * g.prod - T(45) * g.sq + T(256) * g.prod) / (T(768) * kPiT);
   // Corrected Eq 27 minus corrected Eq 34, both divided by S; times S cos(phi). H1 H1 in one exp.
-  const T h1h1 = std::exp(k.ln_h1_at_one * g.h1_exponent_sum);
+  const T h1h1 = lambert_sphere_exp(k.ln_h1_at_one * g.h1_exponent_sum);
   const T poly1 = T(1) + k.l2_plus_45m_over_64 * g.prod + k.l * g.sum;
   const T f1_over_s = k.c * h1h1 * poly1 / (T(3) * kPiT);
   const T f1_single_over_s = k.c * (T(45) * g.prod + T(64)) / (T(192) * kPiT);
   return (f0 - f0_single + (f1_over_s - f1_single_over_s) * g.s_cos_phi) * g.inv_sum;
+}
+
+template <class T>
+T lambert_sphere_multiple_scattering(const LambertSphereConstants<T>& k, const LambertSphereGeometry<T>& g) {
+  return g.valid ? lambert_sphere_multiple_scattering_valid(k, g) : T(0);
 }
 
 template <class T>
@@ -199,9 +236,13 @@ T lambert_sphere_multiple_scattering(const LambertSphereConstants<T>& k, T mu_i,
 // The full model, Eq 18 (corrected), clamped at 0 (a guard: the fitted multiple scattering can be
 // slightly negative where it is tiny, e.g. at c = 0 the fitted constants leave a floor of ~5e-5).
 template <class T>
+T lambert_sphere_full_valid(const LambertSphereConstants<T>& k, const LambertSphereGeometry<T>& g) {
+  return std::max(T(0), k.c * g.phase_over_sum + lambert_sphere_multiple_scattering_valid(k, g));
+}
+
+template <class T>
 T lambert_sphere_full(const LambertSphereConstants<T>& k, const LambertSphereGeometry<T>& g) {
-  if (!g.valid) return T(0);
-  return std::max(T(0), k.c * g.phase_over_sum + lambert_sphere_multiple_scattering(k, g));
+  return g.valid ? lambert_sphere_full_valid(k, g) : T(0);
 }
 
 template <class T>

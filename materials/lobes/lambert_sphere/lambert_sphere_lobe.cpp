@@ -1,21 +1,20 @@
 #include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 
 #include "materials/lobes/cosine_lobe_sampling.h"
-#include "materials/lobes/lambert_sphere/lambert_sphere_constants_table.h"
 #include "spectra/non_finite.h"
 
 namespace ochre {
 
 LambertSphereLobe::LambertSphereLobe(LambertSphereVariant variant, const SampledSpectrum& particle_albedo)
     : variant_(variant) {
-  for (int k = 0; k < kSpectrumSamples; ++k) {
-    const float c = nan_safe_clamp(particle_albedo[k], 0.0f, 1.0f);
-    if (variant == LambertSphereVariant::kExact)
-      exact_[k] = lambert_sphere_exact_constants(c);
-    else
-      fitted_[k] = lambert_sphere_constants_interpolated(c);
-    albedo_[k] = lambert_sphere_kd_from_c_eq47(c);
+  SampledSpectrum c;
+  for (int k = 0; k < kSpectrumSamples; ++k) c[k] = nan_safe_clamp(particle_albedo[k], 0.0f, 1.0f);
+  if (variant == LambertSphereVariant::kExact) {
+    for (int k = 0; k < kSpectrumSamples; ++k) exact_[k] = lambert_sphere_exact_constants(c[k]);
+  } else {
+    fitted_ = lambert_sphere_constant_lanes(c.lanes(), variant == LambertSphereVariant::kFast);
   }
+  for (int k = 0; k < kSpectrumSamples; ++k) albedo_[k] = lambert_sphere_kd_from_c_eq47(c[k]);
 }
 
 SampledSpectrum LambertSphereLobe::eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths&) const {
@@ -32,11 +31,11 @@ SampledSpectrum LambertSphereLobe::eval(const Vec3& wo, const Vec3& wi, const Sa
   if (variant_ == LambertSphereVariant::kFast) {
     const LambertSphereGeometry<float> g = lambert_sphere_phase_geometry(mu_i, mu_o, wi_dot_wo);
     const float factor = lambert_sphere_fast_factor(mu_i, mu_o, wi_dot_wo);
-    for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_fast(fitted_[k], g, factor);
+    for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_fast(fitted_.at(k), g, factor);
     return f;
   }
   const LambertSphereGeometry<float> g = lambert_sphere_geometry(mu_i, mu_o, wi_dot_wo);
-  for (int k = 0; k < kSpectrumSamples; ++k) f[k] = lambert_sphere_full(fitted_[k], g);
+  lambert_sphere_full_lanes(fitted_, g, f.lanes());
   return f;
 }
 

@@ -4,9 +4,11 @@
 // scattering, d'Eon Eqs 17-45), fast (Eq 48, not energy conserving), exact (single scattering + the
 // tabulated converged multiple scattering of materials/lobes/lambert_sphere/lambert_sphere_exact.h). An ideal
 // depolarizer; cosine-weighted sampling (sample() and pdf() agree exactly). The c-dependent constants are
-// built once per lobe, per wavelength.
+// built once per lobe, per wavelength, and the
+// evaluation's loop over the wavelengths runs as vector instructions.
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_constant_lanes.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_exact.h"
 #include "materials/lobes/lobe.h"
 
@@ -31,7 +33,7 @@ class LambertSphereLobe final : public Lobe {
 
  private:
   LambertSphereVariant variant_;
-  LambertSphereConstants<float> fitted_[kSpectrumSamples];
+  LambertSphereConstantLanes fitted_;  // full and fast variants (one array per constant: the loops vectorize)
   LambertSphereExactConstants exact_[kSpectrumSamples];
   SampledSpectrum albedo_;
 };
