@@ -38,6 +38,19 @@ TEST(Noise, GradientNoiseIsZeroOnTheLatticeAndBoundedElsewhere) {
   EXPECT_LT(sd, 0.4);
 }
 
+// The same bits on every machine and whichever instruction set the noise runs on (it is built for AVX2 and
+// for baseline x86-64, materials/core/vector_clones.h): values recorded from the scalar build before the
+// vector one existed.
+TEST(Noise, ValuesAreTheRecordedBits) {
+  const FractalNoise five_octaves{5, 2.0f, 0.5f};
+  EXPECT_EQ(gradient_noise(Vec3(0.3f, 0.7f, 0.1f), 7), -0x1.15aa64p-2f);
+  EXPECT_EQ(gradient_noise(Vec3(-12.25f, 3.5f, 8.75f), 7), 0x1.36cfcp-3f);
+  EXPECT_EQ(gradient_noise(Vec3(1234.5f, -77.1f, 0.001f), 7), -0x1.6c9b5cp-5f);
+  EXPECT_EQ(fractal_noise(Vec3(0.3f, 0.7f, 0.1f), five_octaves, 3), -0x1.97a102p-3f);
+  EXPECT_EQ(fractal_noise(Vec3(-12.25f, 3.5f, 8.75f), five_octaves, 3), 0x1.07bfbep-3f);
+  EXPECT_EQ(fractal_noise(Vec3(1234.5f, -77.1f, 0.001f), five_octaves, 3), 0x1.3115d8p-4f);
+}
+
 TEST(Noise, IsContinuousDeterministicAndSeeded) {
   const Vec3 p(1.234f, -5.678f, 9.1011f);
   EXPECT_EQ(gradient_noise(p, 1), gradient_noise(p, 1));
