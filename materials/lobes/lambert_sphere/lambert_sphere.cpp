@@ -69,6 +69,25 @@ BondAlbedoInverse::BondAlbedoInverse(const std::function<double(double c)>& bond
     const double s = double(j) / (kNodes - 1);
     kd_[j] = bond_albedo(1.0 - s * s);
   }
+  // The last node above a value by a linear scan (kd_ decreases; 0 when none is above, as the search gives).
+  auto last_node_above = [&](double kd) {
+    int lo = 0;
+    while (lo + 1 < kNodes - 1 && kd_[lo + 1] > kd) ++lo;
+    return lo;
+  };
+  for (int cell = 0; cell <= kSearchCells; ++cell) {
+    const int at_top = last_node_above(double(cell + 1) / kSearchCells);
+    const int at_bottom = last_node_above(double(cell) / kSearchCells);
+    cell_start_[cell] = static_cast<uint8_t>(at_top);
+    search_steps_ = std::max(search_steps_, at_bottom - at_top);
+  }
+}
+
+int BondAlbedoInverse::node_above(double kd) const {
+  // kd in [0, 1] times a power of two is exact: the cell is floor(kd kSearchCells), its edges exact too.
+  int lo = cell_start_[static_cast<int>(kd * kSearchCells)];
+  for (int step = 0; step < search_steps_; ++step) lo += (lo + 1 < kNodes - 1 && kd_[lo + 1] > kd) ? 1 : 0;
+  return lo;
 }
 
 float BondAlbedoInverse::c(float kd_in) const {
@@ -86,16 +105,11 @@ void BondAlbedoInverse::c(std::span<const float> kd_in, std::span<float> c_out) 
     const std::size_t n = std::min(kBlock, kd_in.size() - first);
     double kd[kBlock];
     int lo[kBlock];
-    for (std::size_t i = 0; i < n; ++i) {
-      kd[i] = nan_safe_clamp(double(kd_in[first + i]), 0.0, 1.0);
-      lo[i] = 0;
-    }
-    // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), by steps of halving size that
-    // compile to conditional moves: called per wavelength at every Lambert-sphere shading point with a
-    // textured kd, where a branching search mispredicts. Then linear interpolation in s.
-    static_assert(kNodes == 65, "the steps below cover indices 0..63");
-    for (int step = 32; step > 0; step /= 2)
-      for (std::size_t i = 0; i < n; ++i) lo[i] += kd_[lo[i] + step] > kd[i] ? step : 0;
+    for (std::size_t i = 0; i < n; ++i) kd[i] = nan_safe_clamp(double(kd_in[first + i]), 0.0, 1.0);
+    // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), from the node where kd's cell
+    // starts: called per wavelength at every Lambert-sphere shading point with a textured kd. Then linear
+    // interpolation in s.
+    for (std::size_t i = 0; i < n; ++i) lo[i] = node_above(kd[i]);
     for (std::size_t i = 0; i < n; ++i) {
       float& out = c_out[first + i];
       if (kd[i] >= kd_[0]) {

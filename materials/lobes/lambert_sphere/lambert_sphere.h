@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <type_traits>
@@ -295,6 +296,7 @@ double lambert_sphere_directional_albedo(double c, double mu_i);
 class BondAlbedoInverse {
  public:
   static constexpr int kNodes = 65;
+  static constexpr int kSearchCells = 1024;  // over kd in [0, 1]: where the search for kd's node starts
   explicit BondAlbedoInverse(const std::function<double(double c)>& bond_albedo);
   float c(float kd) const;
   // c[i] = c(kd[i]) for every i (spans of equal sizes, else std::invalid_argument), bit for bit: the searches
@@ -305,7 +307,14 @@ class BondAlbedoInverse {
   double max_bond_albedo() const { return kd_[0]; }
 
  private:
+  // The last node above kd, exactly as a binary search finds it.
+  int node_above(double kd) const;
+
   std::array<double, kNodes> kd_{};  // at s_j = j / (kNodes - 1): decreasing in j
+  // For kd in [j, j + 1) / kSearchCells: the last node above (j + 1) / kSearchCells, from which at most
+  // search_steps_ steps up reach the last node above kd (a node or two per cell).
+  std::array<uint8_t, kSearchCells + 1> cell_start_{};
+  int search_steps_ = 0;
 };
 
 // kd -> c for the full (and fast) variant: inverts lambert_sphere_bond_albedo; built on first use

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -285,6 +286,38 @@ TEST(LambertSphereModel, KdInverseOfManyValuesAtOnce) {
   EXPECT_EQ(c[5], lambert_sphere_c_from_kd(0.0f));  // NaN maps like 0
   std::vector<float> too_short(kd.size() - 1);
   EXPECT_THROW(lambert_sphere_kd_inverse().c(kd, too_short), std::invalid_argument);
+}
+
+// The inverse interpolates linearly in s between the nodes of the tabulated bond albedo; its search for the
+// node (a start per cell of kd, then a few steps) finds the same node as a scan from the top, for any
+// decreasing bond albedo: the model's and one whose nodes crowd near kd = 0 (several per search cell).
+TEST(LambertSphereModel, KdInverseFindsTheNodeAScanFinds) {
+  const auto crowded = [](double c) { return std::pow(c, 12.0); };
+  for (const auto& bond :
+       {std::function<double(double)>(lambert_sphere_bond_albedo), std::function<double(double)>(crowded)}) {
+    const BondAlbedoInverse inverse(bond);
+    constexpr int kNodes = BondAlbedoInverse::kNodes;
+    std::array<double, kNodes> nodes;
+    for (int j = 0; j < kNodes; ++j)
+      nodes[j] = bond(1.0 - (double(j) / (kNodes - 1)) * (double(j) / (kNodes - 1)));
+    for (int i = 0; i <= 20000; ++i) {
+      const float kd = float(i) / 20000.0f;
+      const double x = kd;
+      float expected;
+      if (x >= nodes[0]) {
+        expected = 1.0f;
+      } else if (x <= nodes[kNodes - 1]) {
+        expected = 0.0f;
+      } else {
+        int lo = 0;
+        while (lo + 1 < kNodes - 1 && nodes[lo + 1] > x) ++lo;
+        const double t = (nodes[lo] - x) / (nodes[lo] - nodes[lo + 1]);
+        const double s = (lo + t) / (kNodes - 1);
+        expected = float(std::clamp(1.0 - s * s, 0.0, 1.0));
+      }
+      ASSERT_EQ(inverse.c(kd), expected) << "kd " << kd;
+    }
+  }
 }
 
 TEST(LambertSphereModel, ExactModeKdMapping) {
