@@ -18,13 +18,14 @@ namespace ochre {
 template <class T>
 T lambert_sphere_phase(T u) {
   constexpr T kPiT = T(3.14159265358979323846);
-  const T t = std::acos(std::fmin(T(1), std::fmax(T(-1), u)));
+  const T uc = std::fmin(T(1), std::fmax(T(-1), u));
+  const T t = std::acos(uc);
   T v;
   if (t < T(0.1)) {
     const T t2 = t * t;
     v = t * t2 * (T(1) / T(3) - t2 * (T(1) / T(30) - t2 * (T(1) / T(840) - t2 / T(45360))));
   } else {
-    v = std::sin(t) - t * std::cos(t);
+    v = std::sqrt((T(1) - uc) * (T(1) + uc)) - t * uc;  // sin t - t cos t without sin and cos of t
   }
   return std::fmax(T(0), T(2) * v / (T(3) * kPiT * kPiT));
 }
