@@ -1,5 +1,8 @@
 #include "materials/lobes/closure.h"
 
+#include <array>
+#include <bit>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +12,7 @@ void Closure::add_lobe(const Lobe* lobe, const SampledSpectrum& weight) {
   if (weight.is_black()) return;
   if (count_ == kMaxLobes) throw std::length_error("closure has more than 8 lobes");
   lobes_[count_++] = {lobe, weight};
+  selection_valid_ = false;
 }
 
 void Closure::throw_lobe_out_of_range(int i) const {
@@ -18,6 +22,7 @@ void Closure::throw_lobe_out_of_range(int i) const {
 void Closure::scale(const SampledSpectrum& s) {
   for (int i = 0; i < count_; ++i) lobes_[i].weight *= s;
   emission_ *= s;
+  selection_valid_ = false;
 }
 
 void Closure::append(const Closure& other) {
@@ -95,14 +100,26 @@ MuellerResponse Closure::eval_mueller(const Vec3& wo, const Vec3& wi,
 
 float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
                                  std::array<float, kMaxLobes>& p) const {
-  float total = 0.0f;
-  for (int i = 0; i < count_; ++i) {
-    const WeightedLobe& l = lobes_[i];
-    // Weighted albedo averaged over the wavelengths (Cycles' sample_weight, with the lobe's albedo).
-    p[i] = std::max(0.0f, (l.weight * l.lobe->albedo_hint(wo, lambda)).average());
-    total += p[i];
+  const bool terminated = lambda.secondary_terminated();
+  // The same wo bit for bit (not ==, for which -0 equals +0): the cached weights are then exactly those
+  // the lobes would give again.
+  const bool same_wo =
+      std::bit_cast<std::array<uint32_t, 3>>(wo) == std::bit_cast<std::array<uint32_t, 3>>(selection_wo_);
+  if (!(selection_valid_ && same_wo && terminated == selection_terminated_)) {
+    float total = 0.0f;
+    for (int i = 0; i < count_; ++i) {
+      const WeightedLobe& l = lobes_[i];
+      // Weighted albedo averaged over the wavelengths (Cycles' sample_weight, with the lobe's albedo).
+      selection_[i] = std::max(0.0f, (l.weight * l.lobe->albedo_hint(wo, lambda)).average());
+      total += selection_[i];
+    }
+    selection_total_ = total;
+    selection_wo_ = wo;
+    selection_terminated_ = terminated;
+    selection_valid_ = true;
   }
-  return total;
+  for (int i = 0; i < count_; ++i) p[i] = selection_[i];
+  return selection_total_;
 }
 
 float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {

@@ -29,11 +29,13 @@ class Closure {
     emission_ = other.emission_;
     tangent_ = other.tangent_;
     has_tangent_ = other.has_tangent_;
+    selection_valid_ = false;
     return *this;
   }
   // Back to no lobes, no emission and no tangent (the unused lobe slots are left as they are).
   void clear() {
     count_ = 0;
+    selection_valid_ = false;
     emission_ = SampledSpectrum(0.0f);
     tangent_ = Vec3{};
     has_tangent_ = false;
@@ -97,6 +99,14 @@ class Closure {
 
   std::array<WeightedLobe, kMaxLobes> lobes_{};
   int count_ = 0;
+  // The selection weights of the last wo: a path vertex asks for them two or three times (the light
+  // sample's pdf, the BSDF sample and its pdf), and a lobe's albedo_hint can cost several BRDF evaluations
+  // per wavelength (the powder's). Forgotten whenever the lobes or their weights change.
+  mutable std::array<float, kMaxLobes> selection_{};
+  mutable float selection_total_ = 0.0f;
+  mutable Vec3 selection_wo_;
+  mutable bool selection_terminated_ = false;  // the wavelengths' state they were computed for
+  mutable bool selection_valid_ = false;
   SampledSpectrum emission_;
   Vec3 tangent_;
   bool has_tangent_ = false;

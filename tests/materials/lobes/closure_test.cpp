@@ -131,5 +131,66 @@ TEST(Closure, CopiesAndClearDoNotKeepTheTargetsOldLobes) {
   EXPECT_FALSE(target.has_non_delta_lobes());
 }
 
+// A Lambert lobe whose albedo hint, a constant, counts its calls.
+class CountingLambert final : public Lobe {
+ public:
+  explicit CountingLambert(float albedo) : albedo_(albedo) {}
+  uint32_t flags() const override { return lambert_.flags(); }
+  SampledSpectrum eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& l) const override {
+    return lambert_.eval(wo, wi, l);
+  }
+  float pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& l) const override {
+    return lambert_.pdf(wo, wi, l);
+  }
+  std::optional<LobeSample> sample(const Vec3& wo, float u_choice, const Vec2& u,
+                                   const SampledWavelengths& l) const override {
+    return lambert_.sample(wo, u_choice, u, l);
+  }
+  SampledSpectrum albedo_hint(const Vec3&, const SampledWavelengths&) const override {
+    ++calls;
+    return SampledSpectrum(albedo_);
+  }
+  mutable int calls = 0;
+
+ private:
+  LambertLobe lambert_;
+  float albedo_;
+};
+
+// A vertex asks for the lobe selection weights two or three times with one wo: the lobes' albedo hints are
+// computed once per wo, again for another wo, and again whenever the lobes or their weights change.
+TEST(Closure, SelectionWeightsComputedOncePerOutgoingDirection) {
+  const CountingLambert a(0.2f), b(0.8f), c(0.5f);
+  const SampledWavelengths& lambda = test_wavelengths();
+  const Vec3 wo = normalize(Vec3(0.3f, -0.2f, 0.9f)), other = normalize(Vec3(-0.1f, 0.4f, 0.8f));
+  const Vec3 wi = normalize(Vec3(0.1f, 0.1f, 0.9f));
+  Closure closure;
+  closure.add_lobe(&a, SampledSpectrum(1.0f));
+  closure.add_lobe(&b, SampledSpectrum(1.0f));
+  const float pdf = closure.pdf(wo, wi, lambda);
+  closure.sample(wo, 0.7f, Vec2{0.3f, 0.6f}, lambda);
+  EXPECT_EQ(closure.pdf(wo, wi, lambda), pdf);
+  EXPECT_EQ(a.calls, 1);
+  EXPECT_EQ(b.calls, 1);
+  closure.pdf(other, wi, lambda);
+  EXPECT_EQ(a.calls, 2);
+  // A third lobe changes the selection: its hint is asked for, and the others' again.
+  closure.add_lobe(&c, SampledSpectrum(1.0f));
+  closure.pdf(other, wi, lambda);
+  EXPECT_EQ(a.calls, 3);
+  EXPECT_EQ(c.calls, 1);
+  closure.scale(SampledSpectrum(0.5f));
+  closure.pdf(other, wi, lambda);
+  EXPECT_EQ(a.calls, 4);
+  // A copy starts afresh; the selection it computes is the original's.
+  Closure copy;
+  copy = closure;
+  EXPECT_EQ(copy.pdf(other, wi, lambda), closure.pdf(other, wi, lambda));
+  EXPECT_EQ(a.calls, 5);
+  closure.clear();
+  closure.add_lobe(&b, SampledSpectrum(1.0f));
+  EXPECT_EQ(closure.pdf(other, wi, lambda), b.pdf(other, wi, lambda));
+}
+
 }  // namespace
 }  // namespace ochre::test::closure_test
