@@ -50,10 +50,19 @@ bool Closure::polarizes() const {
 }
 
 SampledSpectrum Closure::eval(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
+  return eval_after_sample(wo, wi, lambda, -1, nullptr);
+}
+
+SampledSpectrum Closure::eval_after_sample(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda,
+                                           int sampled_lobe, const LobeSample* sample) const {
   SampledSpectrum f;
   for (int i = 0; i < count_; ++i) {
     const WeightedLobe& l = lobes_[i];
-    if (!l.lobe->is_delta()) f += l.weight * l.lobe->eval(wo, wi, lambda);
+    if (l.lobe->is_delta()) continue;
+    if (i == sampled_lobe && sample->has_value)
+      f += l.weight * sample->value;  // the lobe's own eval() in wi, from its sample
+    else
+      f += l.weight * l.lobe->eval(wo, wi, lambda);
   }
   return f;
 }
@@ -167,7 +176,7 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
   const float pdf = this->pdf(wo, s->wi, lambda);
   if (!(pdf > 0.0f)) return std::nullopt;
   s->pdf = pdf;
-  s->weight = eval(wo, s->wi, lambda) * (abs_cos_theta(s->wi) / pdf);
+  s->weight = eval_after_sample(wo, s->wi, lambda, k, &*s) * (abs_cos_theta(s->wi) / pdf);
   s->has_mueller = false;  // the mixture's Mueller response comes from eval_mueller() when needed
   return s;
 }

@@ -93,6 +93,11 @@ class Closure {
   [[noreturn]] void throw_lobe_out_of_range(int i) const;
   std::optional<LobeSample> sample_only_lobe(const Vec3& wo, float u_choice, const Vec2& u,
                                              const SampledWavelengths& lambda) const;
+  // eval() in the direction lobe `sampled_lobe` sampled (`sample`), reusing the value the lobe computed
+  // for its sample's weight where it kept it (has_value): the same bits as eval(), one evaluation fewer.
+  // sampled_lobe = -1: none (eval() itself).
+  SampledSpectrum eval_after_sample(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda,
+                                    int sampled_lobe, const LobeSample* sample) const;
   // Lobe selection probabilities; returns their sum (0 when nothing can be sampled).
   float selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
                           std::array<float, kMaxLobes>& p) const;

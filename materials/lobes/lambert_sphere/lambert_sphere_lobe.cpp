@@ -46,7 +46,11 @@ float LambertSphereLobe::pdf(const Vec3& wo, const Vec3& wi, const SampledWavele
 std::optional<LobeSample> LambertSphereLobe::sample(const Vec3& wo, float, const Vec2& u,
                                                     const SampledWavelengths& lambda) const {
   std::optional<LobeSample> s = sample_cosine_lobe(wo, u);
-  if (s) s->weight = eval(wo, s->wi, lambda) * (s->wi.z / s->pdf);
+  if (s) {
+    s->value = eval(wo, s->wi, lambda);
+    s->has_value = true;
+    s->weight = s->value * (s->wi.z / s->pdf);
+  }
   return s;
 }
 

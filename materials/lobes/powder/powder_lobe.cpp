@@ -116,7 +116,9 @@ std::optional<LobeSample> PowderLobe::sample(const Vec3& wo, float u_choice, con
   s.wi = *wi;
   s.pdf = pdf(wo, s.wi, lambda);
   if (!(s.pdf > 0.0f)) return std::nullopt;
-  s.weight = eval(wo, s.wi, lambda) * (s.wi.z / s.pdf);
+  s.value = eval(wo, s.wi, lambda);
+  s.has_value = true;
+  s.weight = s.value * (s.wi.z / s.pdf);
   return s;
 }
 

@@ -10,6 +10,7 @@
 
 #include "materials/lobes/conductor.h"
 #include "materials/lobes/lambert.h"
+#include "materials/lobes/lambert_sphere/lambert_sphere_lobe.h"
 #include "materials/material_test_support.h"
 #include "support/spectrum_lanes.h"
 
@@ -190,6 +191,30 @@ TEST(Closure, SelectionWeightsComputedOncePerOutgoingDirection) {
   closure.clear();
   closure.add_lobe(&b, SampledSpectrum(1.0f));
   EXPECT_EQ(closure.pdf(other, wi, lambda), b.pdf(other, wi, lambda));
+}
+
+// A lobe that keeps its value for its sample (the Lambert-sphere lobe) lends it to the mixture: the mixture
+// sample's weight is still exactly eval() |cos| / pdf of the whole closure, bit for bit.
+TEST(Closure, MixtureSampleReusesTheSampledLobesValueExactly) {
+  const LambertSphereLobe sphere(LambertSphereVariant::kFull, lanes({0.3f, 0.6f, 0.9f, 0.95f}));
+  const LambertLobe lambert;
+  Closure closure;
+  closure.add_lobe(&sphere, kWeight);
+  closure.add_lobe(&lambert, SampledSpectrum(0.5f));
+  const SampledWavelengths& lambda = test_wavelengths();
+  const Vec3 wo = normalize(Vec3(0.3f, -0.2f, 0.9f));
+  int reused = 0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      const Vec2 u{(i + 0.5f) / 8, (j + 0.5f) / 8};
+      const float u_choice = (i * 8 + j + 0.5f) / 64;
+      const auto s = closure.sample(wo, u_choice, u, lambda);
+      if (!s) continue;
+      reused += sphere.sample(wo, 0.0f, u, lambda)->has_value;
+      const SampledSpectrum expected = closure.eval(wo, s->wi, lambda) * (std::fabs(s->wi.z) / s->pdf);
+      for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(s->weight[k], expected[k]) << i << " " << j;
+    }
+  EXPECT_GT(reused, 0);
 }
 
 }  // namespace
