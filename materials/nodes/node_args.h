@@ -62,6 +62,7 @@ class NodeArgs {
   SampledSpectrum weight() const { return load_spectrum(out_[0]); }
   // Combinators: adds `w` to the weight of the closure connected to input i.
   void add_weight(int i, const SampledSpectrum& w) const {
+    if (w.is_black()) return;  // nothing to add (a mix at factor 0 or 1): no load, sum and check
     store_spectrum(in_[i], load_spectrum(in_[i]) + w);
   }
   // Leaves: a lobe (built in `arena`) with its weight, and emitted radiance. A product of finite values
