@@ -95,7 +95,11 @@ PowderTerms<T> powder_terms(const PowderParams<T>& p, const PowderWavelength<T>&
 
   // L1 (Eq 14a): single scattering, the thickness factor 1 for an infinite layer.
   const T cos_theta = -(T(wi.x) * T(wo.x) + T(wi.y) * T(wo.y) + mu_i * mu_o);
-  const T depth = -std::expm1(-p.kappa * p.thickness * (1 / mu_i + 1 / mu_o));
+  // 1 - exp(-x) with x the optical depth through the layer: for x > 100 that is 1 exactly in float and double
+  // (e^-100 = 4e-44), so the call is skipped there: an infinite layer (the default thickness 1e30) at every
+  // evaluation.
+  const T optical_depth = p.kappa * p.thickness * (1 / mu_i + 1 / mu_o);
+  const T depth = optical_depth > T(100) ? T(1) : -std::expm1(-optical_depth);
   out.l1 = rho * powder_detail::henyey_greenstein(cos_theta, p.g) / (mu_i + mu_o) * depth;
 
   // L2: the ladder of Eq 21.
