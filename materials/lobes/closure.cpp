@@ -134,12 +134,20 @@ float Closure::selection_weights(const Vec3& wo, const SampledWavelengths& lambd
 float Closure::pdf(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda) const {
   // One lobe: its selection probability is 1 (or nothing can be sampled), so no albedo estimates.
   if (count_ == 1) return lobes_[0].lobe->is_delta() ? 0.0f : lobes_[0].lobe->pdf(wo, wi, lambda);
+  return pdf_after_sample(wo, wi, lambda, -1, nullptr);
+}
+
+float Closure::pdf_after_sample(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda,
+                                int sampled_lobe, const LobeSample* sample) const {
   std::array<float, kMaxLobes> p{};
   const float total = selection_weights(wo, lambda, p);
   if (total <= 0.0f) return 0.0f;
   float pdf = 0.0f;
-  for (int i = 0; i < count_; ++i)
-    if (!lobes_[i].lobe->is_delta() && p[i] > 0.0f) pdf += p[i] / total * lobes_[i].lobe->pdf(wo, wi, lambda);
+  for (int i = 0; i < count_; ++i) {
+    if (lobes_[i].lobe->is_delta() || !(p[i] > 0.0f)) continue;
+    const bool own = i == sampled_lobe && sample->has_value;  // the lobe's own pdf() in wi, from its sample
+    pdf += p[i] / total * (own ? sample->pdf : lobes_[i].lobe->pdf(wo, wi, lambda));
+  }
   return pdf;
 }
 
@@ -173,7 +181,7 @@ std::optional<LobeSample> Closure::sample(const Vec3& wo, float u_choice, const 
     return s;
   }
   // One BSDF for MIS: value and pdf of the whole non-delta mixture in the sampled direction.
-  const float pdf = this->pdf(wo, s->wi, lambda);
+  const float pdf = pdf_after_sample(wo, s->wi, lambda, k, &*s);
   if (!(pdf > 0.0f)) return std::nullopt;
   s->pdf = pdf;
   s->weight = eval_after_sample(wo, s->wi, lambda, k, &*s) * (abs_cos_theta(s->wi) / pdf);

@@ -98,6 +98,9 @@ class Closure {
   // sampled_lobe = -1: none (eval() itself).
   SampledSpectrum eval_after_sample(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda,
                                     int sampled_lobe, const LobeSample* sample) const;
+  // pdf() of a closure of several lobes, likewise reusing the sampled lobe's own pdf (has_value).
+  float pdf_after_sample(const Vec3& wo, const Vec3& wi, const SampledWavelengths& lambda, int sampled_lobe,
+                         const LobeSample* sample) const;
   // Lobe selection probabilities; returns their sum (0 when nothing can be sampled).
   float selection_weights(const Vec3& wo, const SampledWavelengths& lambda,
                           std::array<float, kMaxLobes>& p) const;

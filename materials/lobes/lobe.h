@@ -63,8 +63,9 @@ struct LobeSample {
   float pdf = 0.0f;  // solid-angle pdf, or the discrete probability of a delta exit
   bool delta = false;
   bool has_mueller = false;  // set by polarizing lobes: `mueller.m` is the exit's matrix times |cos|/pdf
-  // eval(wo, wi) as the lobe computed it for the weight, where it did (has_value: the costly lobes): a
-  // closure's mixture value in wi takes it instead of evaluating the lobe a second time.
+  // eval(wo, wi) as the lobe computed it for the weight, where it did (has_value: the costly lobes, whose
+  // `pdf` is then also exactly their pdf() in wi): a closure's mixture value and pdf in wi take them instead
+  // of evaluating the lobe a second time.
   bool has_value = false;
   SampledSpectrum value;
   MuellerResponse mueller{};

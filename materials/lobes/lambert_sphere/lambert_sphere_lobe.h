@@ -4,8 +4,8 @@
 // scattering, d'Eon Eqs 17-45), fast (Eq 48, not energy conserving), exact (single scattering + the
 // tabulated converged multiple scattering of materials/lobes/lambert_sphere/lambert_sphere_exact.h). An ideal
 // depolarizer; cosine-weighted sampling (sample() and pdf() agree exactly). The c-dependent constants are
-// built once per lobe, per wavelength, and the
-// evaluation's loop over the wavelengths runs as vector instructions.
+// built once per lobe for all the wavelengths together, and the evaluation's loop over the wavelengths runs
+// as vector instructions (lambert_sphere_constant_lanes.h).
 
 #include "materials/lobes/lambert_sphere/lambert_sphere.h"
 #include "materials/lobes/lambert_sphere/lambert_sphere_constant_lanes.h"

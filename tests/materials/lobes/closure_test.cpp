@@ -193,8 +193,8 @@ TEST(Closure, SelectionWeightsComputedOncePerOutgoingDirection) {
   EXPECT_EQ(closure.pdf(other, wi, lambda), b.pdf(other, wi, lambda));
 }
 
-// A lobe that keeps its value for its sample (the Lambert-sphere lobe) lends it to the mixture: the mixture
-// sample's weight is still exactly eval() |cos| / pdf of the whole closure, bit for bit.
+// A lobe that keeps its value and pdf for its sample (the Lambert-sphere lobe) lends them to the mixture: the
+// mixture sample's pdf and weight are still exactly the whole closure's pdf() and eval() |cos| / pdf().
 TEST(Closure, MixtureSampleReusesTheSampledLobesValueExactly) {
   const LambertSphereLobe sphere(LambertSphereVariant::kFull, lanes({0.3f, 0.6f, 0.9f, 0.95f}));
   const LambertLobe lambert;
@@ -211,6 +211,7 @@ TEST(Closure, MixtureSampleReusesTheSampledLobesValueExactly) {
       const auto s = closure.sample(wo, u_choice, u, lambda);
       if (!s) continue;
       reused += sphere.sample(wo, 0.0f, u, lambda)->has_value;
+      EXPECT_EQ(s->pdf, closure.pdf(wo, s->wi, lambda));
       const SampledSpectrum expected = closure.eval(wo, s->wi, lambda) * (std::fabs(s->wi.z) / s->pdf);
       for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(s->weight[k], expected[k]) << i << " " << j;
     }
