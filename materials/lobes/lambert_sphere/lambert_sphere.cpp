@@ -99,29 +99,18 @@ float BondAlbedoInverse::c(float kd_in) const {
 void BondAlbedoInverse::c(std::span<const float> kd_in, std::span<float> c_out) const {
   if (c_out.size() != kd_in.size())
     throw std::invalid_argument("BondAlbedoInverse::c: spans of different sizes");
-  // At most kSpectrumSamples values per call in practice; longer spans go through in blocks.
-  constexpr std::size_t kBlock = 16;
-  for (std::size_t first = 0; first < kd_in.size(); first += kBlock) {
-    const std::size_t n = std::min(kBlock, kd_in.size() - first);
-    double kd[kBlock];
-    int lo[kBlock];
-    for (std::size_t i = 0; i < n; ++i) kd[i] = nan_safe_clamp(double(kd_in[first + i]), 0.0, 1.0);
-    // The last node above kd (kd_[lo] > kd >= kd_[lo + 1]; kd_ decreases), from the node where kd's cell
-    // starts: called per wavelength at every Lambert-sphere shading point with a textured kd. Then linear
-    // interpolation in s.
-    for (std::size_t i = 0; i < n; ++i) lo[i] = node_above(kd[i]);
-    for (std::size_t i = 0; i < n; ++i) {
-      float& out = c_out[first + i];
-      if (kd[i] >= kd_[0]) {
-        out = 1.0f;
-      } else if (kd[i] <= kd_[kNodes - 1]) {
-        out = 0.0f;
-      } else {
-        const int hi = lo[i] + 1;
-        const double t = (kd_[lo[i]] - kd[i]) / (kd_[lo[i]] - kd_[hi]);
-        const double s = (lo[i] + t) / (kNodes - 1);
-        out = float(std::clamp(1.0 - s * s, 0.0, 1.0));
-      }
+  for (std::size_t i = 0; i < kd_in.size(); ++i) {
+    const double kd = nan_safe_clamp(double(kd_in[i]), 0.0, 1.0);
+    if (kd >= kd_[0]) {
+      c_out[i] = 1.0f;
+    } else if (kd <= kd_[kNodes - 1]) {
+      c_out[i] = 0.0f;
+    } else {
+      // Between the last node above kd and the next (kd_ decreases), linearly in s.
+      const int lo = node_above(kd);
+      const double t = (kd_[lo] - kd) / (kd_[lo] - kd_[lo + 1]);
+      const double s = (lo + t) / (kNodes - 1);
+      c_out[i] = float(std::clamp(1.0 - s * s, 0.0, 1.0));
     }
   }
 }

@@ -299,9 +299,7 @@ class BondAlbedoInverse {
   static constexpr int kSearchCells = 1024;  // over kd in [0, 1]: where the search for kd's node starts
   explicit BondAlbedoInverse(const std::function<double(double c)>& bond_albedo);
   float c(float kd) const;
-  // c[i] = c(kd[i]) for every i (spans of equal sizes, else std::invalid_argument), bit for bit: the searches
-  // of all the values advance together, so their dependent loads overlap (one wavelength's search waits on
-  // its last step; eight interleaved do not).
+  // c[i] = c(kd[i]) for every i (spans of equal sizes, else std::invalid_argument), bit for bit.
   void c(std::span<const float> kd, std::span<float> c) const;
   float weight_scale(float kd) const;
   double max_bond_albedo() const { return kd_[0]; }

@@ -53,7 +53,7 @@ void emit_lambert_sphere(const NodeArgs& a) {
     const BondAlbedoInverse& inverse = s.variant == LambertSphereVariant::kExact
                                            ? lambert_sphere_exact_kd_inverse()
                                            : lambert_sphere_kd_inverse();
-    inverse.c(kd.lanes(), c.lanes());  // all lanes at once (the searches overlap)
+    inverse.c(kd.lanes(), c.lanes());
     // Above the largest bond albedo the model reaches (the fitted model loses up to 1.4 % at c = 1), the
     // weight makes up the difference so that the rendered bond albedo is kd.
     for (int k = 0; k < kSpectrumSamples; ++k)
