@@ -30,9 +30,10 @@ constexpr uint64_t kPilotSeed = 0x70696c6f74ull;  // "pilot"
 constexpr double kMinRenderToPilot = 10.0;
 constexpr int kMaxAutoBranches = 16;
 constexpr double kUncertainties = 1.0;  // how far above its estimate V0 is taken
-// The earlier roulette start the pilot weighs against the default, and by how much it must win.
+// The earlier roulette start the pilot weighs against the default; by how much it, or sampling every light,
+// must win.
 constexpr int kEarlyRoulette = 3;
-constexpr double kRouletteMargin = 0.97;
+constexpr double kChoiceMargin = 0.97;
 constexpr uint32_t kMinCameraSamples = 4;  // a pixel keeps this many places and wavelength sets at least
 // A shadow ray costs about a quarter of a ray whose hit is shaded; a camera sample's own work (wavelengths,
 // camera ray set-up, the film) about half of one (measured on the cave and the Cornell box: the first vertex
@@ -121,11 +122,12 @@ struct PilotSums {
 };
 
 PilotSums run_pilot(const Scene& scene, const RenderJob& job, const std::vector<GridPixel>& grid,
-                    int rr_depth) {
+                    int rr_depth, LightSelection selection) {
   const RenderSettings& s = job.settings;
   RenderSettings pilot_settings = s;
   pilot_settings.branches = 2;
   pilot_settings.rr_depth = rr_depth;
+  pilot_settings.light_selection = selection;
   const PathIntegrator integrator(scene, pilot_settings, polarization_for(scene, job).mode);
   std::vector<PixelPilot> pixels(grid.size());
   {
@@ -154,6 +156,18 @@ PilotSums run_pilot(const Scene& scene, const RenderJob& job, const std::vector<
   return sum;
 }
 
+// One pilot's settings: how lights are sampled and where roulette starts.
+struct Candidate {
+  LightSelection selection;
+  int rr_depth;
+};
+
+// ", every light sampled at each vertex" where that was chosen (the summary line), else nothing.
+std::string lights_phrase(const Scene& scene, const BranchChoice& choice) {
+  if (choice.light_selection != LightSelection::kAll || scene.lights.size() < 2) return "";
+  return fmt::format(", all {} lights sampled at each vertex", scene.lights.size());
+}
+
 // The time to a given error with k continuations: (V0 + V1 / k)(c0 + k c1), in the pilot's units.
 double time_to_error(int k, double v0, const PilotSums& p) {
   return (v0 + std::max(p.branch_variance, 0.0) / k) * (p.shared_cost + k * p.branch_cost);
@@ -165,15 +179,18 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
   const RenderSettings& s = job.settings;
   const bool auto_branches = s.branches == RenderSettings::kAutoBranches;
   const bool auto_roulette = s.rr_depth == RenderSettings::kAutoRoulette;
+  const bool auto_lights = s.light_selection == LightSelection::kAuto;
   BranchChoice choice;
   choice.branches = auto_branches ? 1 : s.branches;
   choice.rr_depth = auto_roulette ? RenderSettings::kDefaultRouletteDepth : s.rr_depth;
+  choice.light_selection = auto_lights ? LightSelection::kLocal : s.light_selection;
   const auto plain = [&](const std::string& why) {
-    choice.reason = fmt::format("{} branch{}, roulette from depth {} ({})", choice.branches,
-                                choice.branches == 1 ? "" : "es", choice.rr_depth, why);
+    choice.reason =
+        fmt::format("{} branch{}, roulette from depth {}{} ({})", choice.branches,
+                    choice.branches == 1 ? "" : "es", choice.rr_depth, lights_phrase(scene, choice), why);
     return choice;
   };
-  if (!auto_branches && !auto_roulette) return plain("as set");
+  if (!auto_branches && !auto_roulette && !auto_lights) return plain("as set");
   // Branch counts: powers of two dividing spp (and sample_begin) that leave kMinCameraSamples camera samples.
   // A pixel of a noise-threshold render decides at 16, 32, ... camera samples
   // (renderer/film/noise_threshold.h): its counts leave it at least one decision before the maximum.
@@ -186,76 +203,102 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
     if (s.sample_begin > 0) cap = std::min(cap, power_of_two_dividing(s.sample_begin));
     for (uint32_t k = 2; k <= cap; k *= 2) counts.push_back(static_cast<int>(k));
   }
-  // Roulette starts: the default and kEarlyRoulette (lever a, m of the performance record: earlier costs
-  // more than it saves, later rarely matters), where the paths are long enough to reach them.
-  std::vector<int> starts{choice.rr_depth};
-  if (auto_roulette && kEarlyRoulette < s.max_depth) starts.insert(starts.begin(), kEarlyRoulette);
-  if (counts.size() == 1 && starts.size() == 1)
+  // The pilots, by priority: the defaults (one light per vertex, roulette from the default start) first; with
+  // 2-8 lights every light sampled from the default start; roulette from kEarlyRoulette (lever a, m of the
+  // performance record: earlier costs more than it saves, later rarely matters) where the paths reach it;
+  // both. A render too small for all of them to cost at most a tenth of it drops them from the end, but keeps
+  // two (or all there are, if fewer).
+  const bool early = auto_roulette && kEarlyRoulette < s.max_depth;
+  const bool every_light = auto_lights && scene.local_light_selection(LightSelection::kLocal);
+  std::vector<Candidate> candidates{{choice.light_selection, choice.rr_depth}};
+  if (every_light) candidates.push_back({LightSelection::kAll, choice.rr_depth});
+  if (early) candidates.push_back({choice.light_selection, kEarlyRoulette});
+  if (every_light && early) candidates.push_back({LightSelection::kAll, kEarlyRoulette});
+  if (counts.size() == 1 && candidates.size() == 1)
     return plain(fmt::format("{} paths per pixel: fewer than {} camera samples of 2{}", s.spp,
                              min_camera_samples,
                              threshold ? " (a noise threshold's first decision and one more)" : ""));
   const std::vector<GridPixel> grid = pilot_grid(s.width, s.height);
   const double render_paths = double(s.width) * s.height * s.spp;
-  const double pilot_paths = 2.0 * kPilotSamples * double(grid.size()) * double(starts.size());
-  if (render_paths < kMinRenderToPilot * pilot_paths)
+  const double pilot_paths = 2.0 * kPilotSamples * double(grid.size());
+  const auto affordable = static_cast<size_t>(render_paths / (kMinRenderToPilot * pilot_paths));
+  if (affordable < std::min<size_t>(candidates.size(), 2))
     return plain(fmt::format("a render of {:.3g} paths is too small for the pilot", render_paths));
+  candidates.resize(std::min(candidates.size(), affordable));
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<PilotSums> pilots;
-  for (const int rr : starts) pilots.push_back(run_pilot(scene, job, grid, rr));
+  for (const Candidate& c : candidates)
+    pilots.push_back(run_pilot(scene, job, grid, c.rr_depth, c.selection));
   choice.piloted = true;
   choice.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // V0 does not depend on the roulette (it starts past the shared part): the default's estimate serves all.
-  // Where the shared part is nearly noise-free it is a small difference of noisy sums, taken at the upper
-  // end of its uncertainty, which errs towards fewer branches, the cheaper mistake.
-  const PilotSums& base = pilots.back();
+  // V0 does not depend on the roulette (it starts past the shared part), but on the light sampling (the
+  // first vertex's light sample is shared): each selection's pilot from the default start serves its other
+  // start. Where the shared part is nearly noise-free it is a small difference of noisy sums, taken at the
+  // upper end of its uncertainty, which errs towards fewer branches, the cheaper mistake.
+  const auto shared_variance = [](const PilotSums& p) {
+    const double v1 = std::max(p.branch_variance, 0.0);
+    return std::max(std::max(p.shared_variance, 0.0) + kUncertainties * p.shared_uncertainty, 1e-6 * v1);
+  };
+  const auto v0_of = [&](LightSelection selection) {
+    for (size_t i = 0; i < candidates.size(); ++i)
+      if (candidates[i].selection == selection && candidates[i].rr_depth == choice.rr_depth)
+        return shared_variance(pilots[i]);
+    return shared_variance(pilots.front());  // not reached: a selection's default start comes first
+  };
+  const PilotSums& base = pilots.front();
+  const double v0 = shared_variance(base);
   const double v1 = std::max(base.branch_variance, 0.0);
-  const double v0 =
-      std::max(std::max(base.shared_variance, 0.0) + kUncertainties * base.shared_uncertainty, 1e-6 * v1);
   choice.shared_cost = base.shared_cost;
   choice.branch_cost = base.branch_cost;
   choice.shared_variance = v0 + v1 > 0.0 ? v0 / (v0 + v1) : 1.0;
   choice.optimum =
       base.branch_cost > 0.0 ? std::sqrt((v1 / v0) * (base.shared_cost / base.branch_cost)) : 1.0;
-  // The least time to an error over the counts and starts; an earlier roulette start must win by
-  // kRouletteMargin, since its estimate is noisier than the default's, which the render would otherwise use.
-  const auto best_count = [&](const PilotSums& p) {
+  // The least time to an error over the counts and the candidates; a candidate other than the defaults must
+  // win by kChoiceMargin, since its estimate is noisier than the default's, which the render would otherwise
+  // use.
+  const auto best_count = [&](double shared, const PilotSums& p) {
     int best = counts.front();
     for (const int k : counts)
-      if (time_to_error(k, v0, p) < time_to_error(best, v0, p)) best = k;
+      if (time_to_error(k, shared, p) < time_to_error(best, shared, p)) best = k;
     return best;
   };
-  const int k_default = best_count(base);
-  double best_time = time_to_error(k_default, v0, base);
-  choice.branches = k_default;
-  for (size_t i = 0; i + 1 < pilots.size(); ++i) {
-    const int k = best_count(pilots[i]);
-    const double t = time_to_error(k, v0, pilots[i]);
-    if (t < kRouletteMargin * best_time) {
+  choice.branches = best_count(v0, base);
+  double best_time = time_to_error(choice.branches, v0, base);
+  for (size_t i = 1; i < candidates.size(); ++i) {
+    const double shared = v0_of(candidates[i].selection);
+    const int k = best_count(shared, pilots[i]);
+    const double t = time_to_error(k, shared, pilots[i]);
+    if (t < kChoiceMargin * best_time) {
       best_time = t;
       choice.branches = k;
-      choice.rr_depth = starts[i];
+      choice.rr_depth = candidates[i].rr_depth;
+      choice.light_selection = candidates[i].selection;
     }
   }
   const double one_path = time_to_error(counts.front(), v0, base);
   choice.predicted_gain = best_time > 0.0 ? one_path / best_time : 1.0;
   choice.reason = fmt::format(
-      "{} branch{}, roulette from depth {} (pilot {:.2f} s: the shared part at most {:.1f} % of the "
+      "{} branch{}, roulette from depth {}{} (pilot {:.2f} s: the shared part at most {:.1f} % of the "
       "variance, "
       "{:.2f} against {:.2f} rays a continuation, best count {:.1f}; predicted {:.2f}x less time to an "
       "error)",
-      choice.branches, choice.branches == 1 ? "" : "es", choice.rr_depth, choice.seconds,
-      100.0 * choice.shared_variance, choice.shared_cost, choice.branch_cost, choice.optimum,
+      choice.branches, choice.branches == 1 ? "" : "es", choice.rr_depth, lights_phrase(scene, choice),
+      choice.seconds, 100.0 * choice.shared_variance, choice.shared_cost, choice.branch_cost, choice.optimum,
       choice.predicted_gain);
   return choice;
 }
 
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice) {
   RenderSettings& s = job.settings;
-  if (s.branches != RenderSettings::kAutoBranches && s.rr_depth != RenderSettings::kAutoRoulette) return job;
+  if (s.branches != RenderSettings::kAutoBranches && s.rr_depth != RenderSettings::kAutoRoulette &&
+      s.light_selection != LightSelection::kAuto)
+    return job;
   const BranchChoice chosen = choose_branches(scene, job);
   s.roulette_chosen = s.rr_depth == RenderSettings::kAutoRoulette;
   s.rr_depth = chosen.rr_depth;
+  s.light_selection_chosen = s.light_selection == LightSelection::kAuto;
+  s.light_selection = chosen.light_selection;
   if (choice) *choice = chosen;
   if (s.branches != RenderSettings::kAutoBranches) return job;
   const uint32_t k = static_cast<uint32_t>(chosen.branches);

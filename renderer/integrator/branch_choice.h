@@ -9,8 +9,10 @@
 // The same pilot, run again with roulette from depth 3, weighs that against the default start (5): ending
 // paths early saves their cost and adds variance to V1, so it pays in dark, closed scenes such as the cave
 // and more with branches (their deep bounces are averaged). integrator.rr_depth "auto" (the default) lets it
-// choose. The pilot's numbers come from a seed of its own: the choice depends on the scene and the settings,
-// never on the render's seed, thread count or split.
+// choose. In a scene of 2 to 8 lights it runs once more with every light sampled at each vertex (a shadow ray
+// per light, no noise from choosing one), which the variance and the rays it counts weigh against one light
+// per vertex: integrator.light_selection "auto" (the default). The pilot's numbers come from a seed of its
+// own: the choice depends on the scene and the settings, never on the render's seed, thread count or split.
 
 #include <string>
 
@@ -21,8 +23,9 @@ namespace ochre {
 
 struct BranchChoice {
   int branches = 1;
-  int rr_depth = RenderSettings::kDefaultRouletteDepth;  // where Russian roulette starts
-  bool piloted = false;                                  // a pilot ran (else `reason` says why not)
+  int rr_depth = RenderSettings::kDefaultRouletteDepth;     // where Russian roulette starts
+  LightSelection light_selection = LightSelection::kLocal;  // one light per vertex, or every light
+  bool piloted = false;                                     // a pilot ran (else `reason` says why not)
   double shared_variance = 0;  // V0 / (V0 + V1): the share of a path's relative variance the branches share
                                // (V0 at the upper end of its uncertainty)
   double shared_cost = 0;      // c0: rays of the shared part per camera sample (and the sample's own work)
@@ -33,17 +36,17 @@ struct BranchChoice {
   std::string reason;          // one line for the render's summary
 };
 
-// The branch count and roulette start for a render of `scene` with `job`'s settings (each chosen where it is
-// auto, as set otherwise; with branches auto spp counts paths per pixel). The count is a power of two that
-// divides spp and leaves at least 4 camera samples, 16 at most; in a noise-threshold render at least 32 (its
-// pixels decide at 16, 32, ... camera samples: one decision before the maximum). Renders too small for the
-// pilot to be a small part of them keep 1 branch and the default start.
+// The branch count, roulette start and light sampling for a render of `scene` with `job`'s settings (each
+// chosen where it is auto, as set otherwise; with branches auto spp counts paths per pixel). The count is a
+// power of two that divides spp and leaves at least 4 camera samples, 16 at most; in a noise-threshold render
+// at least 32 (its pixels decide at 16, 32, ... camera samples: one decision before the maximum). Renders too
+// small for the pilot to be a small part of them keep 1 branch and the default start.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths
-// into camera samples; with rr_depth auto, the chosen start (`choice`, if given, receives the choice); other
-// jobs come back as they are. Throws std::invalid_argument when sample_begin is not a whole number of camera
-// samples.
+// into camera samples; with rr_depth auto, the chosen start; with light_selection auto, `local` or `all`
+// (`choice`, if given, receives the choice); other jobs come back as they are. Throws std::invalid_argument
+// when sample_begin is not a whole number of camera samples.
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice = nullptr);
 
 }  // namespace ochre

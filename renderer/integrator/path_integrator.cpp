@@ -131,6 +131,12 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
                                   const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                                   const Scene::LightPmfs* pmfs, PathStats& stats,
                                   const LightSink& sink) const {
+  if (all_lights_) {  // no choice, no selection noise: a shadow ray per light
+    for (size_t i = 0; i < scene_.lights.size(); ++i)
+      sample_light(v, wo, throughput, lambda, i, 1.0f,
+                   sampler.get_2d(SampleDims::light_position(depth, static_cast<uint32_t>(i))), stats, sink);
+    return;
+  }
   // A single light is picked whatever the number: its dimension is not drawn.
   size_t index = 0;
   if (pmfs || scene_.light_selection.size() > 1) {
@@ -139,9 +145,16 @@ void PathIntegrator::direct_light(const PathVertex& v, const Vec3& wo, const T& 
   }
   const float pmf = pmfs ? (*pmfs)[index] : scene_.light_selection.pmf(index);
   if (!(pmf > 0.0f)) return;
+  sample_light(v, wo, throughput, lambda, index, pmf,
+               sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition)), stats, sink);
+}
+
+template <class T>
+void PathIntegrator::sample_light(const PathVertex& v, const Vec3& wo, const T& throughput,
+                                  const SampledWavelengths& lambda, size_t index, float pmf, const Vec2& u,
+                                  PathStats& stats, const LightSink& sink) const {
   const Light& light = *scene_.lights[index];
-  const auto ls =
-      light.sample(v.sp.p, sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLightPosition)), lambda);
+  const auto ls = light.sample(v.sp.p, u, lambda);
   if (!ls || !(ls->pdf > 0.0f) || ls->radiance.is_black()) return;
   const Vec3 wi_local = v.frame.to_local(ls->wi);
   if (dot(ls->wi, v.ng) * wi_local.z <= 0.0f) return;  // shading and geometric sides disagree
@@ -263,9 +276,7 @@ template <class Sampler, class T>
 bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, const RayCone& cone,
                             const SampledWavelengths& lambda, const Sampler& sampler, LobeArena& arena,
                             size_t arena_floor, bool own_lobes, PathStats& stats, FirstHit* first_hit) const {
-  const auto light_pmf = [&](int light) {
-    return local_lights_ ? s.light_pmfs[light] : scene_.light_pmf(light);
-  };
+  const auto light_pmf = [&](int light) { return light_choice_pmf(light, s.light_pmfs); };
   ++stats.rays;
   const auto hit = scene_.accel->intersect(s.ray);
   if (!hit) {

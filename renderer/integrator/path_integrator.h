@@ -60,6 +60,7 @@ class PathIntegrator {
       : scene_(scene),
         mode_(mode),
         local_lights_(scene.local_light_selection(settings.light_selection)),
+        all_lights_(settings.light_selection == LightSelection::kAll && scene.lights.size() >= 2),
         last_bounce_finds_light_(scene.rays_find_emission()),
         branches_(static_cast<uint32_t>(std::max(1, settings.branches))),
         max_depth_(static_cast<uint32_t>(std::max(0, settings.max_depth))),
@@ -127,12 +128,23 @@ class PathIntegrator {
     if (scene_.light_groups.empty()) return -1;
     return light >= 0 ? scene_.light_group_of[static_cast<size_t>(light)] : scene_.other_light_group;
   }
-  // Next-event estimation at a surface point: one light sample, MIS-weighted, added to L. `pmfs`: the
-  // lights' probabilities at this point (Scene::light_pmfs), or null to choose by power.
+  // Next-event estimation at a surface point: one light sample (or one of every light), MIS-weighted, added
+  // to L. `pmfs`: the lights' probabilities at this point (Scene::light_pmfs), or null to choose by power.
   template <class Sampler, class Throughput>
   void direct_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
                     const SampledWavelengths& lambda, const Sampler& sampler, uint32_t depth,
                     const Scene::LightPmfs* pmfs, PathStats& stats, const LightSink& sink) const;
+  // A sample of light `index` at position numbers `u`, chosen with probability `pmf` (1: every light is
+  // sampled), through a shadow ray.
+  template <class Throughput>
+  void sample_light(const struct PathVertex& v, const Vec3& wo, const Throughput& throughput,
+                    const SampledWavelengths& lambda, size_t index, float pmf, const Vec2& u,
+                    PathStats& stats, const LightSink& sink) const;
+  // The probability next-event estimation gives light `light` at the vertex whose light pmfs `pmfs` holds.
+  float light_choice_pmf(int light, const Scene::LightPmfs& pmfs) const {
+    if (all_lights_) return 1.0f;
+    return local_lights_ ? pmfs[static_cast<size_t>(light)] : scene_.light_pmf(light);
+  }
   // Next-event estimation through a planar mirror: one sample of a light's mirror image (planar_mirrors.h),
   // the path x -> mirror -> light MIS-weighted against BSDF sampling of the same path.
   template <class Sampler, class Throughput>
@@ -146,6 +158,7 @@ class PathIntegrator {
   const Scene& scene_;
   PolarizationMode mode_;
   bool local_lights_;  // lights chosen per shading point (Scene::light_pmfs)
+  bool all_lights_;    // every light sampled at each vertex (integrator.light_selection "all")
   // A ray from a path's last vertex can find light (Scene::rays_find_emission): else that bounce is not
   // taken.
   bool last_bounce_finds_light_;

@@ -163,7 +163,8 @@ PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
   if (job.settings.branches == RenderSettings::kAutoBranches ||
-      job.settings.rr_depth == RenderSettings::kAutoRoulette) {
+      job.settings.rr_depth == RenderSettings::kAutoRoulette ||
+      job.settings.light_selection == LightSelection::kAuto) {
     // The pilot's time counts as the render's.
     BranchChoice choice;
     const RenderJob resolved = resolve_branches(scene, job, &choice);

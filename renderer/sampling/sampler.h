@@ -28,6 +28,12 @@ struct SampleDims {
   static constexpr uint32_t bounce(uint32_t depth, uint32_t offset) {
     return kFirstBounce + depth * kDimsPerBounce + offset;
   }
+  // The position on light `light` when every light is sampled at a vertex (integrator.light_selection
+  // "all"): the first light takes kLightPosition, each further one a pair of its own far beyond any bounce's.
+  static constexpr uint32_t kExtraLightStride = 1u << 20;
+  static constexpr uint32_t light_position(uint32_t depth, uint32_t light) {
+    return bounce(depth, kLightPosition) + light * kExtraLightStride;
+  }
 };
 
 struct FromPixelBase {};  // tag: constructor from the hash of (seed, pixel)

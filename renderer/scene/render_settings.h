@@ -54,10 +54,15 @@ inline constexpr NamedChoices<PolarizationSetting, 4> kPolarizationSettings{
       {PolarizationSetting::kIntensity, "intensity"},
       {PolarizationSetting::kStokes, "stokes"}}}};
 
-// integrator.light_selection: by importance at each point (2-8 lights; Scene::light_pmfs) or by power.
-enum class LightSelection { kLocal, kPower };
-inline constexpr NamedChoices<LightSelection, 2> kLightSelections{
-    {{{LightSelection::kLocal, "local"}, {LightSelection::kPower, "power"}}}};
+// integrator.light_selection: next-event estimation samples one light per vertex, chosen by importance at
+// each point (2-8 lights; Scene::light_pmfs) or by power, or every light (`all`). kAuto (the default): the
+// branch pilot (renderer/integrator/branch_choice.h) weighs `all` against `local` for 2-8 lights;
+// resolve_branches turns it into one of them (`local` where the pilot does not run).
+enum class LightSelection { kAuto, kLocal, kPower, kAll };
+inline constexpr NamedChoices<LightSelection, 4> kLightSelections{{{{LightSelection::kAuto, "auto"},
+                                                                    {LightSelection::kLocal, "local"},
+                                                                    {LightSelection::kPower, "power"},
+                                                                    {LightSelection::kAll, "all"}}}};
 
 // film.colorspace: the EXR's working space.
 inline constexpr NamedChoices<ColorSpace, 2> kWorkingSpaces{
@@ -87,8 +92,9 @@ struct RenderSettings {
   static constexpr int kMaxBranches = 64;  // past a few, the first vertex's noise dominates
   bool branches_chosen = false;  // set by resolve_branches: `branches` was chosen for auto, spp converted
   bool roulette_chosen = false;  // set by resolve_branches: `rr_depth` was chosen for auto
-  bool mirror_lights = true;     // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
-  LightSelection light_selection = LightSelection::kLocal;
+  bool light_selection_chosen = false;  // set by resolve_branches: `light_selection` was chosen for auto
+  bool mirror_lights = true;  // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
+  LightSelection light_selection = LightSelection::kAuto;
   uint64_t seed = 0;
   int threads = 0;  // 0 = all cores
   SamplerKind sampler = SamplerKind::kSobol;

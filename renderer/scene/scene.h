@@ -110,7 +110,8 @@ struct Scene {
   static constexpr size_t kMaxLocalLights = 8;
   using LightPmfs = std::array<float, kMaxLocalLights>;
   bool local_light_selection(LightSelection selection) const {
-    return selection == LightSelection::kLocal && lights.size() >= 2 && lights.size() <= kMaxLocalLights;
+    return (selection == LightSelection::kLocal || selection == LightSelection::kAuto) &&
+           lights.size() >= 2 && lights.size() <= kMaxLocalLights;
   }
   // The probability of choosing each light at p: a quarter in proportion to the importance, three quarters by
   // power (a defensive mix: the estimates ignore occlusion and the receiver's orientation).

@@ -1,5 +1,6 @@
-// Choosing the light for next-event estimation (docs/architecture.md, 'Choosing the light'): by power, or at
-// each shading point from the lights' importance there. Both are unbiased: the same closed-form image.
+// Choosing the light for next-event estimation (docs/architecture.md, 'Choosing the light'): by power, at
+// each shading point from the lights' importance there, or every light at every vertex. All are unbiased: the
+// same closed-form image.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -14,13 +15,15 @@ namespace {
 // A point light (intensity I at height h) and a constant environment (radiance Le) over a Lambert plane of
 // albedo rho, seen from above: L = rho / pi * I cos / r^2 + rho Le at every point. The plane is large, so the
 // sky's power (its flux through the scene's bounding sphere) dwarfs the point light's: chosen by power, the
-// point light gets 0.3 % of the samples and the image is noisy, though right on average.
-TEST(LightSelection, PointLightAndSkyAddUpWithEitherChoice) {
+// point light gets 0.3 % of the samples and the image is noisy, though right on average. With every light
+// sampled the point light's delta term is exact at every sample: only the sky's own sampling is noise.
+TEST(LightSelection, PointLightAndSkyAddUpWithEveryChoice) {
   const double rho = 0.5, I = 10.0, h = 1.0, Le = 0.2, view = 4.0;
   const int res = 16;
-  double worst_of[2] = {};
-  for (int k = 0; k < 2; ++k) {
-    const char* selection = k == 0 ? "local" : "power";
+  const char* selections[3] = {"local", "power", "all"};
+  double worst_of[3] = {};
+  for (int k = 0; k < 3; ++k) {
+    const char* selection = selections[k];
     const LuminanceImage img = render_luminance(fmt::format(R"({{
       "camera": {{"type": "orthographic", "size": {}, "eye": [0, 0, 5], "target": [0, 0, 0]}},
       "film": {{"resolution": [{}, {}]}},
@@ -56,12 +59,14 @@ TEST(LightSelection, PointLightAndSkyAddUpWithEitherChoice) {
   }
   EXPECT_LT(worst_of[0], 0.02);
   EXPECT_GT(worst_of[1], 5 * worst_of[0]);
+  EXPECT_LT(worst_of[2], 0.2 * worst_of[0]);
 }
 
 TEST(LightSelection, UnknownChoiceIsRejected) {
-  expect_rejected({"light_selection",
-                   scene_with("/integrator/light_selection", R"("tree")"),
-                   {"integrator.light_selection", "unknown light selection 'tree'", "local, power"}});
+  expect_rejected(
+      {"light_selection",
+       scene_with("/integrator/light_selection", R"("tree")"),
+       {"integrator.light_selection", "unknown light selection 'tree'", "auto, local, power, all"}});
 }
 
 }  // namespace

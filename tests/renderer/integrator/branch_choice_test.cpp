@@ -2,9 +2,11 @@
 // camera sample gets, from the scene and the settings only; spp then counts paths per pixel.
 #include "renderer/integrator/branch_choice.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "renderer/integrator/render.h"
@@ -126,6 +128,47 @@ TEST(BranchChoice, RouletteStartIsChosenOrKept) {
   EXPECT_EQ(kept.settings.rr_depth, 7);
   EXPECT_FALSE(kept.settings.roulette_chosen);
   EXPECT_TRUE(kept.settings.branches_chosen);
+}
+
+// A point light and a sky over a Lambert plane (as tests/cli/light_selection_test.cpp), 64x64, 256 spp: one
+// light chosen per vertex, the choice is most of the noise (the point light's term is exact once chosen).
+LoadedScene point_light_and_sky(const char* light_selection) {
+  const nlohmann::json scene = nlohmann::json::parse(fmt::format(R"({{
+      "camera": {{"type": "orthographic", "size": 4, "eye": [0, 0, 5], "target": [0, 0, 0]}},
+      "film": {{"resolution": [64, 64]}},
+      "integrator": {{"spp": 256, "max_depth": 2, "light_selection": "{}"}},
+      "materials": {{"m": {{"type": "lambert", "color": 0.5}}}},
+      "lights": [{{"type": "point", "position": [0, 0, 1], "intensity": 10}},
+                 {{"type": "environment", "radiance": 0.2}}],
+      "shapes": [{{"type": "plane", "size": [100, 100], "material": "m"}}]
+    }})",
+                                                                 light_selection));
+  return load_scene_json(scene, "<point light and sky>", test::scratch_dir() / "scene.json");
+}
+
+// light_selection auto: with 2-8 lights the pilot weighs sampling every light against choosing one; it
+// samples both here, where choosing is the noise. A selection that is set is kept; one light has no choice.
+TEST(BranchChoice, LightSamplingIsChosenOrKept) {
+  const LoadedScene scene = point_light_and_sky("auto");
+  const BranchChoice c = choose_branches(*scene.scene, scene.job);
+  print("point light and sky, light selection auto", c);
+  EXPECT_TRUE(c.piloted);
+  EXPECT_EQ(c.light_selection, LightSelection::kAll);
+  EXPECT_GT(c.predicted_gain, 1.5);
+  EXPECT_NE(c.reason.find("all 2 lights sampled at each vertex"), std::string::npos) << c.reason;
+  const RenderJob resolved = resolve_branches(*scene.scene, scene.job);
+  EXPECT_EQ(resolved.settings.light_selection, LightSelection::kAll);
+  EXPECT_TRUE(resolved.settings.light_selection_chosen);
+
+  const LoadedScene local = point_light_and_sky("local");
+  EXPECT_EQ(choose_branches(*local.scene, local.job).light_selection, LightSelection::kLocal);
+  const RenderJob kept = resolve_branches(*local.scene, local.job);
+  EXPECT_EQ(kept.settings.light_selection, LightSelection::kLocal);
+  EXPECT_FALSE(kept.settings.light_selection_chosen);
+
+  const LoadedScene box = cornell_box(128, 64);  // one light: nothing to choose
+  EXPECT_EQ(box.job.settings.light_selection, LightSelection::kAuto);
+  EXPECT_EQ(choose_branches(*box.scene, box.job).light_selection, LightSelection::kLocal);
 }
 
 // resolve_branches turns paths into camera samples; an explicit count is kept with its meaning.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -315,6 +316,25 @@ TEST(SobolSampler, PaddedDimensionsAreNotCorrelated) {
       EXPECT_LT(sobol, 1.6 * monte_carlo) << c.name << " N=" << n;
     }
   }
+}
+
+// With every light sampled at a vertex (integrator.light_selection "all"), the first light's position takes
+// the bounce's own pair and each further light a pair no bounce of any depth (max_depth <= 1024) and no other
+// light uses.
+TEST(SampleDims, EveryLightsPositionHasDimensionsOfItsOwn) {
+  constexpr uint32_t kMaxDepth = 1024, kLights = 8;
+  const uint32_t past_every_bounce = SampleDims::bounce(kMaxDepth + 1, 0);
+  std::vector<uint32_t> pairs;
+  for (uint32_t depth = 0; depth <= kMaxDepth; ++depth) {
+    EXPECT_EQ(SampleDims::light_position(depth, 0), SampleDims::bounce(depth, SampleDims::kLightPosition));
+    for (uint32_t light = 1; light < kLights; ++light) {
+      const uint32_t first = SampleDims::light_position(depth, light);
+      EXPECT_GE(first, past_every_bounce);
+      pairs.push_back(first);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (size_t i = 1; i < pairs.size(); ++i) EXPECT_GE(pairs[i] - pairs[i - 1], 2u) << "pairs overlap";
 }
 
 }  // namespace
