@@ -439,6 +439,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.sampler) s.sampler = *o.sampler;
   if (o.branches) s.branches = *o.branches;
   if (o.rr_depth) s.rr_depth = *o.rr_depth;
+  if (o.light_selection) s.light_selection = *o.light_selection;
   if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 

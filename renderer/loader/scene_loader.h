@@ -24,9 +24,10 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<PolarizationSetting> polarization;
   std::optional<SamplerKind> sampler;
-  std::optional<int> branches;            // integrator.branches (ochre-converge variants)
-  std::optional<int> rr_depth;            // integrator.rr_depth (a resumed checkpoint's)
-  std::optional<double> noise_threshold;  // integrator.noise_threshold; 0 turns it off
+  std::optional<int> branches;                    // integrator.branches (ochre-converge variants)
+  std::optional<int> rr_depth;                    // integrator.rr_depth (a resumed checkpoint's)
+  std::optional<LightSelection> light_selection;  // integrator.light_selection (a resumed checkpoint's)
+  std::optional<double> noise_threshold;          // integrator.noise_threshold; 0 turns it off
   // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
   std::vector<std::pair<std::string, std::string>> parameters;
   std::optional<std::string> preset;  // a named variant from the scene's "presets" (docs/scene-format.md)

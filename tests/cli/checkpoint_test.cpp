@@ -151,6 +151,32 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
   EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
 }
 
+// Two lights: the pilot's choice to sample both at every vertex (light_selection "auto") is recorded in the
+// checkpoint, and the resumed render takes it from there (no pilot of its own): the uninterrupted bits.
+TEST(Checkpoint, ResumeKeepsTheChosenLightSampling) {
+  const fs::path dir = scratch_dir();
+  std::ofstream(dir / "two_lights.json") << R"({
+      "camera": {"type": "orthographic", "size": 4, "eye": [0, 0, 5], "target": [0, 0, 0]},
+      "film": {"resolution": [32, 32]},
+      "integrator": {"spp": 8192, "max_depth": 3},
+      "materials": {"m": {"type": "lambert", "color": 0.5}},
+      "lights": [{"type": "point", "position": [0, 0, 1], "intensity": 10},
+                 {"type": "environment", "radiance": 0.2}],
+      "shapes": [{"type": "plane", "size": [100, 100], "material": "m"}]
+    })";
+  const CommandResult single = run_ochre("render two_lights.json -o single.exr", dir);
+  ASSERT_EQ(single.exit_code, 0) << single.output;
+  EXPECT_TRUE(contains(single.output, "all 2 lights sampled at each vertex")) << single.output;
+  const CommandResult stopped =
+      stop_at_a_time_limit("render two_lights.json -o out.exr -q", dir, "out.checkpoint.exr", 1.5);
+  ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
+  EXPECT_EQ(read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.lightSelection"), "all");
+  const CommandResult resumed = run_ochre("render --resume out.checkpoint.exr", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_FALSE(contains(resumed.output, "pilot")) << "the checkpoint's choices are taken, not made again";
+  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
+}
+
 // A resumed render keeps the checkpoint interval it was started with (recorded in the checkpoint) unless
 // its command line gives another. The rendering seconds a checkpoint records add up over the resumes, and
 // `ochre info` estimates the time left from them.

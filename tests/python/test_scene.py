@@ -40,6 +40,7 @@ class LoadScene(unittest.TestCase):
         self.assertEqual(scene.settings["width"], 24)
         self.assertEqual(scene.settings["spp"], 2)
         self.assertEqual(scene.settings["seed"], 5)
+        self.assertEqual(scene.settings["light_selection"], "auto")  # the default: the pilot chooses
         result = scene.render()
         self.assertEqual(result.rgb.shape, (16, 24, 3))
         self.assertEqual(result.rgb.dtype, np.float32)

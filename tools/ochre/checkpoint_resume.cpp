@@ -101,10 +101,11 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.height = h.image_height;
   r.overrides.sampler = choice(checkpoint, "ochre.sampler", kSamplerKinds);
   r.overrides.noise_threshold = h.noise_threshold;
-  // The branch count and roulette start as rendered (auto is recorded as what it chose; spp counts camera
-  // samples then).
+  // The branch count, roulette start and light sampling as rendered (auto is recorded as what it chose; spp
+  // counts camera samples then).
   r.overrides.branches = number<int>(checkpoint, "ochre.branches");
   r.overrides.rr_depth = number<int>(checkpoint, "ochre.rrDepth");
+  r.overrides.light_selection = choice(checkpoint, "ochre.lightSelection", kLightSelections);
   // A frame of a sequence: "K at F fps" (its outputs are already numbered in the notes).
   if (const std::string& frame = field(checkpoint, "ochre.frame"); !frame.empty()) {
     uint64_t number = 0;

@@ -443,6 +443,7 @@ py::dict settings_of(const PyScene& p) {
     d["branches"] = "auto";
   else
     d["branches"] = s.branches;
+  d["light_selection"] = kLightSelections.name(s.light_selection);
   d["seed"] = s.seed;
   d["threads"] = s.threads;
   d["sampler"] = kSamplerKinds.name(s.sampler);
