@@ -291,9 +291,7 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
 
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice) {
   RenderSettings& s = job.settings;
-  if (s.branches != RenderSettings::kAutoBranches && s.rr_depth != RenderSettings::kAutoRoulette &&
-      s.light_selection != LightSelection::kAuto)
-    return job;
+  if (!has_automatic_choices(s)) return job;
   const BranchChoice chosen = choose_branches(scene, job);
   s.roulette_chosen = s.rr_depth == RenderSettings::kAutoRoulette;
   s.rr_depth = chosen.rr_depth;

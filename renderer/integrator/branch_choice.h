@@ -43,6 +43,12 @@ struct BranchChoice {
 // small for the pilot to be a small part of them keep 1 branch and the default start.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
+// Whether a job has choices left to the pilot (branches, rr_depth or light_selection auto).
+inline bool has_automatic_choices(const RenderSettings& s) {
+  return s.branches == RenderSettings::kAutoBranches || s.rr_depth == RenderSettings::kAutoRoulette ||
+         s.light_selection == LightSelection::kAuto;
+}
+
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths
 // into camera samples; with rr_depth auto, the chosen start; with light_selection auto, `local` or `all`
 // (`choice`, if given, receives the choice); other jobs come back as they are. Throws std::invalid_argument

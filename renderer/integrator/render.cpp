@@ -162,9 +162,7 @@ PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
 
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
-  if (job.settings.branches == RenderSettings::kAutoBranches ||
-      job.settings.rr_depth == RenderSettings::kAutoRoulette ||
-      job.settings.light_selection == LightSelection::kAuto) {
+  if (has_automatic_choices(job.settings)) {
     // The pilot's time counts as the render's.
     BranchChoice choice;
     const RenderJob resolved = resolve_branches(scene, job, &choice);
