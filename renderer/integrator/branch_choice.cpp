@@ -240,9 +240,10 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
     const double v1 = std::max(p.branch_variance, 0.0);
     return std::max(std::max(p.shared_variance, 0.0) + kUncertainties * p.shared_uncertainty, 1e-6 * v1);
   };
+  const int default_start = choice.rr_depth;  // choice.rr_depth changes below, as candidates win
   const auto v0_of = [&](LightSelection selection) {
     for (size_t i = 0; i < candidates.size(); ++i)
-      if (candidates[i].selection == selection && candidates[i].rr_depth == choice.rr_depth)
+      if (candidates[i].selection == selection && candidates[i].rr_depth == default_start)
         return shared_variance(pilots[i]);
     return shared_variance(pilots.front());  // not reached: a selection's default start comes first
   };
