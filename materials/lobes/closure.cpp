@@ -37,6 +37,12 @@ bool Closure::has_non_delta_lobes() const {
   return false;
 }
 
+bool Closure::has_delta_lobes() const {
+  for (int i = 0; i < count_; ++i)
+    if (lobes_[i].lobe->is_delta()) return true;
+  return false;
+}
+
 bool Closure::has_transmission() const {
   for (int i = 0; i < count_; ++i)
     if (lobes_[i].lobe->flags() & kLobeTransmission) return true;

@@ -71,6 +71,7 @@ class Closure {
   const SampledSpectrum& emission() const { return emission_; }
   bool has_lobes() const { return count_ > 0; }
   bool has_non_delta_lobes() const;
+  bool has_delta_lobes() const;
   bool polarizes() const;
   bool has_transmission() const;  // some lobe can refract (the surface's two sides differ)
 

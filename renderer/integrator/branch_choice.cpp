@@ -293,7 +293,15 @@ BranchChoice choose_branches(const Scene& scene, const RenderJob& job) {
 RenderJob resolve_branches(const Scene& scene, RenderJob job, BranchChoice* choice) {
   RenderSettings& s = job.settings;
   if (!has_automatic_choices(s)) return job;
-  const BranchChoice chosen = choose_branches(scene, job);
+  // The guide first, from the whole render's settings (guide_training.h): the pilot then weighs its
+  // choices with the guided paths the render will trace.
+  GuideTraining training;
+  if (needs_guide(s)) s.guide = train_path_guide(scene, job, &training);
+  if (choice) choice->guide = training;
+  if (s.guiding == GuidingSetting::kOn && !s.guide) s.guiding = GuidingSetting::kOff;  // nothing learned
+  if (!has_automatic_choices(s)) return job;
+  BranchChoice chosen = choose_branches(scene, job);
+  chosen.guide = training;
   s.roulette_chosen = s.rr_depth == RenderSettings::kAutoRoulette;
   s.rr_depth = chosen.rr_depth;
   s.light_selection_chosen = s.light_selection == LightSelection::kAuto;

@@ -16,6 +16,7 @@
 
 #include <string>
 
+#include "renderer/integrator/guide_training.h"
 #include "renderer/scene/render_settings.h"
 #include "renderer/scene/scene.h"
 
@@ -34,6 +35,7 @@ struct BranchChoice {
   double predicted_gain = 1;   // time to a given error with 1 branch from the default start over the choice
   double seconds = 0;          // the pilot's time
   std::string reason;          // one line for the render's summary
+  GuideTraining guide;         // the path guide's training, where guiding is on (resolve_branches)
 };
 
 // The branch count, roulette start and light sampling for a render of `scene` with `job`'s settings (each
@@ -43,10 +45,16 @@ struct BranchChoice {
 // small for the pilot to be a small part of them keep 1 branch and the default start.
 BranchChoice choose_branches(const Scene& scene, const RenderJob& job);
 
-// Whether a job has choices left to the pilot (branches, rr_depth or light_selection auto).
+// Guiding is on but its guide not yet trained (resolve_branches trains it).
+inline bool needs_guide(const RenderSettings& s) {
+  return s.guiding == GuidingSetting::kOn && !s.guide;
+}
+
+// Whether a job has work left to resolve_branches: choices for the pilot (branches, rr_depth or
+// light_selection auto) or a guide to train.
 inline bool has_automatic_choices(const RenderSettings& s) {
   return s.branches == RenderSettings::kAutoBranches || s.rr_depth == RenderSettings::kAutoRoulette ||
-         s.light_selection == LightSelection::kAuto;
+         s.light_selection == LightSelection::kAuto || needs_guide(s);
 }
 
 // `job` ready to render: with branches auto, the chosen count set and spp and sample_begin turned from paths

@@ -19,6 +19,8 @@ struct PathVertex {
   Vec3 wo_local;
   Closure closure;
   uint32_t mesh = 0;
+  bool guided = false;       // scattering samples the guide too (path_guide.h)
+  PathGuide::Product guide;  // the vertex's cell times the cosine to its normal, where guided
 };
 
 namespace {
@@ -172,7 +174,7 @@ void PathIntegrator::sample_light(const PathVertex& v, const Vec3& wo, const T& 
   const float light_pdf = pmf * ls->pdf;
   const float mis = ls->delta || ls->only_by_light_sampling
                         ? 1.0f
-                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+                        : power_heuristic(light_pdf, scatter_pdf(v, wi_local, ls->wi, lambda));
   deliver(sink, group_of(static_cast<int>(index)), [&](SensorStokes& L) {
     throughput.receive_through(response, abs_cos_theta(wi_local) * mis / light_pdf, incoming, -ls->wi, L);
   });
@@ -232,7 +234,7 @@ void PathIntegrator::mirrored_light(const PathVertex& v, const Vec3& wo, const T
   const float light_pdf = choice.pmf * ls->pdf;
   const float mis = ls->delta || ls->only_by_light_sampling
                         ? 1.0f
-                        : power_heuristic(light_pdf, v.closure.pdf(v.wo_local, wi_local, lambda));
+                        : power_heuristic(light_pdf, scatter_pdf(v, wi_local, wi, lambda));
   const float k = abs_cos_theta(wi_local) * mis / light_pdf;
   if (at_x.m) storage->m = storage->m * k;
   T through_mirror = throughput;
@@ -302,6 +304,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   // cave reach max_depth, so this is about one shading point in five there).
   if (depth >= max_depth_ && !scene_.materials[mesh.material]->facts().is_emissive) return false;
   v.sp = surface_point(scene_.meshes, *hit, s.ray);
+  if (guide_) guide_->prefetch(v.sp.p);  // the cell's histogram loads while the material is evaluated
   v.mesh = hit->mesh;
   const Vec3 wo = -s.ray.dir;
   arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
@@ -337,6 +340,11 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   v.ng = refracts || dot(v.sp.ng, wo) >= 0.0f ? v.sp.ng : -v.sp.ng;
   v.frame = shading_frame(v.sp, v.ng, wo, refracts, v.closure);
   v.wo_local = v.frame.to_local(wo);
+  v.guided = false;
+  // Specular and refracting closures are not guided: the guide's cosine is taken on the frame's side.
+  if (guide_ && !v.closure.has_delta_lobes() && !v.closure.has_transmission())
+    if (const PathGuide::Cell* cell = guide_->cell(v.sp.p))
+      v.guided = PathGuide::product(*cell, v.frame.n, &v.guide);
   if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(s.ray.dir), lambda, *first_hit);
 
   if (v.closure.has_non_delta_lobes() && !scene_.lights.empty()) {
@@ -349,6 +357,48 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   return true;
 }
 
+float PathIntegrator::scatter_pdf(const PathVertex& v, const Vec3& wi_local, const Vec3& wi,
+                                  const SampledWavelengths& lambda) const {
+  const float bsdf = v.closure.pdf(v.wo_local, wi_local, lambda);
+  if (!v.guided) return bsdf;
+  return PathGuide::kGuideShare * PathGuide::pdf(v.guide, wi) + (1.0f - PathGuide::kGuideShare) * bsdf;
+}
+
+template <class T>
+bool PathIntegrator::guided_scatter(PathState<T>& s, const PathVertex& v, const Vec3& wo, float u_lobe,
+                                    const Vec2& u, const SampledWavelengths& lambda, Vec3& wi,
+                                    float& pdf) const {
+  // One-sample MIS of the guide and the BSDF (path_guide.h): u_lobe picks the strategy, then is reused
+  // (rescaled) for the guide's bin or the BSDF's lobe; either way the weight is f |cos| / the mixture pdf.
+  const float share = PathGuide::kGuideShare;
+  if (u_lobe < share) {
+    float guide_pdf = 0.0f;
+    wi = PathGuide::sample(v.guide, u_lobe / share, u, &guide_pdf);
+    const Vec3 wi_local = v.frame.to_local(wi);
+    if (dot(wi, v.ng) * wi_local.z <= 0.0f) return false;  // shading and geometric sides disagree
+    std::optional<MuellerResponse> storage;
+    const WorldResponse r = vertex_response<T>(v, wo, wi_local, lambda, storage);
+    if (r.f.is_black()) return false;
+    pdf = share * guide_pdf + (1.0f - share) * v.closure.pdf(v.wo_local, wi_local, lambda);
+    if (!(pdf > 0.0f)) return false;
+    const float k = abs_cos_theta(wi_local) / pdf;
+    if (r.m) storage->m = storage->m * k;
+    s.beta.scatter(r, r.f * k);
+    return true;
+  }
+  auto bs =
+      v.closure.sample(v.wo_local, std::min((u_lobe - share) / (1.0f - share), 0x1.fffffep-1f), u, lambda);
+  if (!bs || bs->weight.is_black() || bs->delta) return false;
+  wi = v.frame.to_world(bs->wi);
+  if (dot(wi, v.ng) * bs->wi.z <= 0.0f) return false;
+  pdf = share * PathGuide::pdf(v.guide, wi) + (1.0f - share) * bs->pdf;
+  const float k = bs->pdf / pdf;  // from the BSDF's weight f |cos| / pdf_bsdf to f |cos| / the mixture's
+  const WorldResponse r = sampled_response<T>(v, wo, *bs, lambda);  // r.m is bs->mueller.m, if any
+  if (r.m) bs->mueller.m = bs->mueller.m * k;
+  s.beta.scatter(r, bs->weight * k);
+  return true;
+}
+
 template <class Sampler, class T>
 bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t depth,
                              const SampledWavelengths& lambda, const Sampler& sampler) const {
@@ -357,18 +407,27 @@ bool PathIntegrator::scatter(PathState<T>& s, const PathVertex& v, uint32_t dept
   // path.
   if (depth + 1 >= max_depth_ && !last_bounce_finds_light_) return false;
   const Vec3 wo = -s.ray.dir;
-  auto bs = v.closure.sample(v.wo_local, sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice)),
-                             sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection)), lambda);
-  if (!bs || bs->weight.is_black()) return false;
-  const Vec3 wi = v.frame.to_world(bs->wi);
-  if (dot(wi, v.ng) * bs->wi.z <= 0.0f) return false;  // shading and geometric sides disagree: no light leaks
-
-  s.beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
-  s.chain_mirror = bs->delta && !s.specular ? scene_.mirror_lights.mirror_of_mesh(v.mesh) : -1;
+  const float u_lobe = sampler.get_1d(SampleDims::bounce(depth, SampleDims::kLobeChoice));
+  const Vec2 u_direction = sampler.get_2d(SampleDims::bounce(depth, SampleDims::kLobeDirection));
+  Vec3 wi;
+  float pdf = 0.0f;
+  bool delta = false;
+  if (v.guided) {
+    if (!guided_scatter(s, v, wo, u_lobe, u_direction, lambda, wi, pdf)) return false;
+  } else {
+    auto bs = v.closure.sample(v.wo_local, u_lobe, u_direction, lambda);
+    if (!bs || bs->weight.is_black()) return false;
+    wi = v.frame.to_world(bs->wi);
+    if (dot(wi, v.ng) * bs->wi.z <= 0.0f) return false;  // shading and geometric sides disagree: no leaks
+    s.beta.scatter(sampled_response<T>(v, wo, *bs, lambda), bs->weight);
+    pdf = bs->pdf;
+    delta = bs->delta;
+  }
+  s.chain_mirror = delta && !s.specular ? scene_.mirror_lights.mirror_of_mesh(v.mesh) : -1;
   s.chain_pdf = s.prev_pdf;
   s.chain_origin = s.prev_p;
-  s.specular = bs->delta;
-  s.prev_pdf = bs->pdf;
+  s.specular = delta;
+  s.prev_pdf = pdf;
   s.prev_p = v.sp.p;
 
   // Russian roulette on the path throughput's unpolarized part M00, with survival probability
@@ -478,6 +537,50 @@ BranchPilotSample PathIntegrator::pilot_trace(const Ray& camera_ray, const RayCo
   return out;
 }
 
+template <class Sampler, class T>
+void PathIntegrator::record_training_path(const Ray& camera_ray, const RayCone& cone,
+                                          const SampledWavelengths& lambda, const Sampler& sampler,
+                                          LobeArena& arena, std::vector<GuideRecord>& out) const {
+  // Each scattering: where, which way, with what density, the throughput after it and the light gathered
+  // before it. What the path gathers after a scattering, over the throughput, is the light that arrived
+  // along that direction (its MIS-weighted share of emission found there included).
+  struct Scattering {
+    Vec3 p, dir;
+    float pdf;
+    SampledSpectrum beta, before;
+  };
+  constexpr int kMaxScatterings = 16;
+  std::array<Scattering, kMaxScatterings> open;
+  int n = 0;
+  PathStats stats;
+  PathState<T> s = camera_state<T>(camera_ray, nullptr);
+  PathVertex v;
+  if (!arrive(s, v, 0, cone, lambda, sampler, arena, 0, false, stats, nullptr)) return;
+  for (uint32_t depth = 0; scatter(s, v, depth, lambda, sampler); ++depth) {
+    if (n < kMaxScatterings && !s.specular) open[n++] = {v.sp.p, s.ray.dir, s.prev_pdf, s.beta.m00(), s.L[0]};
+    if (!arrive(s, v, depth + 1, cone, lambda, sampler, arena, 0, false, stats, nullptr)) break;
+  }
+  for (int i = 0; i < n; ++i) {
+    const Scattering& o = open[i];
+    float sum = 0.0f;
+    int lanes = 0;
+    for (int l = 0; l < kSpectrumSamples; ++l) {
+      if (!(o.beta[l] > 0.0f)) continue;
+      sum += (s.L[0][l] - o.before[l]) / o.beta[l];
+      ++lanes;
+    }
+    if (lanes > 0) out.push_back({o.p, o.dir, std::max(sum / static_cast<float>(lanes), 0.0f), o.pdf});
+  }
+}
+
+template <class Sampler>
+void PathIntegrator::guide_training_path(const Ray& ray, const RayCone& cone,
+                                         const SampledWavelengths& lambda, const Sampler& sampler,
+                                         LobeArena& arena, std::vector<GuideRecord>& out) const {
+  with_throughput(
+      [&]<class T>() { record_training_path<Sampler, T>(ray, cone, lambda, sampler, arena, out); });
+}
+
 template <class Traced>
 auto PathIntegrator::with_throughput(const Traced& traced) const {
   switch (mode_) {
@@ -517,6 +620,9 @@ template SensorStokes PathIntegrator::radiance(const Ray&, const RayCone&, const
 
 template BranchPilotSample PathIntegrator::pilot_sample(const Ray&, const RayCone&, const SampledWavelengths&,
                                                         const IndependentSampler&, LobeArena&) const;
+template void PathIntegrator::guide_training_path(const Ray&, const RayCone&, const SampledWavelengths&,
+                                                  const IndependentSampler&, LobeArena&,
+                                                  std::vector<GuideRecord>&) const;
 template BranchPilotSample PathIntegrator::pilot_sample(const Ray&, const RayCone&, const SampledWavelengths&,
                                                         const SobolSampler&, LobeArena&) const;
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "materials/lobes/lobe_arena.h"
+#include "renderer/integrator/path_guide.h"
 #include "renderer/integrator/path_throughput.h"
 #include "renderer/sampling/sampler.h"
 #include "renderer/sampling/sobol_sampler.h"
@@ -62,6 +63,7 @@ class PathIntegrator {
         local_lights_(scene.local_light_selection(settings.light_selection)),
         all_lights_(settings.light_selection == LightSelection::kAll && scene.lights.size() >= 2),
         last_bounce_finds_light_(scene.rays_find_emission()),
+        guide_(settings.guide.get()),
         branches_(static_cast<uint32_t>(std::max(1, settings.branches))),
         max_depth_(static_cast<uint32_t>(std::max(0, settings.max_depth))),
         rr_depth_(static_cast<uint32_t>(settings.rr_depth == RenderSettings::kAutoRoulette
@@ -85,6 +87,12 @@ class PathIntegrator {
   BranchPilotSample pilot_sample(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
                                  const Sampler& sampler, LobeArena& arena) const;
 
+  // A path of the guide's training (guide_training.h), one branch: what arrived along each direction it
+  // scattered into, appended to `out` (path_guide.h).
+  template <class Sampler>
+  void guide_training_path(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                           const Sampler& sampler, LobeArena& arena, std::vector<GuideRecord>& out) const;
+
  private:
   // Arrival of s.ray: emission, shading and next-event estimation at the vertex it hits (stored in v).
   // False when the path ends there. Lobes go to `arena` above `arena_floor`; `own_lobes`: never in the
@@ -97,6 +105,18 @@ class PathIntegrator {
   template <class Sampler, class Throughput>
   bool scatter(PathState<Throughput>& s, const struct PathVertex& v, uint32_t depth,
                const SampledWavelengths& lambda, const Sampler& sampler) const;
+  // Scattering at a vertex with a guide cell: the guide or the BSDF, weighted by their mixture's density
+  // (path_guide.h). Sets wi (world) and its pdf; false when the path ends.
+  template <class Throughput>
+  bool guided_scatter(PathState<Throughput>& s, const struct PathVertex& v, const Vec3& wo, float u_lobe,
+                      const Vec2& u, const SampledWavelengths& lambda, Vec3& wi, float& pdf) const;
+  // The density scatter() samples wi with (local wi_local, world wi): the BSDF's, mixed with the guide's
+  // where the vertex has a cell. The BSDF side of every MIS weight.
+  float scatter_pdf(const struct PathVertex& v, const Vec3& wi_local, const Vec3& wi,
+                    const SampledWavelengths& lambda) const;
+  template <class Sampler, class Throughput>
+  void record_training_path(const Ray& ray, const RayCone& cone, const SampledWavelengths& lambda,
+                            const Sampler& sampler, LobeArena& arena, std::vector<GuideRecord>& out) const;
   // traced.operator()<T>() for the throughput policy T of the polarization mode (path_throughput.h).
   template <class Traced>
   auto with_throughput(const Traced& traced) const;
@@ -162,9 +182,10 @@ class PathIntegrator {
   // A ray from a path's last vertex can find light (Scene::rays_find_emission): else that bounce is not
   // taken.
   bool last_bounce_finds_light_;
-  uint32_t branches_;   // continuations of each camera sample from its first vertex (integrator.branches)
-  uint32_t max_depth_;  // scattering events a path may have (integrator.max_depth)
-  uint32_t rr_depth_;   // bounces before Russian roulette (integrator.rr_depth)
+  const PathGuide* guide_;  // learned incident light (integrator.guiding), or null
+  uint32_t branches_;       // continuations of each camera sample from its first vertex (integrator.branches)
+  uint32_t max_depth_;      // scattering events a path may have (integrator.max_depth)
+  uint32_t rr_depth_;       // bounces before Russian roulette (integrator.rr_depth)
 };
 
 }  // namespace ochre

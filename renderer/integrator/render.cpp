@@ -163,11 +163,11 @@ PolarizationChoice polarization_for(const Scene& scene, const RenderJob& job) {
 RenderStats render(const Scene& scene, const RenderJob& job, Film& film, const ProgressCallback& progress,
                    const std::atomic<bool>* cancel) {
   if (has_automatic_choices(job.settings)) {
-    // The pilot's time counts as the render's.
+    // The pilot's and the guide's training time count as the render's.
     BranchChoice choice;
     const RenderJob resolved = resolve_branches(scene, job, &choice);
     RenderStats stats = render(scene, resolved, film, progress, cancel);
-    stats.seconds += choice.seconds;
+    stats.seconds += choice.seconds + choice.guide.seconds;
     return stats;
   }
   const RenderSettings& s = job.settings;

@@ -123,7 +123,7 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
   if (top.has("integrator")) {
     const JsonFields f(top.require("integrator"), top.child("integrator"));
     f.check_known({"type", "spp", "max_depth", "rr_depth", "branches", "seed", "threads", "polarization",
-                   "sampler", "mirror_lights", "light_selection", "noise_threshold"});
+                   "sampler", "mirror_lights", "light_selection", "noise_threshold", "guiding"});
     if (f.string("type", "path") != "path") f.fail("type", "unknown integrator (known: path)");
     s.spp = static_cast<uint32_t>(f.integer("spp", s.spp, 1, 1 << 24));
     s.max_depth = static_cast<int>(f.integer("max_depth", s.max_depth, 0, 1024));
@@ -144,6 +144,7 @@ void load_settings(const JsonFields& top, const std::filesystem::path& scene_dir
     s.mirror_lights = f.boolean("mirror_lights", s.mirror_lights);
     s.light_selection =
         parse_choice(f, "light_selection", kLightSelections, s.light_selection, "light selection");
+    s.guiding = parse_choice(f, "guiding", kGuidingSettings, s.guiding, "guiding setting");
     s.seed = static_cast<uint64_t>(f.integer("seed", 0, 0, std::numeric_limits<long long>::max()));
     s.threads = static_cast<int>(f.integer("threads", s.threads, 0, kMaxThreads));
     s.polarization = parse_choice(f, "polarization", kPolarizationSettings, s.polarization, "mode");

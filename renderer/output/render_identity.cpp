@@ -63,7 +63,7 @@ const std::vector<std::string>& identity_field_names() {
       "ochre.rrDepth",       "ochre.aovs",           "ochre.stokes",         "ochre.spectralBins",
       "ochre.spectralRange", "ochre.colorspace",     "ochre.sensor",         "ochre.branches",
       "ochre.mirrorLights",  "ochre.lightSelection", "ochre.noiseThreshold", "ochre.frame",
-      "ochre.lightGroups"};
+      "ochre.lightGroups",   "ochre.guiding"};
   return names;
 }
 
@@ -92,6 +92,7 @@ RenderIdentity render_identity(const Scene& scene, const RenderJob& job, const s
       {"ochre.noiseThreshold", fmt::format("{}", s.noise_threshold)},
       {"ochre.frame", s.frame ? fmt::format("{} at {} fps", *s.frame, s.fps) : std::string()},
       {"ochre.lightGroups", fmt::format("{}", fmt::join(layers.light_groups, ","))},
+      {"ochre.guiding", kGuidingSettings.name(s.guiding)},
   };
   RenderIdentity identity;
   for (const std::string& name : identity_field_names()) identity.emplace_back(name, values.at(name));

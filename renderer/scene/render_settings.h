@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +65,13 @@ inline constexpr NamedChoices<LightSelection, 4> kLightSelections{{{{LightSelect
                                                                     {LightSelection::kPower, "power"},
                                                                     {LightSelection::kAll, "all"}}}};
 
+// integrator.guiding: path guiding (renderer/integrator/path_guide.h), off by default.
+enum class GuidingSetting { kOff, kOn };
+inline constexpr NamedChoices<GuidingSetting, 2> kGuidingSettings{
+    {{{GuidingSetting::kOff, "off"}, {GuidingSetting::kOn, "on"}}}};
+
+class PathGuide;
+
 // film.colorspace: the EXR's working space.
 inline constexpr NamedChoices<ColorSpace, 2> kWorkingSpaces{
     {{{ColorSpace::LinearRec709, "rec709"}, {ColorSpace::ACEScg, "acescg"}}}};
@@ -95,6 +103,9 @@ struct RenderSettings {
   bool light_selection_chosen = false;  // set by resolve_branches: `light_selection` was chosen for auto
   bool mirror_lights = true;  // sample lights through planar mirrors (renderer/lights/planar_mirrors.h)
   LightSelection light_selection = LightSelection::kAuto;
+  GuidingSetting guiding = GuidingSetting::kOff;
+  // The trained guide where guiding is on (resolve_branches trains it before a render), else null.
+  std::shared_ptr<const PathGuide> guide;
   uint64_t seed = 0;
   int threads = 0;  // 0 = all cores
   SamplerKind sampler = SamplerKind::kSobol;

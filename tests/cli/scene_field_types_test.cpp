@@ -31,7 +31,7 @@ nlohmann::json base_scene() {
     "film": {"resolution": [8, 8], "colorspace": "rec709"},
     "integrator": {"type": "path", "spp": 1, "max_depth": 3, "rr_depth": 3, "branches": 1, "seed": 0, "threads": 0,
                    "polarization": "auto", "sampler": "sobol", "mirror_lights": true, "light_selection": "local",
-                   "noise_threshold": 0},
+                   "noise_threshold": 0, "guiding": "off"},
     "output": {"exposure": 0, "spectral_bins": 2, "spectral_range": [400, 700], "stokes": false, "aovs": false},
     "materials": {"grey": {"type": "lambert", "color": 0.5}},
     "lights": [{"type": "environment", "radiance": 1, "scale": 1, "rotation": 0},
@@ -121,6 +121,7 @@ std::vector<FieldCase> cases() {
       {"/integrator/sampler", "3", "integrator.sampler"},
       {"/integrator/mirror_lights", "1", "integrator.mirror_lights"},
       {"/integrator/light_selection", "[]", "integrator.light_selection"},
+      {"/integrator/guiding", "true", "integrator.guiding"},
       {"/integrator/noise_threshold", R"("0.01")", "integrator.noise_threshold"},
 
       {"/output/exr", "5", "output.exr"},

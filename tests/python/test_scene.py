@@ -41,6 +41,7 @@ class LoadScene(unittest.TestCase):
         self.assertEqual(scene.settings["spp"], 2)
         self.assertEqual(scene.settings["seed"], 5)
         self.assertEqual(scene.settings["light_selection"], "auto")  # the default: the pilot chooses
+        self.assertEqual(scene.settings["guiding"], "off")  # path guiding is asked for by the scene
         result = scene.render()
         self.assertEqual(result.rgb.shape, (16, 24, 3))
         self.assertEqual(result.rgb.dtype, np.float32)

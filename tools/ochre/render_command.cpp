@@ -368,13 +368,15 @@ int render_scene(const RenderCommand& given, Phase& phase) {
     const InputFileLog::Recording recording(inputs);  // and the files the outputs read (OCIO config)
     apply_output_options(command, job);
   }
-  // integrator.branches, rr_depth and light_selection auto: chosen now, for every frame, part and resumed
-  // piece alike.
+  // integrator.branches, rr_depth and light_selection auto: chosen now, and the path guide trained, for every
+  // frame, part and resumed piece alike.
   BranchChoice branch_choice;
   job = resolve_branches(*scene, job, &branch_choice);
   if (!command.quiet &&
       (job.settings.branches_chosen || job.settings.roulette_chosen || job.settings.light_selection_chosen))
     std::cerr << fmt::format("ochre: paths: {}\n", branch_choice.reason);
+  if (!command.quiet && !branch_choice.guide.summary.empty())
+    std::cerr << fmt::format("ochre: path guiding: {}\n", branch_choice.guide.summary);
   if (command.frames) return render_frames(command, *scene, job, inputs, phase, seconds_since(start));
   if (command.still_frame) {
     // One frame of a sequence, rendered like a still (the frame is part of the render's identity).

@@ -444,6 +444,7 @@ py::dict settings_of(const PyScene& p) {
   else
     d["branches"] = s.branches;
   d["light_selection"] = kLightSelections.name(s.light_selection);
+  d["guiding"] = kGuidingSettings.name(s.guiding);
   d["seed"] = s.seed;
   d["threads"] = s.threads;
   d["sampler"] = kSamplerKinds.name(s.sampler);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/integrator/render.h"
+#include "renderer/integrator/same_pixels.h"
 #include "renderer/loader/scene_loader.h"
 #include "support/test_paths.h"
 
@@ -54,12 +55,7 @@ double relmse_y(const Film& film, const Film& ref, int x0 = 0, int y0 = 0, int x
   return sum / ((x1 - x0) * (y1 - y0));
 }
 
-bool same_pixels(const Film& a, const Film& b) {
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x)
-      if (!(a.mean(x, y) == b.mean(x, y))) return false;
-  return true;
-}
+using test::same_pixels;
 
 TEST(BranchedPaths, DeterministicForAnyThreadCountAndSplitOfTheSampleRange) {
   auto scene = cornell_box(6, 3);
