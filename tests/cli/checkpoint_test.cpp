@@ -177,6 +177,33 @@ TEST(Checkpoint, ResumeKeepsTheChosenLightSampling) {
   EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
 }
 
+// A guided render (integrator.guiding on): the resumed render trains its guide again, from the same whole
+// render's settings (the branches and roulette it takes from the checkpoint change nothing there), and ends
+// with the uninterrupted bits.
+TEST(Checkpoint, GuidedRenderResumesToTheSameBits) {
+  const fs::path dir = scratch_dir();
+  std::ofstream(dir / "guided.json") << R"({
+      "camera": {"type": "perspective", "fov": 40, "eye": [0, -4, 2], "target": [0, 0, 0.5]},
+      "film": {"resolution": [32, 32]},
+      "integrator": {"spp": 4096, "max_depth": 4, "guiding": "on"},
+      "materials": {"m": {"type": "lambert", "color": 0.7}},
+      "lights": [{"type": "point", "position": [1, -1, 3], "intensity": 10},
+                 {"type": "environment", "radiance": 0.05}],
+      "shapes": [{"type": "plane", "size": [20, 20], "material": "m"},
+                 {"type": "sphere", "center": [0, 0, 0.5], "radius": 0.5, "material": "m"}]
+    })";
+  const CommandResult single = run_ochre("render guided.json -o single.exr", dir);
+  ASSERT_EQ(single.exit_code, 0) << single.output;
+  EXPECT_TRUE(contains(single.output, "path guiding: guided by")) << single.output;
+  const CommandResult stopped =
+      stop_at_a_time_limit("render guided.json -o out.exr -q", dir, "out.checkpoint.exr", 1.5);
+  ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
+  EXPECT_EQ(read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.guiding"), "on");
+  const CommandResult resumed = run_ochre("render --resume out.checkpoint.exr", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
+}
+
 // A resumed render keeps the checkpoint interval it was started with (recorded in the checkpoint) unless
 // its command line gives another. The rendering seconds a checkpoint records add up over the resumes, and
 // `ochre info` estimates the time left from them.
