@@ -22,9 +22,11 @@ namespace {
 constexpr uint64_t kTrainingStream =
     0x6775696465ull;  // "guide": the training's numbers, apart from the render's
 // The training traces this share of the render's paths, at least kMinTrainingPaths (fewer leave most cells
-// unlearned) and at most kMaxSamplesPerPixel paths from each pixel of its grid.
+// unlearned), at most kMaxTrainingPaths (their records, ~100 bytes a path, are held until the guide is built;
+// more learn little more) and at most kMaxSamplesPerPixel paths from each pixel of its grid.
 constexpr double kTrainingShare = 0.1;
 constexpr double kMinTrainingPaths = 65536;
+constexpr double kMaxTrainingPaths = 524288;
 constexpr uint32_t kMaxSamplesPerPixel = 64;
 
 // The paths per pixel of the whole render: spp counts paths while branches are auto, camera samples of k
@@ -58,10 +60,10 @@ std::shared_ptr<const PathGuide> train_path_guide(const Scene& scene, const Rend
     r.summary = "nothing to guide (no light, or no bounce)";
     return nullptr;
   }
-  const double target = std::max(kTrainingShare * render_paths(s), kMinTrainingPaths);
-  // Every `stride`-th pixel in x and y, `samples` paths each.
+  const double target = std::clamp(kTrainingShare * render_paths(s), kMinTrainingPaths, kMaxTrainingPaths);
+  // Every `stride`-th pixel in x and y (no more pixels than target paths), `samples` paths each.
   const double pixels = double(s.width) * double(s.height);
-  const int stride = std::max(1, static_cast<int>(std::floor(std::sqrt(pixels / target))));
+  const int stride = std::max(1, static_cast<int>(std::ceil(std::sqrt(pixels / target))));
   const int nx = (s.width + stride - 1) / stride, ny = (s.height + stride - 1) / stride;
   const auto samples = static_cast<uint32_t>(
       std::clamp(std::floor(target / (double(nx) * ny)), 1.0, double(kMaxSamplesPerPixel)));
@@ -85,8 +87,9 @@ std::shared_ptr<const PathGuide> train_path_guide(const Scene& scene, const Rend
         }
     });
   }
-  // Which thread traced what does not matter: the guide sums integers.
-  const std::vector<std::vector<GuideRecord>> lists(records.begin(), records.end());
+  // Which thread traced what does not matter: the guide sums integers. Moved, not copied.
+  std::vector<std::vector<GuideRecord>> lists;
+  for (std::vector<GuideRecord>& list : records) lists.push_back(std::move(list));
   auto guide = std::make_shared<const PathGuide>(PathGuide::build(lists));
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.paths = uint64_t(nx) * uint64_t(ny) * samples;
