@@ -441,6 +441,7 @@ void apply_overrides(const SceneOverrides& o, RenderSettings& s) {
   if (o.branches) s.branches = *o.branches;
   if (o.rr_depth) s.rr_depth = *o.rr_depth;
   if (o.light_selection) s.light_selection = *o.light_selection;
+  if (o.guiding) s.guiding = *o.guiding;
   if (o.noise_threshold) s.noise_threshold = *o.noise_threshold;
 }
 

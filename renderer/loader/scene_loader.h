@@ -27,6 +27,7 @@ struct SceneOverrides {
   std::optional<int> branches;                    // integrator.branches (ochre-converge variants)
   std::optional<int> rr_depth;                    // integrator.rr_depth (a resumed checkpoint's)
   std::optional<LightSelection> light_selection;  // integrator.light_selection (a resumed checkpoint's)
+  std::optional<GuidingSetting> guiding;          // integrator.guiding (--guiding, a resumed checkpoint's)
   std::optional<double> noise_threshold;          // integrator.noise_threshold; 0 turns it off
   // Mitsuba XML scenes only: values of $name parameters, before the scene's own <default>s.
   std::vector<std::pair<std::string, std::string>> parameters;

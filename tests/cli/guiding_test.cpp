@@ -74,6 +74,26 @@ TEST(Guiding, SummaryReportsTheGuide) {
   EXPECT_NE(direct.output.find("path guiding: nothing to guide"), std::string::npos) << direct.output;
 }
 
+// --guiding on asks for the guide on the command line, as integrator.guiding does in the scene; a resumed
+// render keeps its checkpoint's guiding and refuses the option.
+TEST(Guiding, CommandLineOptionTurnsItOn) {
+  const std::filesystem::path dir = scratch_dir() / "guiding_option";
+  std::filesystem::create_directories(dir);
+  std::string scene = guided_sphere(4);
+  scene.replace(scene.find(R"(, "guiding": "on")"), std::string(R"(, "guiding": "on")").size(), "");
+  write_text(dir / "plain.json", scene);
+  const CommandResult plain = run_ochre("render plain.json -o plain.exr", dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("path guiding"), std::string::npos) << plain.output;
+  const CommandResult guided = run_ochre("render plain.json --guiding on -o guided.exr", dir);
+  ASSERT_EQ(guided.exit_code, 0) << guided.output;
+  EXPECT_NE(guided.output.find("path guiding: guided by"), std::string::npos) << guided.output;
+  const CommandResult wrong = run_ochre("render plain.json --guiding sometimes -o wrong.exr", dir);
+  EXPECT_EQ(wrong.exit_code, 2) << wrong.output;
+  EXPECT_NE(wrong.output.find("--guiding"), std::string::npos) << wrong.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "wrong.exr"));
+}
+
 TEST(Guiding, UnknownSettingIsRejected) {
   expect_rejected({"guiding",
                    scene_with("/integrator/guiding", R"("sometimes")"),

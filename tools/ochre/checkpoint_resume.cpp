@@ -106,6 +106,7 @@ RenderCommand resumed_command(const RenderCommand& given, const PartialSumsFile&
   r.overrides.branches = number<int>(checkpoint, "ochre.branches");
   r.overrides.rr_depth = number<int>(checkpoint, "ochre.rrDepth");
   r.overrides.light_selection = choice(checkpoint, "ochre.lightSelection", kLightSelections);
+  r.overrides.guiding = choice(checkpoint, "ochre.guiding", kGuidingSettings);  // its guide is trained again
   // A frame of a sequence: "K at F fps" (its outputs are already numbered in the notes).
   if (const std::string& frame = field(checkpoint, "ochre.frame"); !frame.empty()) {
     uint64_t number = 0;

@@ -87,7 +87,7 @@ int ochre_command(int argc, char** argv) {
   int threads = -1;
   uint64_t seed = 0;
   float exposure = 0.0f;
-  std::string polarization, sampler, preset;
+  std::string polarization, sampler, guiding, preset;
 
   CLI::App* render = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
   render->add_option(
@@ -118,6 +118,9 @@ int ochre_command(int argc, char** argv) {
                       ->check(CLI::IsMember({"auto", "off", "intensity", "stokes"}));
   auto* sampler_opt = render->add_option("--sampler", sampler, "independent | sobol")
                           ->check(CLI::IsMember({"independent", "sobol"}));
+  auto* guiding_opt =
+      render->add_option("--guiding", guiding, "Path guiding: off | on (docs/architecture.md#path-guiding)")
+          ->check(CLI::IsMember({"off", "on"}));
   auto* ocio_opt = render->add_option(
       "--ocio-config", ocio, "OCIO config path, 'builtin' or 'none' (default: $OCIO, else built-in)");
   auto* display_opt = render->add_option("--display", display, "OCIO display (default: the config's)");
@@ -287,9 +290,9 @@ int ochre_command(int argc, char** argv) {
   if (*resume_opt) {
     // A resumed render is the render the checkpoint holds: what changes the image cannot change.
     for (const CLI::Option* fixed :
-         {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, cs_opt, range_opt, part_opt, region_opt, tile_opt,
-          render->get_option("--spectral-bins"), render->get_option("--aovs"), render->get_option("--stokes"),
-          render->get_option("--define")})
+         {spp_opt, seed_opt, res_opt, pol_opt, sampler_opt, guiding_opt, cs_opt, range_opt, part_opt,
+          region_opt, tile_opt, render->get_option("--spectral-bins"), render->get_option("--aovs"),
+          render->get_option("--stokes"), render->get_option("--define")})
       if (*fixed)
         throw ochre::InputError(fixed->get_name() +
                                 ": a resumed render keeps the settings of its checkpoint (give only outputs, "
@@ -316,6 +319,7 @@ int ochre_command(int argc, char** argv) {
   // CLI11 checked the names: the parses succeed.
   if (*pol_opt) cmd.overrides.polarization = ochre::kPolarizationSettings.parse(polarization);
   if (*sampler_opt) cmd.overrides.sampler = ochre::kSamplerKinds.parse(sampler);
+  if (*guiding_opt) cmd.overrides.guiding = ochre::kGuidingSettings.parse(guiding);
   if (*preset_opt) cmd.overrides.preset = preset;
   if (*res_opt) {
     int w = 0, h = 0;
