@@ -129,16 +129,12 @@ ptrdiff_t PathGuide::cell_index(const Vec3& p) const {
   return static_cast<ptrdiff_t>((size_t(c[2]) * dims_[1] + c[1]) * dims_[0] + c[0]);
 }
 
-const PathGuide::Cell* PathGuide::cell(const Vec3& p) const {
+ptrdiff_t PathGuide::prefetch(const Vec3& p) const {
   const ptrdiff_t index = cell_index(p);
-  return index >= 0 && cells_[size_t(index)].usable ? &cells_[size_t(index)] : nullptr;
-}
-
-void PathGuide::prefetch(const Vec3& p) const {
-  const ptrdiff_t index = cell_index(p);
-  if (index < 0) return;
+  if (index < 0) return index;
   const char* bytes = reinterpret_cast<const char*>(&cells_[size_t(index)]);
   for (size_t line = 0; line < sizeof(Cell); line += 64) __builtin_prefetch(bytes + line);
+  return index;
 }
 
 bool PathGuide::product(const Cell& cell, const Vec3& n, Product* out) {

@@ -54,9 +54,13 @@ class PathGuide {
   static PathGuide build(const std::vector<std::vector<GuideRecord>>& records);
 
   // The usable cell of point p, or null (too little learned there, or outside the grid).
-  const Cell* cell(const Vec3& p) const;
-  // Starts loading p's cell into the cache (arrive() calls it before the material's evaluation).
-  void prefetch(const Vec3& p) const;
+  const Cell* cell(const Vec3& p) const { return usable_cell(prefetch(p)); }
+  // Starts loading p's cell into the cache and returns its index (-1 outside the grid), which usable_cell
+  // takes: arrive() calls it before the material's evaluation, and finds the cell after it.
+  ptrdiff_t prefetch(const Vec3& p) const;
+  const Cell* usable_cell(ptrdiff_t index) const {
+    return index >= 0 && cells_[size_t(index)].usable ? &cells_[size_t(index)] : nullptr;
+  }
 
   // The product of `cell` with the cosine to the unit normal n; false where no bin with light faces n.
   static bool product(const Cell& cell, const Vec3& n, Product* out);

@@ -304,7 +304,8 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   // cave reach max_depth, so this is about one shading point in five there).
   if (depth >= max_depth_ && !scene_.materials[mesh.material]->facts().is_emissive) return false;
   v.sp = surface_point(scene_.meshes, *hit, s.ray);
-  if (guide_) guide_->prefetch(v.sp.p);  // the cell's histogram loads while the material is evaluated
+  // The guide's cell loads while the material is evaluated.
+  const ptrdiff_t guide_cell = guide_ ? guide_->prefetch(v.sp.p) : -1;
   v.mesh = hit->mesh;
   const Vec3 wo = -s.ray.dir;
   arena.reset(arena_floor);  // v.closure is replaced below (CompiledMaterial::evaluate, evaluate_memoized)
@@ -343,7 +344,7 @@ bool PathIntegrator::arrive(PathState<T>& s, PathVertex& v, uint32_t depth, cons
   v.guided = false;
   // Specular and refracting closures are not guided: the guide's cosine is taken on the frame's side.
   if (guide_ && !v.closure.has_delta_lobes() && !v.closure.has_transmission())
-    if (const PathGuide::Cell* cell = guide_->cell(v.sp.p))
+    if (const PathGuide::Cell* cell = guide_->usable_cell(guide_cell))
       v.guided = PathGuide::product(*cell, v.frame.n, &v.guide);
   if (depth == 0 && first_hit) record_first_hit(v, hit->t * length(s.ray.dir), lambda, *first_hit);
 

@@ -151,6 +151,24 @@ TEST(Checkpoint, TimeLimitedResumesOfAPartFinishAndMerge) {
   EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "merged.exr"));
 }
 
+// Renders `scene` (in dir) whole to single.exr, whose summary must say `summary`; then again, stopped at a
+// time limit, whose checkpoint must record `attribute` = `value`; then resumes it (`resumed`: that run) and
+// expects the whole render's bits.
+void resume_to_the_whole_render(const fs::path& dir, const std::string& scene, const std::string& summary,
+                                const std::string& attribute, const std::string& value,
+                                CommandResult& resumed) {
+  const CommandResult single = run_ochre("render " + scene + " -o single.exr", dir);
+  ASSERT_EQ(single.exit_code, 0) << single.output;
+  EXPECT_TRUE(contains(single.output, summary)) << single.output;
+  const CommandResult stopped =
+      stop_at_a_time_limit("render " + scene + " -o out.exr -q", dir, "out.checkpoint.exr", 1.5);
+  ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
+  EXPECT_EQ(read_exr(dir / "out.checkpoint.exr").string_attributes.at(attribute), value);
+  resumed = run_ochre("render --resume out.checkpoint.exr", dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
+}
+
 // Two lights: the pilot's choice to sample both at every vertex (light_selection "auto") is recorded in the
 // checkpoint, and the resumed render takes it from there (no pilot of its own): the uninterrupted bits.
 TEST(Checkpoint, ResumeKeepsTheChosenLightSampling) {
@@ -164,17 +182,10 @@ TEST(Checkpoint, ResumeKeepsTheChosenLightSampling) {
                  {"type": "environment", "radiance": 0.2}],
       "shapes": [{"type": "plane", "size": [100, 100], "material": "m"}]
     })";
-  const CommandResult single = run_ochre("render two_lights.json -o single.exr", dir);
-  ASSERT_EQ(single.exit_code, 0) << single.output;
-  EXPECT_TRUE(contains(single.output, "all 2 lights sampled at each vertex")) << single.output;
-  const CommandResult stopped =
-      stop_at_a_time_limit("render two_lights.json -o out.exr -q", dir, "out.checkpoint.exr", 1.5);
-  ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
-  EXPECT_EQ(read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.lightSelection"), "all");
-  const CommandResult resumed = run_ochre("render --resume out.checkpoint.exr", dir);
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  CommandResult resumed;
+  ASSERT_NO_FATAL_FAILURE(resume_to_the_whole_render(
+      dir, "two_lights.json", "all 2 lights sampled at each vertex", "ochre.lightSelection", "all", resumed));
   EXPECT_FALSE(contains(resumed.output, "pilot")) << "the checkpoint's choices are taken, not made again";
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
 }
 
 // A guided render (integrator.guiding on): the resumed render trains its guide again, from the same whole
@@ -192,16 +203,8 @@ TEST(Checkpoint, GuidedRenderResumesToTheSameBits) {
       "shapes": [{"type": "plane", "size": [20, 20], "material": "m"},
                  {"type": "sphere", "center": [0, 0, 0.5], "radius": 0.5, "material": "m"}]
     })";
-  const CommandResult single = run_ochre("render guided.json -o single.exr", dir);
-  ASSERT_EQ(single.exit_code, 0) << single.output;
-  EXPECT_TRUE(contains(single.output, "path guiding: guided by")) << single.output;
-  const CommandResult stopped =
-      stop_at_a_time_limit("render guided.json -o out.exr -q", dir, "out.checkpoint.exr", 1.5);
-  ASSERT_EQ(stopped.exit_code, 3) << stopped.output;
-  EXPECT_EQ(read_exr(dir / "out.checkpoint.exr").string_attributes.at("ochre.guiding"), "on");
-  const CommandResult resumed = run_ochre("render --resume out.checkpoint.exr", dir);
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  EXPECT_TRUE(same_exr_pixels(dir / "single.exr", dir / "out.exr"));
+  CommandResult resumed;
+  resume_to_the_whole_render(dir, "guided.json", "path guiding: guided by", "ochre.guiding", "on", resumed);
 }
 
 // A resumed render keeps the checkpoint interval it was started with (recorded in the checkpoint) unless
